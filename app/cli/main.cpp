@@ -1,0 +1,57 @@
+// isurface-cli: every headless job of iSurface, one subcommand each.
+#include <cstdio>
+#include <map>
+#include <memory>
+#include <vector>
+
+#include "command.h"
+#include "isurface/core/diagnostic.h"
+
+namespace isurface::cli {
+
+namespace {
+struct Registered {
+  std::string name, description;
+  CommandSetup setup;
+};
+std::vector<Registered>& registry() {
+  static std::vector<Registered> commands;
+  return commands;
+}
+}  // namespace
+
+bool registerCommand(std::string name, std::string description, CommandSetup setup) {
+  registry().push_back({std::move(name), std::move(description), std::move(setup)});
+  return true;
+}
+
+}  // namespace isurface::cli
+
+int main(int argc, char** argv) {
+  using namespace isurface::cli;
+  CLI::App app{"iSurface: NC interpolation quality maps, headless commands"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "isurface-cli 0.1.0");
+  std::map<CLI::App*, std::function<int()>> runners;
+  for (auto& command : registry()) {
+    CLI::App* sub = app.add_subcommand(command.name, command.description);
+    runners[sub] = command.setup(*sub);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitInputError;
+  }
+  try {
+    for (auto& [sub, run] : runners)
+      if (sub->parsed()) return run();
+  } catch (const isurface::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitFailure;
+  }
+  return kExitFailure;
+}

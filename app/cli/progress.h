@@ -1,0 +1,21 @@
+#pragma once
+// A progress line on stderr for long operations; silent when stderr is not a terminal.
+#include <string>
+
+namespace isurface::cli {
+
+class ProgressLine {
+ public:
+  explicit ProgressLine(std::string label);
+  ~ProgressLine();
+  void update(double fraction);  // 0..1; redraws at most every 100 ms
+  void finish();
+
+ private:
+  std::string label_;
+  bool enabled_ = false;
+  double lastDraw_ = -1;
+  int lastPercent_ = -1;
+};
+
+}  // namespace isurface::cli

@@ -1,0 +1,42 @@
+#pragma once
+// RS274/NGC interpreter for real CAM output: turns G-code text into a Program of exact moves.
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "isurface/core/program.h"
+
+namespace isurface {
+
+struct InterpreterOptions {
+  // Skip a bad block, record its error and go on (the caller still exits non-zero).
+  bool keepGoing = false;
+  // Reference positions of G28 and G30, machine = workpiece coordinates here, mm.
+  Vec3 g28Position = Vec3::Zero();
+  Vec3 g30Position = Vec3::Zero();
+  // Position before the first move, mm.
+  Vec3 startPosition = Vec3::Zero();
+  // An arc whose end radius differs from its start radius by more than this is an error
+  // (LinuxCNC accepts up to about 0.0283 mm in mm mode), mm.
+  double arcRadiusTolerance = 0.002;
+  // And also by more than this fraction of the radius.
+  double arcRadiusRelativeTolerance = 0.001;
+  // Called now and then with the fraction of the input read, 0..1.
+  std::function<void(double)> progress;
+};
+
+struct InterpretResult {
+  Program program;
+  std::vector<Diagnostic> errors;  // empty on success; with keepGoing, every bad block
+  bool ok() const { return errors.empty(); }
+};
+
+// Interprets text held in memory. `sourceName` is used in diagnostics.
+InterpretResult interpretGcode(std::string_view text, const std::string& sourceName,
+                               const InterpreterOptions& options = {});
+
+// Maps and interprets a file. A file that cannot be read is reported as an error diagnostic.
+InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options = {});
+
+}  // namespace isurface
