@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "command.h"
+#include "inputs.h"
 #include "isurface/core/diagnostic.h"
 
 namespace isurface::cli {
@@ -46,6 +47,8 @@ int main(int argc, char** argv) {
   try {
     for (auto& [sub, run] : runners)
       if (sub->parsed()) return run();
+  } catch (const CommandExit& e) {
+    return e.code;
   } catch (const isurface::InputError& e) {
     std::fprintf(stderr, "error: %s\n", e.what());
     return kExitInputError;

@@ -1,6 +1,7 @@
 #pragma once
 // Basic geometric vocabulary shared by every core module. All lengths are millimetres.
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 namespace isurface {
 

@@ -1,0 +1,54 @@
+// isurface-cli simulate: G-code -> Biip dump through the NC interpolator model.
+#include <cstdio>
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/simulator.h"
+#include "progress.h"
+
+namespace isurface::cli {
+namespace {
+
+struct SimulateOptions {
+  std::string input, output, machine;
+  bool keepGoing = false, json = false;
+};
+
+int runSimulate(const SimulateOptions& o) {
+  const Machine machine = loadMachineOption(o.machine);
+  const Program program = loadProgram(o.input, o.keepGoing);
+  ProgressLine progress("simulating " + o.input);
+  const SimulationReport r =
+      simulateToBiip(program, machine, o.output, [&](double f) { progress.update(f); });
+  progress.finish();
+  if (o.json) {
+    nlohmann::json j = {{"source", o.input},          {"output", o.output},
+                        {"moves", program.moves.size()}, {"motion_segments", r.segments},
+                        {"samples", r.samples},        {"cycle_s", machine.cycle},
+                        {"machining_time_s", r.machiningTime}, {"path_length_mm", r.pathLength},
+                        {"jerk_filter_s", r.filterTime1}, {"corner_filter_s", r.filterTime2}};
+    std::printf("%s\n", j.dump(2).c_str());
+  } else {
+    std::printf("%s: %zu moves, %.1f mm of path\n", o.input.c_str(), program.moves.size(), r.pathLength);
+    std::printf("machining time %s (%.3f s), %llu samples at %g ms -> %s\n",
+                formatDuration(r.machiningTime).c_str(), r.machiningTime,
+                static_cast<unsigned long long>(r.samples), machine.cycle * 1000.0, o.output.c_str());
+  }
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "simulate", "Simulate the NC interpolator on a G-code program and write a Biip dump",
+    [](CLI::App& sub) {
+      auto o = std::make_shared<SimulateOptions>();
+      sub.add_option("program", o->input, "G-code file")->required();
+      sub.add_option("-o,--output", o->output, "Biip file to write")->required();
+      sub.add_option("--machine", o->machine, "machine description (JSON); default: built-in");
+      sub.add_flag("--keep-going", o->keepGoing, "report every bad block, not only the first");
+      sub.add_flag("--json", o->json, "print the summary as JSON");
+      return [o] { return runSimulate(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli

@@ -1,0 +1,37 @@
+#include "inputs.h"
+
+#include <cmath>
+#include <cstdio>
+
+#include "command.h"
+#include "isurface/core/gcode_interpreter.h"
+#include "progress.h"
+
+namespace isurface::cli {
+
+Program loadProgram(const std::string& path, bool keepGoing, bool showProgress) {
+  ProgressLine progress("reading " + path);
+  InterpreterOptions options;
+  options.keepGoing = keepGoing;
+  if (showProgress) options.progress = [&](double f) { progress.update(f); };
+  InterpretResult result = interpretGcodeFile(path, options);
+  progress.finish();
+  for (const Diagnostic& w : result.program.warnings) std::fprintf(stderr, "warning: %s\n", w.str().c_str());
+  for (const Diagnostic& e : result.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
+  if (!result.ok()) throw CommandExit{kExitInputError};
+  return std::move(result.program);
+}
+
+Machine loadMachineOption(const std::string& path) {
+  return path.empty() ? defaultMachine() : loadMachine(path);
+}
+
+std::string formatDuration(double seconds) {
+  if (!std::isfinite(seconds) || seconds < 0) seconds = 0;
+  const long long ms = std::llround(seconds * 1000.0);
+  char text[64];
+  std::snprintf(text, sizeof text, "%lld:%02lld.%03lld", ms / 60000, (ms / 1000) % 60, ms % 1000);
+  return text;
+}
+
+}  // namespace isurface::cli

@@ -1,0 +1,25 @@
+#pragma once
+// Loading what commands share: a G-code program (with its diagnostics printed) and a machine.
+#include <string>
+
+#include "isurface/core/machine.h"
+#include "isurface/core/program.h"
+
+namespace isurface::cli {
+
+// Thrown when a command must stop with a given exit code after it has said why on stderr.
+struct CommandExit {
+  int code;
+};
+
+// Interprets a G-code file, printing warnings and errors on stderr ("error: file:line:col: ...").
+// Any error throws CommandExit{kExitInputError}: with keepGoing, after reporting them all.
+Program loadProgram(const std::string& path, bool keepGoing, bool showProgress = true);
+
+// The machine of --machine, or the built-in default when the path is empty.
+Machine loadMachineOption(const std::string& path);
+
+// Machine time as m:ss.mmm.
+std::string formatDuration(double seconds);
+
+}  // namespace isurface::cli

@@ -1,0 +1,72 @@
+#pragma once
+// Feed planning with look-ahead over the whole program.
+//
+// The plan is made in two stages that together give a jerk-limited (S-curve) motion:
+//  1. an acceleration-limited speed profile along the exact geometry (lines and arcs), with
+//     speed limits per segment (feed, axis velocities, arc curvature) and per junction
+//     (corner angle, curvature estimated from three points between short G1 moves), found by a
+//     forward and a backward pass over all segments, so that short moves flow at speed;
+//  2. two moving-average filters applied to the interpolated axis positions (see
+//     interpolator.h). A moving average of length T1 turns an acceleration bounded by a into
+//     jerk bounded by 2a/T1, and the second, shorter one spreads the velocity change at a
+//     corner so that corners, too, have bounded jerk. The filters move samples off the
+//     programmed path at corners and on curves; the limits of stage 1 keep that deviation
+//     within the machine's chord tolerance.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "isurface/core/machine.h"
+#include "isurface/core/program.h"
+
+namespace isurface {
+
+// How the machine's limits are shared between the effects that add up on one axis.
+struct LimitBudget {
+  double tangentialAccel = 0.5;  // fraction of axis acceleration for speeding up and slowing down
+  double normalAccel = 0.35;     // for centripetal acceleration on curves
+  double cornerAccel = 0.15;     // for the velocity change at a corner, spread by the filters
+  double tangentialJerk = 0.6;   // fraction of axis jerk for the filtered ramps
+  double normalJerk = 0.25;      // for the turning of the centripetal acceleration on curves
+  double cornerJerk = 0.15;      // for the corner velocity change after both filters
+  double cornerTolerance = 0.8;  // fraction of the chord tolerance spent on corner rounding
+};
+
+struct PlannedSegment {
+  std::uint32_t move = 0;   // index in Program::moves
+  double length = 0;        // mm
+  double entrySpeed = 0;    // mm/s
+  double peakSpeed = 0;     // mm/s
+  double exitSpeed = 0;     // mm/s
+  double accel = 0;         // mm/s^2, tangential, for both ramps
+  double holdAfter = 0;     // s of standstill after the segment (dwell)
+
+  double accelTime() const { return accel > 0 ? (peakSpeed - entrySpeed) / accel : 0; }
+  double decelTime() const { return accel > 0 ? (peakSpeed - exitSpeed) / accel : 0; }
+  double accelDistance() const { return 0.5 * (entrySpeed + peakSpeed) * accelTime(); }
+  double decelDistance() const { return 0.5 * (exitSpeed + peakSpeed) * decelTime(); }
+  double cruiseTime() const;
+  double motionTime() const { return accelTime() + cruiseTime() + decelTime(); }
+};
+
+struct FeedPlan {
+  std::vector<PlannedSegment> segments;  // zero-length moves are left out
+  double holdBefore = 0;                 // s of dwell before the first motion
+  double filterTime1 = 0;                // s, jerk filter (0 when jerk is not limited)
+  double filterTime2 = 0;                // s, corner filter
+  double cycle = 0.001;                  // s
+
+  // Time of the unfiltered profile, s.
+  double profileDuration() const;
+};
+
+using ProgressCallback = std::function<void(double)>;
+
+FeedPlan planFeed(const Program& program, const Machine& machine, const LimitBudget& budget = {},
+                  const ProgressCallback& progress = {});
+
+// Radius of the circle through three points (equation 1 of the constant speed interval
+// paper), mm; +infinity for collinear or coincident points.
+double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& next);
+
+}  // namespace isurface

@@ -1,0 +1,83 @@
+// The simulator on real programs written by others (../shared/realdata).
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "core/motion_checks.h"
+#include "isurface/core/feed_plan.h"
+#include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/simulator.h"
+#include "test_support.h"
+
+using namespace isurface;
+using isurface::test::MotionChecker;
+using isurface::test::MotionExtremes;
+using isurface::test::realdataPath;
+
+namespace {
+
+constexpr double kLimitTolerance = 1.05;
+
+Program load(const std::string& name) {
+  InterpretResult r = interpretGcodeFile(realdataPath(name));
+  EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors.front().str());
+  return std::move(r.program);
+}
+
+MotionExtremes check(const Program& p, const Machine& m, bool geometry) {
+  const FeedPlan plan = planFeed(p, m);
+  MotionChecker checker(p, m, static_cast<int>((plan.filterTime1 + plan.filterTime2) / m.cycle) + 2, geometry);
+  simulate(p, m, checker);
+  return checker.finish();
+}
+
+#define REQUIRE_REALDATA(name)                                               \
+  if (!isurface::test::fileExists(realdataPath(name))) GTEST_SKIP() << "no " << realdataPath(name)
+
+}  // namespace
+
+TEST(SimulatorRealData, LinuxcncTestProgramWithinLimitsAndTolerance) {
+  REQUIRE_REALDATA("linuxcnc_test.ngc");
+  const Machine m = defaultMachine();
+  const MotionExtremes r = check(load("linuxcnc_test.ngc"), m, true);
+  EXPECT_LE(r.velocityRatio, kLimitTolerance);
+  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
+  EXPECT_LE(r.jerkRatio, kLimitTolerance);
+  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
+  EXPECT_TRUE(r.blocksInOrder);
+  EXPECT_TRUE(r.linesInOrder);
+}
+
+TEST(SimulatorRealData, CommunicatorWaterlineArcsWithinLimitsAndTolerance) {
+  REQUIRE_REALDATA("communicator.nc");
+  const Machine m = defaultMachine();
+  const MotionExtremes r = check(load("communicator.nc"), m, true);
+  EXPECT_LE(r.velocityRatio, kLimitTolerance);
+  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
+  EXPECT_LE(r.jerkRatio, kLimitTolerance);
+  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
+  EXPECT_TRUE(r.blocksInOrder);
+  EXPECT_TRUE(r.linesInOrder);
+}
+
+// LinuxCNC 2.9 ran linuxcnc_test.ngc at 100 mm/s and 1000 mm/s^2 on every axis with no jerk
+// limit; with the same limits our machining time is within 10% of the recording's.
+TEST(SimulatorRealData, MachiningTimeMatchesTheLinuxcncRecording) {
+  REQUIRE_REALDATA("linuxcnc_test.halsampler.txt");
+  std::ifstream in(realdataPath("linuxcnc_test.halsampler.txt"));
+  std::string text;
+  std::size_t inProgram = 0;
+  while (std::getline(in, text)) {
+    std::istringstream fields(text);
+    double index, x, y, z, line;
+    if (fields >> index >> x >> y >> z >> line && line != 0) ++inProgram;
+  }
+  const double recorded = inProgram * 0.001;
+  ASSERT_GT(recorded, 10.0);
+  const Machine m = loadMachine(isurface::test::sourcePath("resources/machines/linuxcnc-sim.json"));
+  SampleBuffer buffer;
+  const SimulationReport r = simulate(load("linuxcnc_test.ngc"), m, buffer);
+  EXPECT_NEAR(r.machiningTime, recorded, 0.10 * recorded)
+      << "simulated " << r.machiningTime << " s, recorded " << recorded << " s";
+}
