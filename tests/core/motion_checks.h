@@ -25,23 +25,38 @@ struct MotionExtremes {
   double duration = 0;           // s
 };
 
-// Distance from p to one move's geometry; arcs are measured against a fine polyline whose own
-// sag is far below the tolerances checked.
+// Distance from p to one move's geometry. On an arc the nearest point is searched from the
+// point at p's own angle (every turn of it) and both ends, then refined by golden section,
+// which also covers helices and spirals.
 inline double distanceToSegment(const PathSegment& seg, const Vec3& p) {
-  auto toLine = [&](const Vec3& a, const Vec3& b) {
-    const Vec3 d = b - a;
+  if (!seg.arc) {
+    const Vec3 d = seg.end - seg.start;
     const double l2 = d.squaredNorm();
-    const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-    return (a + t * d - p).norm();
-  };
-  if (!seg.arc) return toLine(seg.start, seg.end);
-  const int pieces = std::max(64, static_cast<int>(seg.length / 0.01));
+    const double t = l2 > 0 ? std::clamp((p - seg.start).dot(d) / l2, 0.0, 1.0) : 0.0;
+    return (seg.start + t * d - p).norm();
+  }
+  const ArcGeometry& g = seg.arcGeometry;
+  const double sweep = std::abs(g.sweep);
+  if (sweep < 1e-12) return (seg.start - p).norm();
+  auto dist = [&](double f) { return (g.at(std::clamp(f, 0.0, 1.0)) - p).norm(); };
+  const double pi2 = 6.283185307179586;
+  double angle = std::atan2(p[g.axes.v] - g.centre[g.axes.v], p[g.axes.u] - g.centre[g.axes.u]) - g.startAngle;
+  if (g.sweep < 0) angle = -angle;
+  angle = std::fmod(std::fmod(angle, pi2) + pi2, pi2);
+  std::vector<double> candidates = {0.0, 1.0};
+  for (double a = angle; a <= sweep + pi2; a += pi2) candidates.push_back(a / sweep);
+  for (double a = angle - pi2; a >= -pi2; a -= pi2) candidates.push_back(a / sweep);
   double best = std::numeric_limits<double>::infinity();
-  Vec3 previous = seg.at(0);
-  for (int i = 1; i <= pieces; ++i) {
-    const Vec3 next = seg.at(seg.length * i / pieces);
-    best = std::min(best, toLine(previous, next));
-    previous = next;
+  const double bracket = 0.3 / sweep;  // about 17 degrees either side
+  for (double c : candidates) {
+    double lo = std::max(0.0, c - bracket), hi = std::min(1.0, c + bracket);
+    if (lo > hi) continue;
+    for (int i = 0; i < 32; ++i) {
+      const double m1 = lo + 0.382 * (hi - lo), m2 = lo + 0.618 * (hi - lo);
+      if (dist(m1) < dist(m2)) hi = m2;
+      else lo = m1;
+    }
+    best = std::min({best, dist(0.5 * (lo + hi)), dist(c)});
   }
   return best;
 }

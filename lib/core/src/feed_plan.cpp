@@ -11,6 +11,9 @@ namespace isurface {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
+// No segment is planned slower than this (mm/s): degenerate geometry (a 1e-9 mm arc) must
+// still be passed in finite time, not skipped.
+constexpr double kSlowestSpeed = 0.1;
 
 // Odd number of cycles closest to a filter time, at least 1.
 int filterTaps(double time, double cycle) {
@@ -77,6 +80,7 @@ class Planner {
     plan.segments.reserve(program_.moves.size());
     junction_.reserve(program_.moves.size() + 1);
     junction_.push_back(0.0);  // the machine starts at rest
+    junctionRadius_.push_back(kInfinity);
     maxSpeed_.reserve(program_.moves.size());
 
     PathSegment previous;
@@ -141,11 +145,15 @@ class Planner {
     } else {
       speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
     }
+    speed = std::max(speed, kSlowestSpeed);
     ps.peakSpeed = speed;  // the cap until solveSpeeds() settles the profile
     ps.accel = tangentialAccel(seg);
     plan.segments.push_back(ps);
     maxSpeed_.push_back(speed);
+    axisAccel_.push_back(ps.accel / budget_.tangentialAccel);
+    centripetal_.push_back(seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0);
     junction_.push_back(kInfinity);
+    junctionRadius_.push_back(kInfinity);
     stopped_ = false;
   }
 
@@ -164,14 +172,20 @@ class Planner {
   // Speed limit on a curve of radius r (mm): centripetal acceleration and its turning rate,
   // the deviation the filters cause on a curve, and (arcs) the chord error between samples.
   double curvatureLimit(double radius, double accel, bool chordBetweenSamples) const {
-    if (!(radius > kLengthEpsilon)) return 0.0;
+    if (!(radius > kLengthEpsilon)) return kSlowestSpeed;
     if (!std::isfinite(radius)) return kInfinity;
     double v = std::sqrt(budget_.normalAccel * accel * radius);
     if (machine_.jerkLimited()) v = std::min(v, std::cbrt(budget_.normalJerk * minJerk(machine_) * radius * radius));
-    const double filterSpread = t1_ * t1_ + t2_ * t2_;
-    // A circle of radius r traversed at v and averaged over the filters shrinks by
-    // v^2 (T1^2 + T2^2) / (24 r).
-    if (filterSpread > 0) v = std::min(v, std::sqrt(24.0 * radius * smoothingTolerance_ / filterSpread));
+    // A curve of radius r traversed at v with tangential acceleration a, averaged over the
+    // filters (S = U1 + U2, U uniform over T1 and T2), falls inside by
+    // E[(v S + a S^2 / 2)^2] / (2 r) = (v^2 E[S^2] + a^2 E[S^4] / 4) / (2 r).
+    const double s2 = (t1_ * t1_ + t2_ * t2_) / 12.0;
+    const double s4 = std::pow(t1_, 4) / 80.0 + std::pow(t2_, 4) / 80.0 + t1_ * t1_ * t2_ * t2_ / 24.0;
+    if (s2 > 0) {
+      const double a = budget_.tangentialAccel * accel;
+      const double room = 2.0 * radius * smoothingTolerance_ - a * a * s4 / 4.0;
+      v = std::min(v, room > 0 ? std::sqrt(room / s2) : kSlowestSpeed);
+    }
     const double e = machine_.chordTolerance;
     if (chordBetweenSamples && 2.0 * radius > e)
       v = std::min(v, 2.0 * std::sqrt(2.0 * radius * e - e * e) / machine_.cycle);
@@ -179,7 +193,7 @@ class Planner {
   }
 
   // 0 means the corner is too sharp to pass in motion: stop there.
-  double junctionLimit(const PathSegment& in, const PathSegment& out, double accelIn) const {
+  double junctionLimit(const PathSegment& in, const PathSegment& out, double accelIn) {
     const Vec3 turn = out.startTangent() - in.endTangent();
     const double turnNorm = turn.norm();
     double v = kInfinity;
@@ -205,9 +219,26 @@ class Planner {
     if (!in.arc && !out.arc) {
       // Short G1 moves approximate a curve: its radius from three points limits the speed.
       const double radius = threePointRadius(in.start, in.end, out.end);
+      junctionRadius_.back() = radius;
       v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), false));
     }
     return v;
+  }
+
+  // Where the path is straight, its axes need no share for centripetal acceleration: a
+  // segment's ramps may use what its curvature (on an arc, at its junctions) leaves over.
+  void shareAcceleration(std::vector<PlannedSegment>& segs) const {
+    if (machine_.jerkLimited()) return;  // the jerk filter was sized for the fixed share
+    const double most = budget_.tangentialAccelWithoutJerkLimit;
+    auto junctionCentripetal = [&](std::size_t j) {
+      const double r = junctionRadius_[j];
+      return std::isfinite(r) && r > 0 ? junction_[j] * junction_[j] / r : 0.0;
+    };
+    for (std::size_t k = 0; k < segs.size(); ++k) {
+      const double normal = std::max({centripetal_[k], junctionCentripetal(k), junctionCentripetal(k + 1)});
+      const double available = axisAccel_[k] * (1.0 - budget_.cornerAccel) - normal;
+      segs[k].accel = std::clamp(available, segs[k].accel, most * axisAccel_[k]);
+    }
   }
 
   void solveSpeeds(FeedPlan& plan) {
@@ -217,6 +248,7 @@ class Planner {
     for (std::size_t k = 1; k < n; ++k) v[k] = std::min({v[k], maxSpeed_[k - 1], maxSpeed_[k]});
     v[0] = 0.0;
     v[n] = 0.0;
+    shareAcceleration(segs);
     for (std::size_t k = 0; k < n; ++k)
       v[k + 1] = std::min(v[k + 1], std::sqrt(v[k] * v[k] + 2.0 * segs[k].accel * segs[k].length));
     for (std::size_t k = n; k-- > 0;)
@@ -240,6 +272,9 @@ class Planner {
   double smoothingTolerance_ = 0;
   std::vector<double> junction_;  // speed limit at the start of segment k (k == size: the end)
   std::vector<double> maxSpeed_;
+  std::vector<double> axisAccel_;       // mm/s^2 along segment k that its axes allow, no shares
+  std::vector<double> centripetal_;     // mm/s^2 on arc k at its speed cap
+  std::vector<double> junctionRadius_;  // mm, three-point radius at junction k between lines
 };
 
 }  // namespace

@@ -24,6 +24,9 @@ namespace isurface {
 // How the machine's limits are shared between the effects that add up on one axis.
 struct LimitBudget {
   double tangentialAccel = 0.5;  // fraction of axis acceleration for speeding up and slowing down
+  // Without a jerk limit no filter time depends on the tangential share, so where a segment
+  // has no curvature to share its axes with, it may use up to this much.
+  double tangentialAccelWithoutJerkLimit = 0.85;
   double normalAccel = 0.35;     // for centripetal acceleration on curves
   double cornerAccel = 0.15;     // for the velocity change at a corner, spread by the filters
   double tangentialJerk = 0.6;   // fraction of axis jerk for the filtered ramps
