@@ -3,21 +3,40 @@
 // The reader maps the file; channels are read in place through strided views.
 #include <cstddef>
 #include <cstdint>
+#include <cstring>
 #include <memory>
 #include <string>
+#include <string_view>
+#include <utility>
 #include <vector>
 
 namespace isurface {
 
 enum class BiipType : std::uint8_t { F64 = 1, F32 = 2, I32 = 3, U32 = 4, I64 = 5, U64 = 6 };
 
-std::size_t biipTypeSize(BiipType type);
+// Limits of format version 1.
+constexpr std::uint16_t kBiipVersionMajor = 1;
+constexpr std::uint16_t kBiipVersionMinor = 0;
+constexpr std::uint32_t kBiipFixedHeaderBytes = 64;
+constexpr std::uint32_t kBiipChannelEntryBytes = 32;
+constexpr std::uint32_t kBiipMaxChannels = 256;
+constexpr std::uint32_t kBiipMaxRecordBytes = 4096;
+constexpr std::size_t kBiipMaxNameLength = 24;
+
+std::size_t biipTypeSize(BiipType type);   // 0 for a value outside the enumeration
+const char* biipTypeName(BiipType type);   // "f64", "f32", "i32", "u32", "i64", "u64"; "?" else
+bool biipTypeKnown(std::uint8_t code);     // 1..6
+bool biipValidChannelName(std::string_view name);  // 1..24 characters of [a-z0-9_]
 
 struct BiipChannel {
   std::string name;  // [a-z0-9_], at most 24 characters
   BiipType type = BiipType::F64;
   std::uint32_t offset = 0;  // bytes inside a record
 };
+
+// Stores `value` converted to the channel's type at its offset in `record` (writers' helper).
+// Integer types are rounded to nearest and clamped to the type's range; NaN stores 0.
+void biipStore(void* record, const BiipChannel& channel, double value);
 
 struct BiipHeader {
   std::uint16_t versionMajor = 1;
@@ -26,10 +45,10 @@ struct BiipHeader {
   std::uint32_t recordBytes = 0;
   std::uint32_t flags = 0;
   double cycleSeconds = 0.001;
-  std::uint64_t recordCount = 0;
+  std::uint64_t recordCount = 0;  // as written in the file (0 = not known)
   double t0Seconds = 0;
   std::vector<BiipChannel> channels;
-  std::string metadataJson;  // "" when the file has none
+  std::string metadataJson;  // "" when the file has none (or its metadata was unusable)
 };
 
 // A read-only view of one channel: value i converted to double (or to u64 for counters).
@@ -41,7 +60,33 @@ class BiipChannelView {
   bool valid() const { return first_ != nullptr; }
   std::size_t size() const { return count_; }
   BiipType type() const { return type_; }
-  double operator[](std::size_t i) const;
+  std::size_t stride() const { return stride_; }  // bytes between consecutive values
+  double operator[](std::size_t i) const {
+    const unsigned char* p = first_ + i * stride_;
+    if (type_ == BiipType::F64) {
+      double v;
+      std::memcpy(&v, p, sizeof v);
+      return v;
+    }
+    return convert(p, type_);
+  }
+  // Value i as an unsigned integer, exact for every integer type (negative values clamp to 0,
+  // floating values are truncated; NaN gives 0).
+  std::uint64_t integer(std::size_t i) const;
+  // Converts values [begin, begin + count) to doubles; count is clipped to the view's size.
+  void copyTo(double* out, std::size_t begin, std::size_t count) const;
+
+  static double convert(const unsigned char* p, BiipType type) {
+    switch (type) {
+      case BiipType::F64: { double v; std::memcpy(&v, p, 8); return v; }
+      case BiipType::F32: { float v; std::memcpy(&v, p, 4); return v; }
+      case BiipType::I32: { std::int32_t v; std::memcpy(&v, p, 4); return double(v); }
+      case BiipType::U32: { std::uint32_t v; std::memcpy(&v, p, 4); return double(v); }
+      case BiipType::I64: { std::int64_t v; std::memcpy(&v, p, 8); return double(v); }
+      case BiipType::U64: { std::uint64_t v; std::memcpy(&v, p, 8); return double(v); }
+    }
+    return 0;
+  }
 
  private:
   const unsigned char* first_ = nullptr;
@@ -62,15 +107,29 @@ class BiipReader {
   const std::string& path() const { return path_; }
   const BiipHeader& header() const { return header_; }
   std::size_t recordCount() const { return records_; }  // records actually loaded
+  // Problems the reader worked around, one sentence each, without the file name.
   const std::vector<std::string>& warnings() const { return warnings_; }
+  // Records whose x, y or z is NaN or infinite (counted when the file is opened).
+  std::size_t nonFiniteSampleCount() const { return nonFinite_; }
 
   bool hasChannel(const std::string& name) const;
+  const BiipChannel* findChannel(const std::string& name) const;  // nullptr when absent
   // An invalid view when the channel is absent.
   BiipChannelView channel(const std::string& name) const;
+  // Converts records [begin, begin + count) of a channel to doubles (count clipped to the
+  // records loaded). Returns false when the channel is absent.
+  bool copyChannel(const std::string& name, double* out, std::size_t begin, std::size_t count) const;
   // Time of record i in seconds: the `t` channel when present, else t0 + i * cycle.
   double timeAt(std::size_t i) const;
+  // The raw bytes of record i (recordBytes() of them), in place in the mapping.
+  const unsigned char* record(std::size_t i) const { return data_ + header_.headerBytes + i * header_.recordBytes; }
+  std::size_t fileBytes() const { return size_; }
 
  private:
+  [[noreturn]] void refuse(const std::string& problem) const;
+  void parse();
+  void unmap() noexcept;
+
   std::string path_;
   BiipHeader header_;
   std::size_t records_ = 0;
@@ -78,12 +137,18 @@ class BiipReader {
   const unsigned char* data_ = nullptr;
   std::size_t size_ = 0;
   BiipChannelView t_;
+  std::size_t nonFinite_ = 0;
 };
 
 // Streams records to `path` through a temporary file beside it; commit() renames it into place.
 // Destroying a writer that was not committed removes the temporary file: no partial output.
+// The header is written first with record_count 0; commit() writes the real count.
 class BiipWriter {
  public:
+  // Throws std::invalid_argument for channels that break the format (bad or duplicate names,
+  // a channel outside the record, no x/y/z, more than 256 channels, records over 4096 bytes),
+  // a cycle that is not finite and > 0, or metadata that is not a JSON object; throws
+  // InputError when the file cannot be created.
   BiipWriter(const std::string& path, std::vector<BiipChannel> channels, double cycleSeconds,
              std::string metadataJson, double t0Seconds = 0);
   ~BiipWriter();
@@ -93,10 +158,17 @@ class BiipWriter {
   // Lays channels out in the given order, each aligned to its size; returns the channel list.
   static std::vector<BiipChannel> layout(
       const std::vector<std::pair<std::string, BiipType>>& namesAndTypes);
+  // Record size for a channel list: the end of the last byte used, rounded up to 8.
+  static std::uint32_t recordBytesFor(const std::vector<BiipChannel>& channels);
   std::uint32_t recordBytes() const { return recordBytes_; }
+  const std::vector<BiipChannel>& channels() const;
+  // The offset of a channel in a record; throws std::out_of_range when absent.
+  std::uint32_t offsetOf(const std::string& name) const;
 
   // Appends one record of recordBytes() bytes, already laid out.
   void append(const void* record);
+  // Appends `count` consecutive records.
+  void appendRecords(const void* records, std::size_t count);
   std::uint64_t recordCount() const { return count_; }
   // Writes the final count, flushes, renames into place. Throws InputError on an I/O failure.
   void commit();
