@@ -81,3 +81,21 @@ TEST(SimulatorRealData, MachiningTimeMatchesTheLinuxcncRecording) {
   EXPECT_NEAR(r.machiningTime, recorded, 0.10 * recorded)
       << "simulated " << r.machiningTime << " s, recorded " << recorded << " s";
 }
+
+// Reliefs with sharp turns between short moves: the first few thousand moves of each.
+TEST(SimulatorRealData, ReliefProgramsWithinLimitsAndTolerance) {
+  for (const char* name : {"stellabee1.ngc", "cameo.nc"}) {
+    if (!isurface::test::fileExists(realdataPath(name))) continue;
+    SCOPED_TRACE(name);
+    Program p = load(name);
+    p.moves.resize(std::min<std::size_t>(p.moves.size(), 4000));
+    const Machine m = defaultMachine();
+    const MotionExtremes r = check(p, m, true);
+    EXPECT_LE(r.velocityRatio, kLimitTolerance);
+    EXPECT_LE(r.accelerationRatio, kLimitTolerance);
+    EXPECT_LE(r.jerkRatio, kLimitTolerance);
+    EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
+    EXPECT_TRUE(r.blocksInOrder);
+    EXPECT_TRUE(r.linesInOrder);
+  }
+}

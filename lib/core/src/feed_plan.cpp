@@ -99,9 +99,10 @@ class Planner {
       const PathSegment seg = PathSegment::from(program_, i);
       if (seg.length > 0) {
         if (havePrevious) {
-          const double limit = junctionLimit(previous, seg, plan.segments.back().accel);
+          double hold = 0;
+          const double limit = junctionLimit(previous, seg, plan.segments.back().accel, hold);
           if (limit > 0) junction_.back() = std::min(junction_.back(), limit);
-          else stopAtJunction(plan);
+          else stopAtJunction(plan, hold);
         }
         addSegment(plan, static_cast<std::uint32_t>(i), move, seg);
         previous = seg;
@@ -116,12 +117,16 @@ class Planner {
   }
 
  private:
-  // The machine comes to rest at the current junction and waits until the filters have
-  // drained, so that the corner is reached exactly (an exact stop, as in-position checking).
-  void stopAtJunction(FeedPlan& plan) {
-    if (stopped_) return;
+  // The machine comes to rest at the current junction and waits `hold` seconds; by default
+  // until the filters have drained, so that the corner is reached exactly (an exact stop, as
+  // in-position checking does).
+  void stopAtJunction(FeedPlan& plan, double hold = -1) {
+    if (hold < 0) hold = settleTime_;
     junction_.back() = 0.0;
-    if (!plan.segments.empty()) plan.segments.back().holdAfter += settleTime_;
+    if (!plan.segments.empty()) {
+      double& planned = plan.segments.back().holdAfter;
+      planned = stopped_ ? std::max(planned, hold) : planned + hold;
+    }
     stopped_ = true;
   }
 
@@ -192,8 +197,8 @@ class Planner {
     return v;
   }
 
-  // 0 means the corner is too sharp to pass in motion: stop there.
-  double junctionLimit(const PathSegment& in, const PathSegment& out, double accelIn) {
+  // 0 means the corner is too sharp to pass in motion: stop there for `hold` seconds.
+  double junctionLimit(const PathSegment& in, const PathSegment& out, double accelIn, double& hold) {
     const Vec3 turn = out.startTangent() - in.endTangent();
     const double turnNorm = turn.norm();
     double v = kInfinity;
@@ -213,7 +218,16 @@ class Planner {
       //   |turn| / 2 * (v (T1 + T2) / 4 + a (T1^2 + T2^2) / 24).
       const double accel = std::max(accelIn, tangentialAccel(out));
       const double budget = 2.0 * smoothingTolerance_ / turnNorm - accel * (t1_ * t1_ + t2_ * t2_) / 24.0;
-      if (budget <= 0) return 0.0;
+      if (budget <= 0) {
+        // Stopped at the corner for h, the filters (width W = T1 + T2, taken as uniform, which
+        // overstates their tails) still mix in both legs where the ramps leave and join it:
+        // the samples fall off the corner by about sin(angle) a (W - h)^3 / (48 W).
+        const double width = t1_ + t2_;
+        const double sine = turnNorm * std::sqrt(std::max(0.0, 1.0 - 0.25 * turnNorm * turnNorm));
+        const double reach = sine > 1e-12 ? std::cbrt(48.0 * width * smoothingTolerance_ / (accel * sine)) : width;
+        hold = std::clamp(width - reach, 0.0, width);
+        return 0.0;
+      }
       v = std::min(v, 4.0 * budget / (t1_ + t2_));
     }
     if (!in.arc && !out.arc) {
