@@ -32,7 +32,7 @@ struct LimitBudget {
   double tangentialJerk = 0.6;   // fraction of axis jerk for the filtered ramps
   double normalJerk = 0.25;      // for the turning of the centripetal acceleration on curves
   double cornerJerk = 0.15;      // for the corner velocity change after both filters
-  double cornerTolerance = 0.8;  // fraction of the chord tolerance spent on corner rounding
+  double cornerTolerance = 0.75; // fraction of the chord tolerance spent on rounding corners and curves
 };
 
 struct PlannedSegment {
