@@ -1,0 +1,14 @@
+#pragma once
+// Renders a quality-map scene to a PNG file with no display (OSMesa).
+#include <string>
+
+namespace isurface::vis {
+class QualityScene;
+}
+
+namespace isurface::cli {
+
+// Writes the PNG through a temporary file renamed into place. Returns the render time in s.
+double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int height, const std::string& path);
+
+}  // namespace isurface::cli

@@ -1,0 +1,55 @@
+#include "osmesa_context.h"
+
+#include <GL/osmesa.h>
+
+#include <stdexcept>
+#include <vector>
+
+// VTK loads OpenGL through GLEW, which asks GLX for function pointers and fails without an X
+// display. These two definitions take precedence over the libraries' own: OSMesa answers.
+extern "C" {
+void (*glXGetProcAddressARB(const unsigned char* name))() {
+  return reinterpret_cast<void (*)()>(OSMesaGetProcAddress(reinterpret_cast<const char*>(name)));
+}
+unsigned int glxewInit() { return 0; }
+}
+
+namespace isurface::cli {
+
+struct OsMesaContext::Impl {
+  OSMesaContext context = nullptr;
+  std::vector<unsigned char> buffer;
+  int width = 0, height = 0;
+};
+
+OsMesaContext::OsMesaContext(int width, int height) : impl_(new Impl) {
+  const int attributes[] = {OSMESA_FORMAT, OSMESA_RGBA, OSMESA_DEPTH_BITS, 24, OSMESA_STENCIL_BITS, 8,
+                            OSMESA_PROFILE, OSMESA_CORE_PROFILE, OSMESA_CONTEXT_MAJOR_VERSION, 3,
+                            OSMESA_CONTEXT_MINOR_VERSION, 2, 0};
+  impl_->context = OSMesaCreateContextAttribs(attributes, nullptr);
+  if (!impl_->context) {
+    delete impl_;
+    throw std::runtime_error("cannot create an OSMesa OpenGL 3.2 core context");
+  }
+  impl_->width = width;
+  impl_->height = height;
+  impl_->buffer.resize(static_cast<std::size_t>(width) * height * 4);
+  if (!makeCurrent()) {
+    OSMesaDestroyContext(impl_->context);
+    delete impl_;
+    throw std::runtime_error("cannot make the OSMesa context current");
+  }
+}
+
+OsMesaContext::~OsMesaContext() {
+  OSMesaDestroyContext(impl_->context);
+  delete impl_;
+}
+
+bool OsMesaContext::makeCurrent() {
+  return OSMesaMakeCurrent(impl_->context, impl_->buffer.data(), GL_UNSIGNED_BYTE, impl_->width, impl_->height);
+}
+
+bool OsMesaContext::isCurrent() const { return OSMesaGetCurrentContext() == impl_->context; }
+
+}  // namespace isurface::cli

@@ -1,0 +1,49 @@
+#pragma once
+// What a quality map can be coloured by: motion parameters per sample, and the two scalars on
+// the surface (adjacent-pass inconsistency, predicted deviation).
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isurface/core/surface_mesh.h"
+
+namespace isurface {
+
+enum class Quantity {
+  Speed,               // mm/min, path
+  Acceleration,        // mm/s^2, tangential (signed)
+  AccelerationMagnitude, // mm/s^2, |a|
+  Jerk,                // mm/s^3, |j|
+  VelocityX, VelocityY, VelocityZ,          // mm/min
+  AccelerationX, AccelerationY, AccelerationZ,  // mm/s^2
+  JerkX, JerkY, JerkZ, // mm/s^3
+  FollowingError,      // um, |commanded - feedback|
+  Line,                // G-code line
+  Time,                // s
+  Feed,                // mm/min, programmed
+  SpeedInconsistency,  // mm/min, |speed - speed of the nearest sample on a neighbouring pass|, the larger of both sides
+  AccelerationInconsistency, // mm/s^2, the same for tangential acceleration
+  Deviation,           // um, feedback surface from the commanded one along the commanded normal (signed, + outwards)
+};
+
+struct QuantityInfo {
+  Quantity quantity;
+  const char* name;   // command-line name: "speed", "accel", "jerk", "vx", ..., "deviation"
+  const char* label;  // "Path speed"
+  const char* unit;   // "mm/min"
+  bool needsFeedback; // following error, deviation
+  bool onSurface;     // needs the mesh (inconsistencies, deviation)
+};
+
+const std::vector<QuantityInfo>& quantityInfos();
+const QuantityInfo& quantityInfo(Quantity q);
+std::optional<Quantity> parseQuantity(const std::string& name);
+
+// Values per sample (Quantity::onSurface == false). Throws InputError when the samples lack
+// what the quantity needs (e.g. no feedback channels).
+std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples);
+
+// Values per mesh vertex, for any quantity.
+std::vector<float> vertexQuantity(Quantity q, const Trajectory& samples, const SurfaceMesh& mesh);
+
+}  // namespace isurface

@@ -1,0 +1,43 @@
+#pragma once
+// From samples to a ready scene description: passes, surface mesh, the coloured quantity, its
+// range, the programmed tool path and the highlighted line.
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "isurface/core/program.h"
+#include "isurface/core/quantities.h"
+#include "isurface/core/trajectory.h"
+#include "isurface/vis/quality_scene.h"
+
+namespace isurface::vis {
+
+struct QualityMapRequest {
+  Quantity quantity = Quantity::Speed;
+  bool feedbackSurface = false;              // the surface of the feedback positions
+  std::optional<std::uint32_t> highlightLine;
+  std::string colorMap = "rainbow";
+  std::optional<ValueRange> fixedRange;      // else percentile-clipped
+  double lowPercent = 1, highPercent = 99;   // with both 0 and 100: the full range
+  ViewDirection view = ViewDirection::Iso;
+  bool showToolpath = true;
+  bool passWires = true;
+  int isoBands = 12;
+  std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
+  std::string caption;                       // prefix of the caption (e.g. the file name)
+};
+
+struct QualityMap {
+  SurfaceMesh mesh;
+  PassSet passes;
+  SurfaceData data;
+  MapStyle style;
+};
+
+// Throws InputError when the request cannot be met (no feedback, no cutting passes, ...).
+QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request);
+
+// The programmed cutting moves as polylines (arcs sampled within 0.01 mm), rapids left out.
+std::vector<std::vector<Vec3>> programPolylines(const Program& program);
+
+}  // namespace isurface::vis

@@ -1,0 +1,69 @@
+#pragma once
+// The quality-map scene: the CL surface coloured by one quantity (with iso-lines of it and a
+// faint wire along every pass, drawn by the shaders in shaders/), the programmed tool path,
+// the glowing samples of a selected G-code line, a legend, a caption and orientation axes.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <vtkSmartPointer.h>
+
+#include "isurface/core/surface_mesh.h"
+#include "isurface/core/value_range.h"
+
+class vtkActor;
+class vtkPolyData;
+class vtkRenderer;
+class vtkRenderWindow;
+class vtkLookupTable;
+
+namespace isurface::vis {
+
+enum class ViewDirection { Iso, Top, Front, Left };
+std::optional<ViewDirection> parseView(const std::string& name);  // "iso", "top", "front", "left"
+
+struct SurfaceData {
+  std::vector<Vec3> positions;   // mesh vertices, mm
+  const SurfaceMesh* mesh = nullptr;
+  std::vector<float> scalars;    // the coloured quantity, one per vertex
+  std::vector<std::vector<Vec3>> toolpath;  // programmed cutting path as polylines, mm
+  std::vector<Vec3> highlight;   // samples to make glow (a selected line's), mm
+};
+
+struct MapStyle {
+  std::string colorMap = "rainbow";
+  ValueRange range;              // the colour map's span
+  std::string quantityLabel;     // legend title, e.g. "Path speed"
+  std::string unit;              // e.g. "mm/min"
+  std::string caption;           // top-left text
+  ViewDirection view = ViewDirection::Iso;
+  bool showToolpath = true;
+  bool passWires = true;
+  int isoBands = 12;             // iso-lines across the range; 0 for none
+};
+
+class QualityScene {
+ public:
+  QualityScene(const SurfaceData& data, const MapStyle& style);
+  ~QualityScene();
+
+  // Adds the scene's renderers to a window (main view and the orientation-axes corner).
+  void attachTo(vtkRenderWindow* window);
+  void setView(ViewDirection view);
+  // Keeps the axes corner turned like the main camera; call before each render.
+  void syncAxes();
+
+  vtkRenderer* renderer() const;
+  vtkPolyData* surface() const;  // points, triangles, "value" and "pass_coord" arrays
+  vtkLookupTable* lookupTable() const;
+
+ private:
+  struct Parts;
+  Parts* parts_;
+};
+
+// Surface polydata with any number of named per-vertex arrays (for export to ParaView).
+vtkSmartPointer<vtkPolyData> surfacePolyData(const std::vector<Vec3>& positions, const SurfaceMesh& mesh);
+void addPointArray(vtkPolyData* polyData, const std::string& name, const std::vector<float>& values);
+
+}  // namespace isurface::vis

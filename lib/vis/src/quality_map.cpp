@@ -1,0 +1,107 @@
+#include "isurface/vis/quality_map.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <fmt/format.h>
+
+#include "isurface/core/diagnostic.h"
+#include "isurface/core/path_segment.h"
+
+namespace isurface::vis {
+
+namespace {
+
+std::string rangeText(const ValueRange& r) {
+  return fmt::format("{:.4g} .. {:.4g}", r.lo, r.hi);
+}
+
+}  // namespace
+
+std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
+  std::vector<std::vector<Vec3>> lines;
+  std::vector<Vec3> current;
+  auto flush = [&] {
+    if (current.size() >= 2) lines.push_back(std::move(current));
+    current.clear();
+  };
+  for (std::size_t i = 0; i < program.moves.size(); ++i) {
+    const Move& move = program.moves[i];
+    if (!move.isMotion()) continue;
+    if (move.kind == MoveKind::Rapid) {
+      flush();
+      continue;
+    }
+    const PathSegment seg = PathSegment::from(program, i);
+    if (current.empty()) current.push_back(seg.start);
+    if (seg.arc && seg.length > 0) {
+      // Chord sag r (1 - cos(da / 2)) <= 0.01 mm.
+      const double radius = std::max(seg.arcGeometry.startRadius, seg.arcGeometry.endRadius);
+      const double step = radius > 0.01 ? 2.0 * std::acos(1.0 - 0.01 / radius) : 0.5;
+      const int pieces = std::clamp(static_cast<int>(std::ceil(std::abs(seg.arcGeometry.sweep) / step)), 1, 4096);
+      for (int k = 1; k <= pieces; ++k) current.push_back(seg.arcGeometry.at(static_cast<double>(k) / pieces));
+    } else {
+      current.push_back(seg.end);
+    }
+  }
+  flush();
+  return lines;
+}
+
+QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request) {
+  const QuantityInfo& info = quantityInfo(request.quantity);
+  if ((info.needsFeedback || request.feedbackSurface) && !samples.hasFeedback())
+    throw InputError(Diagnostic{samples.source, 0, 0,
+                                std::string("no feedback channels (fb_x fb_y fb_z): cannot show ") +
+                                    (request.feedbackSurface ? "the feedback surface" : info.label)});
+  QualityMap map;
+  PassOptions passOptions;
+  passOptions.program = program;
+  map.passes = splitPasses(samples, passOptions);
+  std::size_t cutting = 0;
+  for (const Pass& pass : map.passes.passes) cutting += pass.size();
+  if (cutting == 0) throw InputError(Diagnostic{samples.source, 0, 0, "no cutting passes found to build a surface on"});
+
+  MeshOptions meshOptions;
+  meshOptions.feedback = request.feedbackSurface;
+  meshOptions.stride = std::max<std::size_t>(1, (cutting + request.maxVertices - 1) / request.maxVertices);
+  map.mesh = buildSurfaceMesh(samples, map.passes, meshOptions);
+  if (map.mesh.triangles.empty())
+    throw InputError(Diagnostic{samples.source, 0, 0, "the passes are too far apart to make a surface"});
+
+  map.data.positions = meshPositions(samples, map.mesh, request.feedbackSurface);
+  map.data.mesh = &map.mesh;
+  map.data.scalars = vertexQuantity(request.quantity, samples, map.mesh);
+  if (program && request.showToolpath) map.data.toolpath = programPolylines(*program);
+  if (request.highlightLine) {
+    for (std::size_t i = 0; i < samples.size(); ++i) {
+      if (samples.line[i] != *request.highlightLine) continue;
+      const Vec3 p = request.feedbackSurface ? samples.feedback(i) : samples.commanded(i);
+      if (p.allFinite()) map.data.highlight.push_back(p);
+    }
+  }
+
+  MapStyle& style = map.style;
+  style.colorMap = request.colorMap;
+  if (request.fixedRange) style.range = *request.fixedRange;
+  else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
+  else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);
+  style.quantityLabel = info.label;
+  style.unit = info.unit;
+  style.view = request.view;
+  style.showToolpath = request.showToolpath;
+  style.passWires = request.passWires;
+  style.isoBands = request.isoBands;
+  std::string rangeKind = request.fixedRange ? "fixed" : (request.lowPercent <= 0 && request.highPercent >= 100)
+                                                             ? "full"
+                                                             : fmt::format("{:g}-{:g}%", request.lowPercent, request.highPercent);
+  style.caption = fmt::format("{}{}{} [{}], {} surface, range {} ({}), {} passes ({})",
+                              request.caption, request.caption.empty() ? "" : "\n", info.label, info.unit,
+                              request.feedbackSurface ? "feedback" : "commanded", rangeText(style.range), rangeKind,
+                              map.passes.passes.size(), pathPatternName(map.passes.pattern));
+  if (request.highlightLine)
+    style.caption += fmt::format("\nline {}: {} samples", *request.highlightLine, map.data.highlight.size());
+  return map;
+}
+
+}  // namespace isurface::vis
