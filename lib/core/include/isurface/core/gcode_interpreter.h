@@ -17,11 +17,18 @@ struct InterpreterOptions {
   Vec3 g30Position = Vec3::Zero();
   // Position before the first move, mm.
   Vec3 startPosition = Vec3::Zero();
-  // An arc whose end radius differs from its start radius by more than this is an error
-  // (LinuxCNC accepts up to about 0.0283 mm in mm mode), mm.
-  double arcRadiusTolerance = 0.002;
-  // And also by more than this fraction of the radius.
+  // Centre-format arcs (LinuxCNC's rule): an arc whose end radius differs from its start radius
+  // by more than arcRadiusTolerance AND by more than arcRadiusRelativeTolerance of the larger
+  // radius is an error, and so is any difference over 100 times arcRadiusTolerance. LinuxCNC's
+  // values: 0.0283 mm in G21 programs, 0.002828 inch (0.0718 mm) in G20 programs. mm.
+  double arcRadiusTolerance = 0.0283;
+  double arcRadiusToleranceInch = 0.0718;  // used instead of the above while G20 is in effect
+  // The relative part of that rule: a fraction of the larger radius.
   double arcRadiusRelativeTolerance = 0.001;
+  // R-format arcs: a radius short of half the chord by at most this is taken as a semicircle;
+  // centre-format arcs: a start or end radius under this is a zero-radius error. mm (LinuxCNC's
+  // RADIUS_TOLERANCE, 0.00005 inch).
+  double arcReachTolerance = 0.00127;
   // Called now and then with the fraction of the input read, 0..1.
   std::function<void(double)> progress;
 };

@@ -1,0 +1,221 @@
+// `isurface-cli canon`: interprets a G-code program and prints one line per move (docs/canon-format.md).
+#include <unistd.h>
+
+#include <fast_float/fast_float.h>
+#include <fmt/format.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <string>
+#include <vector>
+
+#include "command.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/gcode_interpreter.h"
+#include "progress.h"
+
+namespace isurface::cli {
+
+namespace {
+
+// Formats into a large buffer handed to `sink(data, size)` whenever it fills.
+template <typename Sink>
+class Output {
+ public:
+  explicit Output(Sink& sink) : sink_(sink) { buffer_.resize(kCapacity + kLineRoom); }
+
+  char* cursor() {
+    if (used_ > kCapacity) flush();
+    return buffer_.data() + used_;
+  }
+  void advance(const char* end) { used_ = static_cast<std::size_t>(end - buffer_.data()); }
+  void flush() {
+    if (used_ > 0) sink_(buffer_.data(), used_);
+    used_ = 0;
+  }
+
+ private:
+  static constexpr std::size_t kCapacity = std::size_t{1} << 20;
+  static constexpr std::size_t kLineRoom = 4096;  // far more than one line needs
+  Sink& sink_;
+  std::vector<char> buffer_;
+  std::size_t used_ = 0;
+};
+
+char* writeUnsigned(char* out, unsigned long long v) {
+  char digits[24];
+  int n = 0;
+  do {
+    digits[n++] = static_cast<char>('0' + v % 10);
+    v /= 10;
+  } while (v != 0);
+  while (n > 0) *out++ = digits[--n];
+  return out;
+}
+
+// `v` with exactly 4 decimals, as printf("%.4f") would print it, except that a value that rounds
+// to zero is always "0.0000" (never "-0.0000").
+char* writeFixed4(char* out, double v) {
+  const double scaled = v * 10000.0;
+  if (std::fabs(scaled) < 9e15) {
+    const double frac = scaled - std::floor(scaled);
+    // Away from a rounding tie the scaled value rounds like the exact decimal would.
+    if (std::fabs(frac - 0.5) > 1e-6) {
+      long long n = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
+      if (n < 0) {
+        *out++ = '-';
+        n = -n;
+      }
+      out = writeUnsigned(out, static_cast<unsigned long long>(n / 10000));
+      const int f = static_cast<int>(n % 10000);
+      *out++ = '.';
+      *out++ = static_cast<char>('0' + f / 1000);
+      *out++ = static_cast<char>('0' + f / 100 % 10);
+      *out++ = static_cast<char>('0' + f / 10 % 10);
+      *out++ = static_cast<char>('0' + f % 10);
+      return out;
+    }
+  }
+  if (!std::isfinite(v)) return fmt::format_to(out, "{}", v);
+  char buffer[400];
+  char* end = fmt::format_to(buffer, "{:.4f}", v);
+  const std::string_view text(buffer, static_cast<std::size_t>(end - buffer));
+  if (text == "-0.0000") return fmt::format_to(out, "0.0000");
+  return std::copy(text.begin(), text.end(), out);
+}
+
+// Feeds are stored as float: print the decimal the float stands for (F999 in inch is 25374.6,
+// not 25374.5996).
+class FeedText {
+ public:
+  double operator()(float f) {
+    if (f == last_) return lastValue_;
+    last_ = f;
+    char buffer[64];
+    char* end = fmt::format_to(buffer, "{}", f);
+    double v = f;
+    fast_float::from_chars(buffer, end, v);
+    lastValue_ = v;
+    return v;
+  }
+
+ private:
+  float last_ = 0;
+  double lastValue_ = 0;
+};
+
+char* writeMove(char* out, const Move& m, FeedText& feedText) {
+  out = writeUnsigned(out, m.line);
+  switch (m.kind) {
+    case MoveKind::Rapid: out = fmt::format_to(out, " G0 "); break;
+    case MoveKind::Linear: out = fmt::format_to(out, " G1 "); break;
+    case MoveKind::ArcCW: out = fmt::format_to(out, " G2 "); break;
+    case MoveKind::ArcCCW: out = fmt::format_to(out, " G3 "); break;
+    case MoveKind::Dwell:
+      out = fmt::format_to(out, " G4 P");
+      out = writeFixed4(out, m.dwellSeconds());
+      *out++ = '\n';
+      return out;
+  }
+  for (int i = 0; i < 3; ++i) {
+    out = writeFixed4(out, m.end[i]);
+    *out++ = ' ';
+  }
+  if (m.isArc()) {
+    for (int i = 0; i < 3; ++i) {
+      out = writeFixed4(out, m.centre[i]);
+      *out++ = ' ';
+    }
+    out = fmt::format_to(out, "G{} ", static_cast<int>(m.plane));
+    out = writeUnsigned(out, m.turns);
+    *out++ = ' ';
+  }
+  out = writeFixed4(out, m.kind == MoveKind::Rapid ? 0.0 : feedText(m.feed));
+  *out++ = '\n';
+  return out;
+}
+
+template <typename Sink>
+void writeMoves(Sink& sink, const std::vector<Move>& moves) {
+  Output<Sink> output(sink);
+  FeedText feedText;
+  for (const Move& m : moves) output.advance(writeMove(output.cursor(), m, feedText));
+  output.flush();
+}
+
+// Writes to standard output; returns 0 or the errno of the first failed write.
+int writeMovesToStdout(const std::vector<Move>& moves) {
+  int error = 0;
+  auto sink = [&error](const char* p, std::size_t left) {
+    while (left > 0 && error == 0) {
+      const ssize_t n = ::write(STDOUT_FILENO, p, left);
+      if (n < 0) {
+        if (errno != EINTR) error = errno;
+        continue;
+      }
+      p += n;
+      left -= static_cast<std::size_t>(n);
+    }
+  };
+  writeMoves(sink, moves);
+  return error;
+}
+
+// Writes through a temporary file renamed into place (AtomicOutputFile): a failed run leaves no
+// partial file. Throws InputError.
+void writeMovesToPath(const std::string& path, const std::vector<Move>& moves) {
+  AtomicOutputFile file(path);
+  auto sink = [&file](const char* p, std::size_t n) { file.write(p, n); };
+  writeMoves(sink, moves);
+  file.commit();
+}
+
+std::function<int()> setup(CLI::App& sub) {
+  struct Args {
+    std::string input, output;
+    bool keepGoing = false;
+  };
+  auto args = std::make_shared<Args>();
+  sub.add_option("file", args->input, "G-code program (RS274/NGC)")->required();
+  sub.add_flag("--keep-going", args->keepGoing,
+               "skip bad blocks, report every error and print all moves that could be made");
+  sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout");
+  sub.footer("Output: one line per move, `LINE G0|G1 X Y Z F`, `LINE G2|G3 X Y Z CX CY CZ PLANE "
+             "TURNS F` or `LINE G4 P<seconds>`, in workpiece mm and mm/min (docs/canon-format.md).");
+  return [args]() -> int {
+    InterpreterOptions options;
+    options.keepGoing = args->keepGoing;
+    ProgressLine progress("canon");
+    options.progress = [&progress](double f) { progress.update(f); };
+    const InterpretResult result = interpretGcodeFile(args->input, options);
+    progress.finish();
+
+    int code = result.ok() ? kExitOk : kExitInputError;
+    if (args->output.empty()) {
+      if (const int error = writeMovesToStdout(result.program.moves)) {
+        std::fprintf(stderr, "error: cannot write the output: %s\n", std::strerror(error));
+        if (code == kExitOk) code = kExitFailure;
+      }
+    } else if (result.ok() || args->keepGoing) {
+      try {
+        writeMovesToPath(args->output, result.program.moves);
+      } catch (const InputError& e) {
+        std::fprintf(stderr, "error: %s\n", e.what());
+        if (code == kExitOk) code = kExitFailure;
+      }
+    }
+    for (const Diagnostic& w : result.program.warnings)
+      std::fprintf(stderr, "warning: %s\n", w.str().c_str());
+    for (const Diagnostic& e : result.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
+    return code;
+  };
+}
+
+static const bool registered = registerCommand(
+    "canon", "Interpret a G-code program and print its moves, one line each", setup);
+
+}  // namespace
+
+}  // namespace isurface::cli

@@ -1,0 +1,148 @@
+// Canned drilling cycles G73, G81, G82, G83 in the XY plane, expanded into rapid and feed moves
+// the way RS274/NGC (LinuxCNC) runs them.
+#include <fmt/format.h>
+
+#include <cmath>
+
+#include "gcode_machine.h"
+
+namespace isurface::gcode {
+
+namespace {
+
+// How far above the previous peck the tool comes back down before feeding again (G73 backs off
+// by as much): 0.010 inch, in mm.
+constexpr double kPeckClearance = 0.254;
+// Guards against programs that would expand into absurd numbers of moves.
+constexpr long kMaxRepeats = 100000;
+constexpr double kMaxPecks = 100000;
+constexpr double kMaxCycleMoves = 2e6;
+
+}  // namespace
+
+bool Machine::cycle(const Block& block, int motion, std::uint32_t column) {
+  const std::string name = fmt::format("G{}", motion / 10);
+  if (state_.plane != Plane::XY)
+    return fail(column, fmt::format("{}: canned cycle only in G17 (XY plane)", name));
+  if (state_.cutterComp != kG40)
+    return fail(column, "Cannot use canned cycles with cutter radius compensation");
+  if (state_.inverseTime)
+    return fail(column, "Cannot use canned cycles in inverse time feed mode (G93)");
+  if (state_.feed <= 0) return fail(column, fmt::format("Cannot do {} with zero feed rate", name));
+
+  // A cycle's first block names its levels; later blocks may reuse them.
+  const bool first = state_.motion != motion;
+  if (first && !block.has('Z'))
+    return fail(column, "Z value unspecified in XY plane canned cycle");
+  if (first && !block.has('R'))
+    return fail(column, "R clearance plane unspecified in canned cycle");
+  const double zWord = block.has('Z') ? length(block.get('Z')) : state_.cycleZ;
+  const double rWord = block.has('R') ? length(block.get('R')) : state_.cycleR;
+
+  long repeats = 1;
+  if (block.has('L')) {
+    const double l = block.get('L');
+    if (l < 0 || std::fabs(l - std::nearbyint(l)) > 1e-6)
+      return fail(block.col('L'), "L word must be a whole number, zero or more");
+    if (l > kMaxRepeats)
+      return fail(block.col('L'), fmt::format("L word too large (over {} repeats)", kMaxRepeats));
+    repeats = static_cast<long>(std::nearbyint(l));
+  }
+
+  double peck = state_.cycleQ;
+  if (motion == kG73 || motion == kG83) {
+    if (first && !block.has('Q')) return fail(column, fmt::format("Q word missing with {}", name));
+    if (block.has('Q')) peck = length(block.get('Q'));
+    if (peck <= 0)
+      return fail(block.has('Q') ? block.col('Q') : column, "Negative or zero Q value used");
+  }
+  double dwellSeconds = state_.cycleP;
+  if (motion == kG82) {
+    if (first && !block.has('P'))
+      return fail(column, "Dwell time P word missing with G82");
+    if (block.has('P')) dwellSeconds = block.get('P');
+    if (dwellSeconds < 0) return fail(block.col('P'), "Negative dwell time P word used with G82");
+  }
+
+  const Vec3 start = state_.position;
+  double oldZ = start.z();
+  double x, y, r, bottom, dx = 0, dy = 0;
+  if (!state_.incremental) {
+    r = rWord;
+    bottom = zWord;
+    x = block.has('X') ? length(block.get('X')) : start.x();
+    y = block.has('Y') ? length(block.get('Y')) : start.y();
+  } else {
+    dx = block.has('X') ? length(block.get('X')) : 0.0;
+    dy = block.has('Y') ? length(block.get('Y')) : 0.0;
+    r = rWord + oldZ;
+    bottom = r + zWord;
+    x = start.x();
+    y = start.y();
+  }
+  if (r < bottom) return fail(column, "R less than Z in canned cycle in XY plane");
+  const double pecks = (motion == kG73 || motion == kG83) ? (r - bottom) / peck : 1.0;
+  if (pecks > kMaxPecks)
+    return fail(block.has('Q') ? block.col('Q') : column,
+                fmt::format("Q value too small: over {} pecks", kMaxPecks));
+  if (static_cast<double>(repeats) * (3.0 * pecks + 4.0) > kMaxCycleMoves)
+    return fail(column, "Canned cycle expands to too many moves (L and Q)");
+
+  // Cycles run in exact stop mode, whatever G61/G64 says.
+  auto rapid = [&](double px, double py, double pz) {
+    emit(MoveKind::Rapid, Vec3(px, py, pz), 0.0f, kExactStop);
+  };
+  const float feed = static_cast<float>(state_.feed);
+  auto feedTo = [&](double px, double py, double pz) {
+    emit(MoveKind::Linear, Vec3(px, py, pz), feed, kExactStop);
+  };
+
+  if (oldZ < r) {
+    rapid(start.x(), start.y(), r);
+    oldZ = r;
+  }
+  const double clear = state_.retractToR ? r : oldZ;
+  for (long i = 0; i < repeats; ++i) {
+    x += dx;
+    y += dy;
+    rapid(x, y, oldZ);
+    if (oldZ != r) rapid(x, y, r);
+    switch (motion) {
+      case kG81:
+        feedTo(x, y, bottom);
+        rapid(x, y, clear);
+        break;
+      case kG82:
+        feedTo(x, y, bottom);
+        emit(MoveKind::Dwell, state_.position, static_cast<float>(dwellSeconds), kExactStop);
+        rapid(x, y, clear);
+        break;
+      case kG83:  // peck: back out to R after each peck, rapid down to just above the last one
+        for (double depth = r - peck; depth > bottom; depth -= peck) {
+          feedTo(x, y, depth);
+          rapid(x, y, r);
+          rapid(x, y, depth + kPeckClearance);
+        }
+        feedTo(x, y, bottom);
+        rapid(x, y, clear);
+        break;
+      case kG73:  // chip breaking: back off a little after each peck
+        for (double depth = r - peck; depth > bottom; depth -= peck) {
+          feedTo(x, y, depth);
+          rapid(x, y, depth + kPeckClearance);
+        }
+        feedTo(x, y, bottom);
+        rapid(x, y, clear);
+        break;
+      default: break;
+    }
+    oldZ = clear;
+  }
+  state_.cycleZ = zWord;
+  state_.cycleR = rWord;
+  state_.cycleQ = peck;
+  state_.cycleP = dwellSeconds;
+  return true;
+}
+
+}  // namespace isurface::gcode

@@ -1,0 +1,410 @@
+// RS274/NGC interpreter: the line loop, modal groups, modal codes and M codes.
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cstdint>
+#include <cstring>
+
+#include "gcode_machine.h"
+
+namespace isurface {
+namespace gcode {
+
+namespace {
+
+// With keepGoing, interpretation stops after this many bad blocks (binary junk, wrong file).
+constexpr std::size_t kMaxErrors = 1000;
+
+std::string codeName(char letter, int tenths) {
+  if (tenths < 0) return fmt::format("{}?", letter);
+  if (tenths % 10 == 0) return fmt::format("{}{}", letter, tenths / 10);
+  return fmt::format("{}{}.{}", letter, tenths / 10, tenths % 10);
+}
+
+// The modal group of a G code, -1 for a code unknown to RS274/NGC, -2 for one that is known but
+// not supported here.
+int groupOf(int code) {
+  switch (code) {
+    case kG4: case kG10: case kG28: case kG28_1: case kG30: case kG30_1: case kG53:
+      return kGroupNonModal;
+    case kG0: case kG1: case kG2: case kG3: case kG73: case kG80: case kG81: case kG82: case kG83:
+      return kGroupMotion;
+    case kG17: case kG18: case kG19: return kGroupPlane;
+    case kG90: case kG91: return kGroupDistance;
+    case kG90_1: case kG91_1: return kGroupArcDistance;
+    case kG93: case kG94: return kGroupFeedMode;
+    case kG20: case kG21: return kGroupUnits;
+    case kG40: case kG41: case kG42: case kG41_1: case kG42_1: return kGroupCutterComp;
+    case kG43: case kG43_1: case kG49: return kGroupToolLength;
+    case kG98: case kG99: return kGroupRetract;
+    case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+      return kGroupCoordSystem;
+    case kG61: case kG61_1: case kG64: return kGroupPathControl;
+    case kG96: case kG97: return kGroupSpindleMode;
+    // Known RS274/NGC (LinuxCNC) codes that this interpreter does not model.
+    case 50: case 51: case 52: case 53: case 70: case 80: case 171: case 181: case 191:
+    case 330: case 331: case 382: case 383: case 384: case 385: case 432: case 760:
+    case 840: case 850: case 860: case 870: case 880: case 890: case 920: case 921: case 922:
+    case 923: case 950: case 700: case 710: case 711: case 720: case 721:
+      return -2;
+    default: return -1;
+  }
+}
+
+enum MGroup { kMStop, kMToolChange, kMSpindle, kMCoolant, kMGroupCount };
+
+int mGroupOf(int tenths) {
+  switch (tenths) {
+    case 0: case 10: case 20: case 300: case 600: return kMStop;
+    case 60: return kMToolChange;
+    case 30: case 40: case 50: return kMSpindle;
+    default: return -1;  // coolant and every other M code: accepted, no effect on motion
+  }
+}
+
+// Large move buffers are filled front to back once: huge pages save thousands of page faults.
+void adviseHugePages(const void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  if (bytes < 4 * kHuge) return;
+  const auto first = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+  const auto last = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
+  if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+}
+
+}  // namespace
+
+std::string fmtLength(double v) { return fmt::format("{:.4f}", v); }
+
+Machine::Machine(const InterpreterOptions& options, InterpretResult& result, std::string source)
+    : options_(options), result_(result), moves_(result.program.moves), source_(std::move(source)) {
+  state_.position = options.startPosition;
+  state_.g28 = options.g28Position;
+  state_.g30 = options.g30Position;
+  result_.program.source = source_;
+  result_.program.start = options.startPosition;
+}
+
+bool Machine::fail(std::uint32_t column, std::string message) {
+  errorColumn_ = column;
+  errorMessage_ = std::move(message);
+  return false;
+}
+
+void Machine::warnOnce(bool& done, std::uint32_t column, std::string message) {
+  if (done) return;
+  done = true;
+  result_.program.warnings.push_back(Diagnostic{source_, line_, column, std::move(message)});
+}
+
+void Machine::run(std::string_view text) {
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
+  std::size_t newlines = 0;
+  for (const char* p = begin; p < end;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (!nl) break;
+    ++newlines;
+    p = static_cast<const char*>(nl) + 1;
+  }
+  const std::size_t lines = newlines + (!text.empty() && text.back() != '\n' ? 1 : 0);
+  result_.program.lineCount = static_cast<std::uint32_t>(std::min<std::size_t>(lines, 0xffffffffu));
+  // One move per line is the common case; a line of a move is rarely under 8 bytes.
+  moves_.reserve(std::min(lines, text.size() / 8) + 16);
+  adviseHugePages(moves_.data(), moves_.capacity() * sizeof(Move));
+
+  const double total = text.empty() ? 1.0 : static_cast<double>(text.size());
+  const char* first = begin;
+  if (text.size() >= 3 && std::memcmp(begin, "\xEF\xBB\xBF", 3) == 0) first += 3;  // UTF-8 BOM
+  for (const char* p = first; p < end && !ended_;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    const char* lineEnd = nl ? static_cast<const char*>(nl) : end;
+    ++line_;
+    runLine(p, lineEnd);
+    p = lineEnd + 1;
+    if ((line_ & 0xffffu) == 0 && options_.progress) options_.progress((p - begin) / total);
+  }
+  if (moves_.capacity() > moves_.size() + moves_.size() / 4 + 64) moves_.shrink_to_fit();
+  if (options_.progress) options_.progress(1.0);
+}
+
+void Machine::runLine(const char* begin, const char* end) {
+  LexError lexError;
+  if (!lexBlock(begin, end, block_, lexError)) {
+    errorColumn_ = lexError.column;
+    errorMessage_ = std::move(lexError.message);
+  } else {
+    const ModalState saved = state_;
+    const std::size_t movesBefore = moves_.size();
+    if (executeBlock(block_)) return;
+    state_ = saved;  // a bad block has no effect
+    moves_.resize(movesBefore);
+  }
+  result_.errors.push_back(Diagnostic{source_, line_, errorColumn_, std::move(errorMessage_)});
+  if (!options_.keepGoing) {
+    ended_ = true;
+  } else if (result_.errors.size() >= kMaxErrors) {
+    result_.errors.push_back(Diagnostic{source_, line_, 0,
+                                        fmt::format("Too many errors ({}), giving up", kMaxErrors)});
+    ended_ = true;
+  }
+}
+
+bool Machine::groupCodes(const Block& block, GroupedCodes& groups) {
+  std::fill(std::begin(groups.code), std::end(groups.code), -1);
+  for (int i = 0; i < block.gCount; ++i) {
+    const int code = block.g[i];
+    const int group = groupOf(code);
+    if (group == -1)
+      return fail(block.gColumn[i], fmt::format("Unknown g code used: G{}", block.gValue[i]));
+    if (group == -2)
+      return fail(block.gColumn[i], fmt::format("{} is not supported", codeName('G', code)));
+    if (group == kGroupMotion && groups.code[group] >= 0 &&
+        (code == kG80 || groups.code[group] == kG80)) {
+      // "G0 G80" in one block (a common program header): cancel the cycle, keep the motion.
+      if (code == kG80) continue;
+    } else if (groups.code[group] >= 0) {
+      return fail(block.gColumn[i],
+                  fmt::format("Two g codes used from same modal group: {} and {}",
+                              codeName('G', groups.code[group]), codeName('G', code)));
+    }
+    groups.code[group] = code;
+    groups.column[group] = block.gColumn[i];
+  }
+  return true;
+}
+
+bool Machine::executeBlock(const Block& block) {
+  switch (block.kind) {
+    case BlockKind::Deleted: return true;
+    case BlockKind::Percent:
+      if (!seenWords_) percentOpened_ = true;
+      else if (percentOpened_) ended_ = true;
+      seenWords_ = true;
+      return true;
+    case BlockKind::OWord:
+      seenWords_ = true;
+      if (block.oControlFlow)
+        warnOnce(warnedOWord_, block.oColumn,
+                 "O-word control flow (sub, call, if, while, ...) is not executed: every line is "
+                 "interpreted once, in file order");
+      return true;
+    case BlockKind::Normal: break;
+  }
+  if (!block.hasWords()) return true;
+  seenWords_ = true;
+
+  GroupedCodes groups;
+  if (!groupCodes(block, groups)) return false;
+
+  // M codes: at most one per group among those that matter here.
+  int mCode[kMGroupCount] = {-1, -1, -1, -1};
+  for (int i = 0; i < block.mCount; ++i) {
+    const int group = mGroupOf(block.m[i]);
+    if (group < 0) continue;
+    if (mCode[group] >= 0)
+      return fail(block.mColumn[i],
+                  fmt::format("Two m codes used from same modal group: {} and {}",
+                              codeName('M', mCode[group]), codeName('M', block.m[i])));
+    mCode[group] = block.m[i];
+  }
+
+  const std::size_t movesBefore = moves_.size();
+
+  // RS274/NGC order of execution: feed mode, F, S, T, M6, spindle, coolant, dwell, plane, units,
+  // cutter compensation, tool length, coordinate system, path control, distance mode, retract
+  // mode, home / non-modal codes, motion, stops.
+  if (groups.has(kGroupFeedMode)) {
+    const bool inverse = groups.code[kGroupFeedMode] == kG93;
+    if (inverse != state_.inverseTime) {
+      state_.inverseTime = inverse;
+      state_.feed = 0;  // a feed rate has to be given again in the new mode
+    }
+  }
+  if (block.has('F')) {
+    const double f = block.get('F');
+    if (f < 0) return fail(block.col('F'), "Negative F word used");
+    state_.feed = state_.inverseTime ? f : length(f);
+  }
+  if (block.has('S') && block.get('S') < 0)
+    return fail(block.col('S'), "Negative spindle speed used");
+  const bool stopBefore = mCode[kMToolChange] >= 0 || mCode[kMSpindle] >= 0;
+
+  if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
+    return false;
+  applyModalCodes(groups);
+
+  // Non-modal codes that take the axis words.
+  const int nonModal = groups.code[kGroupNonModal];
+  const bool axesForNonModal =
+      nonModal == kG10 || nonModal == kG28 || nonModal == kG30;
+  const bool axes = hasAxisWords(block);
+  if (axesForNonModal && groups.has(kGroupMotion) && groups.code[kGroupMotion] != kG80 && axes)
+    return fail(groups.column[kGroupMotion],
+                "Cannot use two G codes that both use axis values");
+  if (nonModal == kG28 || nonModal == kG30) {
+    if (!homeMove(block, nonModal)) return false;
+  } else if (nonModal == kG28_1) {
+    state_.g28 = state_.position;
+  } else if (nonModal == kG30_1) {
+    state_.g30 = state_.position;
+  }
+
+  // Motion.
+  const bool explicitMotion = groups.has(kGroupMotion);
+  const int motion = explicitMotion ? groups.code[kGroupMotion] : state_.motion;
+  const std::uint32_t motionColumn =
+      explicitMotion ? groups.column[kGroupMotion] : 0;
+  bool arcRan = false, cycleRan = false;
+  if (!axesForNonModal) {
+    const bool arcWords = block.has('I') || block.has('J') || block.has('K') || block.has('R');
+    const bool isArc = motion == kG2 || motion == kG3;
+    // Axis words of a line without a G code continue the modal motion: blame the first of them.
+    std::uint32_t column = motionColumn;
+    if (column == 0) {
+      for (char c : {'X', 'Y', 'Z', 'A', 'B', 'C'})
+        if (block.has(c)) {
+          column = block.col(c);
+          break;
+        }
+    }
+    if (motion == kG80) {
+      if (axes)
+        return fail(column, explicitMotion
+                                ? "Cannot use axis values with G80"
+                                : "Cannot use axis values without a g code that uses them");
+    } else if (axes || (explicitMotion && isArc && arcWords)) {
+      if (nonModal == kG53) {
+        if (motion != kG0 && motion != kG1)
+          return fail(groups.column[kGroupNonModal], "Must use G0 or G1 with G53");
+        if (state_.incremental)
+          return fail(groups.column[kGroupNonModal], "Cannot use G53 incremental");
+      }
+      if (motion == kG0 || motion == kG1) {
+        if (!straight(block, motion, column)) return false;
+      } else if (isArc) {
+        if (!arc(block, motion, column)) return false;
+        arcRan = true;
+      } else if (isCycle(motion)) {
+        if (!cycle(block, motion, column)) return false;
+        cycleRan = true;
+      }
+    }
+  }
+  if (explicitMotion) state_.motion = motion;
+
+  // Words that no code of this block used.
+  for (char c : {'I', 'J', 'K'}) {
+    if (block.has(c) && !arcRan)
+      return fail(block.col(c),
+                  fmt::format("{} word with no G2 or G3 to use it", static_cast<char>(c | 0x20)));
+  }
+  if (block.has('R') && !arcRan && !cycleRan && nonModal != kG10 &&
+      !(explicitMotion && isCycle(motion)))
+    return fail(block.col('R'), "R word with no g code that uses it");
+  if ((block.has('A') || block.has('B') || block.has('C')) && !warnedRotary_) {
+    std::uint32_t column = 0;
+    for (char c : {'A', 'B', 'C'})
+      if (block.has(c)) { column = block.col(c); break; }
+    warnOnce(warnedRotary_, column, "A, B and C axis words are ignored: only X, Y and Z are modelled");
+  }
+
+  // Spindle and tool changes happen before this block's motion: the previous move ends at rest.
+  if (stopBefore && movesBefore > 0) moves_[movesBefore - 1].flags |= kStopAfter;
+  if (mCode[kMStop] >= 0) {
+    if (!moves_.empty()) moves_.back().flags |= kStopAfter;
+    if (mCode[kMStop] == 20 || mCode[kMStop] == 300) ended_ = true;
+  }
+  return true;
+}
+
+void Machine::applyModalCodes(const GroupedCodes& groups) {
+  if (groups.has(kGroupPlane)) {
+    const int code = groups.code[kGroupPlane];
+    state_.plane = code == kG17 ? Plane::XY : code == kG18 ? Plane::ZX : Plane::YZ;
+  }
+  if (groups.has(kGroupUnits)) state_.inch = groups.code[kGroupUnits] == kG20;
+  if (groups.has(kGroupCutterComp)) {
+    state_.cutterComp = groups.code[kGroupCutterComp];
+    if (state_.cutterComp != kG40)
+      warnOnce(warnedCutterComp_, groups.column[kGroupCutterComp],
+               "Cutter radius compensation (G41/G42) is not applied: moves follow the "
+               "programmed path");
+  }
+  if (groups.has(kGroupToolLength)) state_.toolLength = groups.code[kGroupToolLength];
+  if (groups.has(kGroupCoordSystem)) state_.coordSystem = groups.code[kGroupCoordSystem];
+  if (groups.has(kGroupPathControl)) state_.exactStop = groups.code[kGroupPathControl] != kG64;
+  if (groups.has(kGroupDistance)) state_.incremental = groups.code[kGroupDistance] == kG91;
+  if (groups.has(kGroupArcDistance)) state_.arcAbsolute = groups.code[kGroupArcDistance] == kG90_1;
+  if (groups.has(kGroupRetract)) state_.retractToR = groups.code[kGroupRetract] == kG99;
+}
+
+}  // namespace gcode
+
+InterpretResult interpretGcode(std::string_view text, const std::string& sourceName,
+                               const InterpreterOptions& options) {
+  InterpretResult result;
+  gcode::Machine machine(options, result, sourceName);
+  machine.run(text);
+  return result;
+}
+
+InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options) {
+  auto failed = [&](const std::string& what) {
+    InterpretResult result;
+    result.program.source = path;
+    result.errors.push_back(Diagnostic{path, 0, 0, what});
+    return result;
+  };
+  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) return failed(fmt::format("cannot open: {}", std::strerror(errno)));
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const int e = errno;
+    ::close(fd);
+    return failed(fmt::format("cannot read: {}", std::strerror(e)));
+  }
+  if (S_ISDIR(st.st_mode)) {
+    ::close(fd);
+    return failed("cannot read: is a directory");
+  }
+  if (S_ISREG(st.st_mode)) {
+    const auto size = static_cast<std::size_t>(st.st_size);
+    if (size == 0) {
+      ::close(fd);
+      return interpretGcode(std::string_view(), path, options);
+    }
+    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    if (map != MAP_FAILED) {
+      ::close(fd);
+      ::madvise(map, size, MADV_SEQUENTIAL);
+      InterpretResult result =
+          interpretGcode(std::string_view(static_cast<const char*>(map), size), path, options);
+      ::munmap(map, size);
+      return result;
+    }
+  }
+  // Pipes, devices, or a file that cannot be mapped: read it.
+  std::string text;
+  char buffer[1 << 16];
+  for (;;) {
+    const ssize_t n = ::read(fd, buffer, sizeof buffer);
+    if (n < 0) {
+      if (errno == EINTR) continue;
+      const int e = errno;
+      ::close(fd);
+      return failed(fmt::format("cannot read: {}", std::strerror(e)));
+    }
+    if (n == 0) break;
+    text.append(buffer, static_cast<std::size_t>(n));
+  }
+  ::close(fd);
+  return interpretGcode(text, path, options);
+}
+
+}  // namespace isurface
