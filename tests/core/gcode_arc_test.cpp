@@ -6,15 +6,13 @@
 
 #include "isurface/core/arc.h"
 #include "isurface/core/gcode_interpreter.h"
+#include "core/gcode_test_support.h"
 #include "test_support.h"
 
 using namespace isurface;
+using namespace isurface::gcodetest;
 
 namespace {
-
-InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
-  return interpretGcode(text, "t.ngc", options);
-}
 
 // The last move of a program that must interpret cleanly.
 Move lastMove(const std::string& text, Vec3* start = nullptr) {
@@ -23,17 +21,6 @@ Move lastMove(const std::string& text, Vec3* start = nullptr) {
   if (r.program.moves.empty()) return Move{};
   if (start) *start = r.program.startOf(r.program.moves.size() - 1);
   return r.program.moves.back();
-}
-
-std::string firstError(const std::string& text) {
-  const InterpretResult r = run(text);
-  return r.errors.empty() ? std::string("<no error>") : r.errors[0].str();
-}
-
-void expectNear(const Vec3& a, const Vec3& b, double tol = 1e-9) {
-  EXPECT_NEAR(a.x(), b.x(), tol);
-  EXPECT_NEAR(a.y(), b.y(), tol);
-  EXPECT_NEAR(a.z(), b.z(), tol);
 }
 
 // The point halfway along the arc.

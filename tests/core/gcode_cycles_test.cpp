@@ -5,20 +5,13 @@
 #include <vector>
 
 #include "isurface/core/gcode_interpreter.h"
+#include "core/gcode_test_support.h"
 #include "test_support.h"
 
 using namespace isurface;
+using namespace isurface::gcodetest;
 
 namespace {
-
-InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
-  return interpretGcode(text, "t.ngc", options);
-}
-
-std::string firstError(const std::string& text) {
-  const InterpretResult r = run(text);
-  return r.errors.empty() ? std::string("<no error>") : r.errors[0].str();
-}
 
 struct Expected {
   char kind;  // 'R' rapid, 'F' feed, 'D' dwell

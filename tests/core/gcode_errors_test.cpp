@@ -7,20 +7,13 @@
 #include <vector>
 
 #include "isurface/core/gcode_interpreter.h"
+#include "core/gcode_test_support.h"
 #include "test_support.h"
 
 using namespace isurface;
+using namespace isurface::gcodetest;
 
 namespace {
-
-InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
-  return interpretGcode(text, "t.ngc", options);
-}
-
-std::string firstError(const std::string& text) {
-  const InterpretResult r = run(text);
-  return r.errors.empty() ? std::string("<no error>") : r.errors[0].str();
-}
 
 std::string writeScratch(const std::string& name, const std::string& content) {
   const std::string path = (test::scratchDir() / name).string();

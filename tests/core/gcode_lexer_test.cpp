@@ -5,26 +5,19 @@
 #include <string>
 
 #include "isurface/core/gcode_interpreter.h"
+#include "core/gcode_test_support.h"
 #include "test_support.h"
 
 using namespace isurface;
+using namespace isurface::gcodetest;
 
 namespace {
-
-InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
-  return interpretGcode(text, "t.ngc", options);
-}
 
 Vec3 onlyEnd(const std::string& text) {
   const InterpretResult r = run(text);
   EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors[0].str());
   EXPECT_EQ(r.program.moves.size(), 1u);
   return r.program.moves.empty() ? Vec3(Vec3::Constant(-999)) : r.program.moves.back().end;
-}
-
-std::string firstError(const std::string& text) {
-  const InterpretResult r = run(text);
-  return r.errors.empty() ? std::string("<no error>") : r.errors[0].str();
 }
 
 }  // namespace

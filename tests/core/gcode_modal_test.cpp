@@ -5,31 +5,18 @@
 #include <string>
 
 #include "isurface/core/gcode_interpreter.h"
+#include "core/gcode_test_support.h"
 #include "test_support.h"
 
 using namespace isurface;
+using namespace isurface::gcodetest;
 
 namespace {
-
-InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
-  return interpretGcode(text, "t.ngc", options);
-}
 
 InterpretResult runOk(const std::string& text, InterpreterOptions options = {}) {
   InterpretResult r = run(text, options);
   EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors[0].str());
   return r;
-}
-
-std::string firstError(const std::string& text) {
-  const InterpretResult r = run(text);
-  return r.errors.empty() ? std::string("<no error>") : r.errors[0].str();
-}
-
-void expectNear(const Vec3& a, const Vec3& b, double tol = 1e-9) {
-  EXPECT_NEAR(a.x(), b.x(), tol);
-  EXPECT_NEAR(a.y(), b.y(), tol);
-  EXPECT_NEAR(a.z(), b.z(), tol);
 }
 
 }  // namespace

@@ -2,6 +2,8 @@
 // Checks on simulated motion that do not trust the simulator: per-axis velocity, acceleration
 // and jerk from finite differences of the written positions, and the distance of every
 // commanded sample from the programmed geometry.
+#include <gtest/gtest.h>
+
 #include <algorithm>
 #include <cmath>
 #include <deque>
@@ -142,5 +144,20 @@ class MotionChecker : public SampleSink {
   std::size_t next_ = 0;  // first sample in pending_ not yet checked
   MotionExtremes r_;
 };
+
+// Limits hold within this factor: finite differences of filtered samples see a little more than
+// the continuous signal they sample.
+constexpr double kLimitTolerance = 1.05;
+
+inline void expectWithinLimits(const MotionExtremes& r, const Machine& m) {
+  EXPECT_LE(r.velocityRatio, kLimitTolerance);
+  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
+  if (m.jerkLimited()) {
+    EXPECT_LE(r.jerkRatio, kLimitTolerance);
+  }
+  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
+  EXPECT_TRUE(r.blocksInOrder);
+  EXPECT_TRUE(r.linesInOrder);
+}
 
 }  // namespace isurface::test

@@ -13,11 +13,10 @@
 using namespace isurface;
 using isurface::test::MotionChecker;
 using isurface::test::MotionExtremes;
+using isurface::test::expectWithinLimits;
 using isurface::test::realdataPath;
 
 namespace {
-
-constexpr double kLimitTolerance = 1.05;
 
 Program load(const std::string& name) {
   InterpretResult r = interpretGcodeFile(realdataPath(name));
@@ -41,24 +40,14 @@ TEST(SimulatorRealData, LinuxcncTestProgramWithinLimitsAndTolerance) {
   REQUIRE_REALDATA("linuxcnc_test.ngc");
   const Machine m = defaultMachine();
   const MotionExtremes r = check(load("linuxcnc_test.ngc"), m, true);
-  EXPECT_LE(r.velocityRatio, kLimitTolerance);
-  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
-  EXPECT_LE(r.jerkRatio, kLimitTolerance);
-  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
-  EXPECT_TRUE(r.blocksInOrder);
-  EXPECT_TRUE(r.linesInOrder);
+  expectWithinLimits(r, m);
 }
 
 TEST(SimulatorRealData, CommunicatorWaterlineArcsWithinLimitsAndTolerance) {
   REQUIRE_REALDATA("communicator.nc");
   const Machine m = defaultMachine();
   const MotionExtremes r = check(load("communicator.nc"), m, true);
-  EXPECT_LE(r.velocityRatio, kLimitTolerance);
-  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
-  EXPECT_LE(r.jerkRatio, kLimitTolerance);
-  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
-  EXPECT_TRUE(r.blocksInOrder);
-  EXPECT_TRUE(r.linesInOrder);
+  expectWithinLimits(r, m);
 }
 
 // LinuxCNC 2.9 ran linuxcnc_test.ngc at 100 mm/s and 1000 mm/s^2 on every axis with no jerk
@@ -91,11 +80,6 @@ TEST(SimulatorRealData, ReliefProgramsWithinLimitsAndTolerance) {
     p.moves.resize(std::min<std::size_t>(p.moves.size(), 4000));
     const Machine m = defaultMachine();
     const MotionExtremes r = check(p, m, true);
-    EXPECT_LE(r.velocityRatio, kLimitTolerance);
-    EXPECT_LE(r.accelerationRatio, kLimitTolerance);
-    EXPECT_LE(r.jerkRatio, kLimitTolerance);
-    EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
-    EXPECT_TRUE(r.blocksInOrder);
-    EXPECT_TRUE(r.linesInOrder);
+    expectWithinLimits(r, m);
   }
 }

@@ -14,12 +14,9 @@
 using namespace isurface;
 using isurface::test::MotionChecker;
 using isurface::test::MotionExtremes;
+using isurface::test::expectWithinLimits;
 
 namespace {
-
-// Limits hold within this factor: finite differences of filtered samples see a little more than
-// the continuous signal they sample.
-constexpr double kLimitTolerance = 1.05;
 
 constexpr double kPi = 3.14159265358979323846;
 
@@ -54,17 +51,6 @@ MotionExtremes run(const Program& program, const Machine& machine, bool geometry
   MotionChecker checker(program, machine, filterWindow(machine, program), geometry);
   simulate(program, machine, checker);
   return checker.finish();
-}
-
-void expectWithinLimits(const MotionExtremes& r, const Machine& m) {
-  EXPECT_LE(r.velocityRatio, kLimitTolerance);
-  EXPECT_LE(r.accelerationRatio, kLimitTolerance);
-  if (m.jerkLimited()) {
-    EXPECT_LE(r.jerkRatio, kLimitTolerance);
-  }
-  EXPECT_LE(r.maxDeviation, m.chordTolerance * kLimitTolerance);
-  EXPECT_TRUE(r.blocksInOrder);
-  EXPECT_TRUE(r.linesInOrder);
 }
 
 // A circle of radius r approximated by G1 moves of the given chord length.

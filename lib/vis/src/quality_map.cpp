@@ -95,7 +95,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   std::string rangeKind = request.fixedRange ? "fixed" : (request.lowPercent <= 0 && request.highPercent >= 100)
                                                              ? "full"
                                                              : fmt::format("{:g}-{:g}%", request.lowPercent, request.highPercent);
-  style.caption = fmt::format("{}{}{} [{}], {} surface, range {} ({}), {} passes ({})",
+  style.caption = fmt::format("{}{}{} [{}] on the {} surface\nrange {} ({}), {} {} passes",
                               request.caption, request.caption.empty() ? "" : "\n", info.label, info.unit,
                               request.feedbackSurface ? "feedback" : "commanded", rangeText(style.range), rangeKind,
                               map.passes.passes.size(), pathPatternName(map.passes.pattern));

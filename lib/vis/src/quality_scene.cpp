@@ -21,6 +21,7 @@
 #include <vtkTextProperty.h>
 #include <vtkUniforms.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "isurface/vis/color_map.h"
@@ -203,7 +204,10 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
 
   auto legend = vtkSmartPointer<vtkScalarBarActor>::New();
   legend->SetLookupTable(p.table);
-  const std::string title = style.quantityLabel + (style.unit.empty() ? "" : "\n[" + style.unit + "]");
+  // Long labels go one word a line: the legend is narrow.
+  std::string label = style.quantityLabel;
+  if (label.size() > 12) std::replace(label.begin(), label.end(), ' ', '\n');
+  const std::string title = label + (style.unit.empty() ? "" : "\n[" + style.unit + "]");
   legend->SetTitle(title.c_str());
   legend->SetNumberOfLabels(6);
   legend->SetLabelFormat("%.4g");
@@ -218,8 +222,8 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
     text->ItalicOff();
     text->BoldOff();
   }
-  legend->GetTitleTextProperty()->SetFontSize(16);
-  legend->GetLabelTextProperty()->SetFontSize(14);
+  legend->GetTitleTextProperty()->SetFontSize(style.fontSize);
+  legend->GetLabelTextProperty()->SetFontSize(style.fontSize - 2);
   legend->UnconstrainedFontSizeOn();
   p.renderer->AddActor2D(legend);
 
@@ -227,7 +231,7 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
     auto caption = vtkSmartPointer<vtkTextActor>::New();
     caption->SetInput(style.caption.c_str());
     caption->GetTextProperty()->SetColor(0.1, 0.1, 0.12);
-    caption->GetTextProperty()->SetFontSize(16);
+    caption->GetTextProperty()->SetFontSize(style.fontSize);
     caption->GetTextProperty()->SetVerticalJustificationToTop();
     caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
     caption->GetPositionCoordinate()->SetValue(0.01, 0.985);

@@ -33,6 +33,16 @@ struct PassOptions {
   double noBoundaryDistance = 50.0;     // mm of path per pass for paths with no boundary
 };
 
+// Leaves out what does not cut (rapids, plunges and retracts, air moves; see passes.cpp) and
+// splits the rest by pattern. Auto takes
+//   - direction-parallel when at least 70% of the cutting path lies in two or more passes that
+//     are straight in XY and parallel to the main direction of motion (a pass is a stretch
+//     moving one way along that direction; reversals and step-overs across it end passes);
+//   - else contour-parallel when at least half of it lies in complete turns (the horizontal
+//     heading turns through 360 degrees and the path comes back nearest its start: a closed
+//     loop, or a spiral's revolution), one pass per turn, links between loops left out;
+//   - else no boundary: a pass every noBoundaryDistance mm of path.
+// Passes never share samples.
 PassSet splitPasses(const Trajectory& samples, const PassOptions& options = {});
 
 }  // namespace isurface

@@ -43,7 +43,15 @@ std::optional<Quantity> parseQuantity(const std::string& name);
 // what the quantity needs (e.g. no feedback channels).
 std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples);
 
-// Values per mesh vertex, for any quantity.
+// Values per mesh vertex, for any quantity. Motion parameters are derived only around the
+// vertices' samples (memory in proportion to the vertices). Inconsistencies are 0 on vertices
+// with no matched neighbour; non-finite values stay NaN (so does the deviation of a vertex
+// without a normal).
 std::vector<float> vertexQuantity(Quantity q, const Trajectory& samples, const SurfaceMesh& mesh);
+
+// Any other channel of the dump (Trajectory::extra) per vertex; nullopt when there is none by
+// that name. Its unit is the dump's.
+std::optional<std::vector<float>> vertexExtraChannel(const Trajectory& samples, const SurfaceMesh& mesh,
+                                                     const std::string& name);
 
 }  // namespace isurface

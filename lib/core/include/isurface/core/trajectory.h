@@ -25,16 +25,33 @@ struct Trajectory {
   std::vector<double> feed;          // programmed feed, mm/min (empty when absent)
   // Any other numeric channel of the dump, kept to colour by.
   std::vector<std::pair<std::string, std::vector<double>>> extra;
+  bool hasLine = false;              // the dump had a `line` channel
+  // The time channel departs from a regular cycle: derivatives then use divided differences.
+  bool irregularTime = false;
+  double rapidFeed = 0;              // mm/min, the machine's rapid rate when the dump names it (0 unknown)
 
   std::size_t size() const { return x.size(); }
   bool hasFeedback() const { return !fbX.empty(); }
+  bool hasFeed() const { return !feed.empty(); }
+  // The `extra` channel of that name, nullptr when absent.
+  const std::vector<double>* extraChannel(const std::string& name) const;
   Vec3 commanded(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
   Vec3 feedback(std::size_t i) const { return Vec3(fbX[i], fbY[i], fbZ[i]); }
 };
 
 using TrajectoryProgress = std::function<void(double)>;
 
+// Copies every channel of a dump (progress 0..1 about every million records). Samples whose
+// position is not finite are kept; geometry skips them.
 Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress = {});
+// rapidFeed is left 0: set it from the machine when the caller knows it.
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source);
+
+// True when a gap between consecutive times departs from the cycle by more than a thousandth
+// of it (or a time is not finite).
+bool timeIsIrregular(const double* time, std::size_t n, double cycle);
+
+// The machine's rapid rate named in a dump's metadata (machine.rapid_mm_min), 0 when absent.
+double rapidFeedFromMetadata(const std::string& metadataJson);
 
 }  // namespace isurface

@@ -40,7 +40,11 @@ struct MapStyle {
   bool showToolpath = true;
   bool passWires = true;
   int isoBands = 12;             // iso-lines across the range; 0 for none
+  int fontSize = 16;             // points of the caption and legend text
 };
+
+// A text size that reads well at a given image height (16 at 1000 pixels).
+inline int fontSizeForHeight(int height) { return height < 700 ? 12 + height / 250 : 6 + height / 100; }
 
 class QualityScene {
  public:

@@ -1,0 +1,79 @@
+// isurface-cli export: the CL surface with every scalar, as VTK XML polydata for ParaView.
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataWriter.h>
+
+#include <cstdio>
+#include <memory>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/quantities.h"
+#include "isurface/vis/quality_scene.h"
+#include "progress.h"
+#include "trajectory_input.h"
+
+namespace isurface::cli {
+namespace {
+
+struct ExportOptions {
+  std::string biip, vtp, gcode, surface = "commanded";
+};
+
+int runExport(const ExportOptions& o) {
+  if (o.surface != "commanded" && o.surface != "feedback")
+    throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
+  std::unique_ptr<Program> program;
+  if (!o.gcode.empty()) program = std::make_unique<Program>(loadProgram(o.gcode, false));
+  const Trajectory samples = readTrajectory(o.biip);
+  const bool feedback = o.surface == "feedback";
+  if (feedback && !samples.hasFeedback())
+    throw InputError(Diagnostic{o.biip, 0, 0, "no feedback channels (fb_x fb_y fb_z) for the feedback surface"});
+  ProgressLine progress("building the surface");
+  PassOptions passOptions;
+  passOptions.program = program.get();
+  const PassSet passes = splitPasses(samples, passOptions);
+  MeshOptions meshOptions;
+  meshOptions.feedback = feedback;
+  const SurfaceMesh mesh = buildSurfaceMesh(samples, passes, meshOptions);
+  if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, "no surface: no cutting passes close enough to join"});
+  auto poly = vis::surfacePolyData(meshPositions(samples, mesh, feedback), mesh);
+  std::size_t arrays = 0;
+  const auto& infos = quantityInfos();
+  for (std::size_t k = 0; k < infos.size(); ++k) {
+    progress.update(static_cast<double>(k) / infos.size());
+    if (infos[k].needsFeedback && !samples.hasFeedback()) continue;
+    vis::addPointArray(poly, infos[k].name, vertexQuantity(infos[k].quantity, samples, mesh));
+    ++arrays;
+  }
+  for (const auto& [name, values] : samples.extra) {
+    std::vector<float> perVertex(mesh.vertexSample.size());
+    for (std::size_t v = 0; v < perVertex.size(); ++v) perVertex[v] = static_cast<float>(values[mesh.vertexSample[v]]);
+    vis::addPointArray(poly, name, perVertex);
+    ++arrays;
+  }
+  progress.finish();
+  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
+  writer->SetInputData(poly);
+  writer->SetDataModeToAppended();
+  writer->SetCompressorTypeToZLib();
+  writer->WriteToOutputStringOn();
+  if (!writer->Write()) throw std::runtime_error("cannot encode the surface as VTK XML");
+  writeFileAtomically(o.vtp, writer->GetOutputString());
+  std::printf("%s: %zu vertices, %zu triangles, %zu scalars\n", o.vtp.c_str(), mesh.vertexSample.size(),
+              mesh.triangles.size(), arrays);
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "export", "Write the CL surface of a Biip dump with every scalar as a .vtp file (ParaView)", [](CLI::App& sub) {
+      auto o = std::make_shared<ExportOptions>();
+      sub.add_option("biip", o->biip, "Biip dump")->required();
+      sub.add_option("--vtp", o->vtp, "VTK XML polydata file to write")->required();
+      sub.add_option("--gcode", o->gcode, "the program of the dump (tells rapids from cutting moves)");
+      sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
+      return [o] { return runExport(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli

@@ -1,0 +1,121 @@
+// isurface-cli render: a quality map of a program (simulated, or from its Biip dump) as a PNG.
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/biip.h"
+#include "isurface/core/simulator.h"
+#include "isurface/vis/color_map.h"
+#include "isurface/vis/quality_map.h"
+#include "offscreen_render.h"
+#include "progress.h"
+#include "trajectory_input.h"
+
+namespace isurface::cli {
+namespace {
+
+struct RenderOptions {
+  std::string gcode, biip, output, machine;
+  std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "rainbow";
+  std::string range, percentiles = "1:99", surface = "commanded";
+  long highlightLine = -1;
+  bool noToolpath = false, noPassWires = false;
+  int isoBands = 12;
+};
+
+std::pair<int, int> parseSize(const std::string& text) {
+  int w = 0, h = 0;
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%dx%d%c", &w, &h, &extra) != 2 || w < 16 || h < 16 || w > 8192 || h > 8192)
+    throw InputError(Diagnostic{"", 0, 0, "bad --size '" + text + "': expected WxH, 16 to 8192 pixels each"});
+  return {w, h};
+}
+
+vis::QualityMapRequest makeRequest(const RenderOptions& o) {
+  vis::QualityMapRequest request;
+  const auto quantity = parseQuantity(o.color);
+  if (!quantity) {
+    std::string known;
+    for (const QuantityInfo& q : quantityInfos()) known += std::string(known.empty() ? "" : ", ") + q.name;
+    throw InputError(Diagnostic{"", 0, 0, "unknown --color '" + o.color + "' (known: " + known + ")"});
+  }
+  request.quantity = *quantity;
+  const auto view = vis::parseView(o.view);
+  if (!view) throw InputError(Diagnostic{"", 0, 0, "unknown --view '" + o.view + "' (iso, top, front, left)"});
+  request.view = *view;
+  if (o.surface != "commanded" && o.surface != "feedback")
+    throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
+  request.feedbackSurface = o.surface == "feedback";
+  request.colorMap = o.colorMap;
+  vis::makeLookupTable(o.colorMap, 0, 1);  // an unknown name fails here, before any work
+  if (o.range == "full") {
+    request.lowPercent = 0;
+    request.highPercent = 100;
+  } else if (!o.range.empty()) {
+    request.fixedRange = parseRange(o.range);
+  } else {
+    const ValueRange p = parseRange(o.percentiles);
+    if (p.lo < 0 || p.hi > 100)
+      throw InputError(Diagnostic{"", 0, 0, "bad --percentiles '" + o.percentiles + "': expected LOW:HIGH within 0:100"});
+    request.lowPercent = p.lo;
+    request.highPercent = p.hi;
+  }
+  if (o.highlightLine >= 0) request.highlightLine = static_cast<std::uint32_t>(o.highlightLine);
+  request.showToolpath = !o.noToolpath;
+  request.passWires = !o.noPassWires;
+  if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
+  request.isoBands = o.isoBands;
+  request.caption = std::filesystem::path(o.biip.empty() ? o.gcode : o.biip).filename().string();
+  return request;
+}
+
+int runRender(const RenderOptions& o) {
+  const auto start = std::chrono::steady_clock::now();
+  const auto [width, height] = parseSize(o.size);
+  vis::QualityMapRequest request = makeRequest(o);
+  const Program program = loadProgram(o.gcode, false);
+  const Trajectory samples = o.biip.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
+                                            : readTrajectory(o.biip);
+  ProgressLine building("building the surface");
+  vis::QualityMap map = vis::buildQualityMap(samples, &program, request);
+  map.style.fontSize = vis::fontSizeForHeight(height);
+  building.finish();
+  vis::QualityScene scene(map.data, map.style);
+  const double renderSeconds = renderSceneToPng(scene, width, height, o.output);
+  const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  std::printf("%s: %s [%s] %.4g .. %.4g, %zu samples, %zu passes (%s), %zu triangles, render %.2f s, total %.2f s\n",
+              o.output.c_str(), quantityInfo(request.quantity).name, quantityInfo(request.quantity).unit,
+              map.style.range.lo, map.style.range.hi, samples.size(), map.passes.passes.size(),
+              pathPatternName(map.passes.pattern), map.mesh.triangles.size(), renderSeconds, total);
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "render", "Render a quality map of a program (simulated, or from its Biip dump) to a PNG, headless",
+    [](CLI::App& sub) {
+      auto o = std::make_shared<RenderOptions>();
+      sub.add_option("gcode", o->gcode, "G-code program")->required();
+      sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
+      sub.add_option("-o,--output", o->output, "PNG file to write")->required();
+      sub.add_option("--color", o->color, "quantity to colour by: speed, accel, jerk, vx.., ax.., jx.., "
+                                          "following_error, line, time, feed, speed_inconsistency, "
+                                          "accel_inconsistency, deviation")->capture_default_str();
+      sub.add_option("--view", o->view, "iso, top, front or left")->capture_default_str();
+      sub.add_option("--size", o->size, "image size WxH in pixels")->capture_default_str();
+      sub.add_option("--cmap", o->colorMap, "colour map: rainbow, viridis, turbo, coolwarm, grey")->capture_default_str();
+      sub.add_option("--range", o->range, "colour range: A:B fixed, or 'full' for the values' extent");
+      sub.add_option("--percentiles", o->percentiles, "percentile-clipped range LOW:HIGH (default)")->capture_default_str();
+      sub.add_option("--highlight-line", o->highlightLine, "make the samples of this G-code line glow");
+      sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
+      sub.add_flag("--no-toolpath", o->noToolpath, "leave the programmed tool path out");
+      sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
+      sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
+      sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      return [o] { return runRender(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli

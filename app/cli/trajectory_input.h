@@ -1,0 +1,15 @@
+#pragma once
+// The samples a command works on: read from a Biip dump or simulated from the program, with a
+// progress line on the terminal.
+#include <string>
+
+#include "isurface/core/machine.h"
+#include "isurface/core/program.h"
+#include "isurface/core/trajectory.h"
+
+namespace isurface::cli {
+
+Trajectory readTrajectory(const std::string& biipPath);
+Trajectory simulateTrajectory(const Program& program, const Machine& machine);
+
+}  // namespace isurface::cli

@@ -1,0 +1,161 @@
+// Loading interpolation samples into one array per channel.
+#include "isurface/core/trajectory.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "isurface/core/biip.h"
+#include "isurface/core/interpolator.h"
+
+namespace isurface {
+
+namespace {
+
+// Channels with a member of their own; every other channel goes to `extra`.
+bool isKnownChannel(const std::string& name, bool feedbackComplete) {
+  static const char* const own[] = {"t", "line", "block", "x", "y", "z", "feed"};
+  for (const char* n : own)
+    if (name == n) return true;
+  return feedbackComplete && (name == "fb_x" || name == "fb_y" || name == "fb_z");
+}
+
+// Records copied per step: small enough that a step's records stay in the cache while each
+// channel is picked out of them.
+constexpr std::size_t kChunkRecords = std::size_t(1) << 16;
+constexpr std::size_t kProgressRecords = std::size_t(1) << 20;
+
+std::uint32_t clampToU32(std::uint64_t v) {
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(v, std::numeric_limits<std::uint32_t>::max()));
+}
+
+}  // namespace
+
+const std::vector<double>* Trajectory::extraChannel(const std::string& name) const {
+  for (const auto& [channelName, values] : extra)
+    if (channelName == name) return &values;
+  return nullptr;
+}
+
+bool timeIsIrregular(const double* time, std::size_t n, double cycle) {
+  if (time == nullptr || n < 2) return false;
+  const double tolerance = 1e-3 * cycle;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double gap = time[i] - time[i - 1];
+    // A non-finite time is irregular too (the comparison is false for NaN).
+    if (!(std::fabs(gap - cycle) <= tolerance)) return true;
+  }
+  return false;
+}
+
+double rapidFeedFromMetadata(const std::string& metadataJson) {
+  if (metadataJson.empty()) return 0;
+  const nlohmann::json meta = nlohmann::json::parse(metadataJson, nullptr, false);
+  if (!meta.is_object()) return 0;
+  const auto machine = meta.find("machine");
+  if (machine == meta.end() || !machine->is_object()) return 0;
+  const auto rapid = machine->find("rapid_mm_min");
+  if (rapid == machine->end() || !rapid->is_number()) return 0;
+  const double value = rapid->get<double>();
+  return std::isfinite(value) && value > 0 ? value : 0;
+}
+
+Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress) {
+  const BiipHeader& header = reader.header();
+  const std::size_t n = reader.recordCount();
+  Trajectory out;
+  out.source = reader.path();
+  out.cycle = header.cycleSeconds;
+  out.rapidFeed = rapidFeedFromMetadata(header.metadataJson);
+
+  const BiipChannelView t = reader.channel("t");
+  const BiipChannelView line = reader.channel("line");
+  const BiipChannelView block = reader.channel("block");
+  const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
+  out.hasLine = line.valid();
+
+  // Destination of each floating channel copied in chunks.
+  struct Copy {
+    BiipChannelView view;
+    std::vector<double>* to;
+  };
+  std::vector<Copy> copies;
+  const auto add = [&](const std::string& name, std::vector<double>& to) {
+    to.resize(n);
+    copies.push_back({reader.channel(name), &to});
+  };
+  add("x", out.x);
+  add("y", out.y);
+  add("z", out.z);
+  if (t.valid()) add("t", out.time);
+  if (feedbackComplete) {
+    add("fb_x", out.fbX);
+    add("fb_y", out.fbY);
+    add("fb_z", out.fbZ);
+  }
+  if (reader.hasChannel("feed")) add("feed", out.feed);
+  for (const BiipChannel& c : header.channels) {
+    if (isKnownChannel(c.name, feedbackComplete)) continue;
+    out.extra.emplace_back(c.name, std::vector<double>());
+  }
+  // Resized only now: `extra` must not grow after pointers into it are taken.
+  for (auto& [name, values] : out.extra) add(name, values);
+
+  out.line.assign(n, 0);
+  if (block.valid()) out.block.resize(n);
+  if (!t.valid()) out.time.resize(n);
+
+  std::size_t nextReport = kProgressRecords;
+  for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
+    const std::size_t count = std::min(kChunkRecords, n - begin);
+    for (const Copy& c : copies) c.view.copyTo(c.to->data() + begin, begin, count);
+    if (line.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.line[i] = clampToU32(line.integer(i));
+    if (block.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.block[i] = clampToU32(block.integer(i));
+    if (!t.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.time[i] = header.t0Seconds + double(i) * header.cycleSeconds;
+    if (progress && begin + count >= nextReport) {
+      progress(double(begin + count) / double(n));
+      nextReport += kProgressRecords;
+    }
+  }
+  if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
+  if (progress) progress(1.0);
+  return out;
+}
+
+Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source) {
+  const std::size_t n = samples.size();
+  Trajectory out;
+  out.source = source;
+  out.cycle = cycle;
+  out.hasLine = true;
+  out.time.resize(n);
+  out.line.resize(n);
+  out.block.resize(n);
+  out.x.resize(n);
+  out.y.resize(n);
+  out.z.resize(n);
+  out.fbX.resize(n);
+  out.fbY.resize(n);
+  out.fbZ.resize(n);
+  out.feed.resize(n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const SimSample& s = samples[i];
+    out.time[i] = double(i) * cycle;
+    out.line[i] = s.line;
+    out.block[i] = s.block;
+    out.x[i] = s.x;
+    out.y[i] = s.y;
+    out.z[i] = s.z;
+    out.fbX[i] = s.fbX;
+    out.fbY[i] = s.fbY;
+    out.fbZ[i] = s.fbZ;
+    out.feed[i] = s.feed;
+  }
+  return out;
+}
+
+}  // namespace isurface
