@@ -13,7 +13,7 @@ cameo=../shared/realdata/cameo.nc
 [ -f "$cameo" ] || { echo "render_bench: $cameo is missing" >&2; exit 1; }
 
 # About 1,000,000 samples: the first passes of the program, ended properly.
-head -n 3000 "$cameo" > "$work/cameo-1m.nc"
+head -n 1500 "$cameo" > "$work/cameo-1m.nc"
 printf 'G0 Z10\nM30\n' >> "$work/cameo-1m.nc"
 "$cli" simulate "$work/cameo-1m.nc" -o "$work/cameo-1m.biip" | tail -1
 "$cli" simulate "$cameo" -o "$work/cameo-full.biip" | tail -1

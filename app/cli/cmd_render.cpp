@@ -22,7 +22,7 @@ struct RenderOptions {
   std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "rainbow";
   std::string range, percentiles = "1:99", surface = "commanded";
   long highlightLine = -1;
-  bool noToolpath = false, noPassWires = false;
+  bool noToolpath = false, noPassWires = false, colorToolpath = false;
   int isoBands = 12;
 };
 
@@ -65,6 +65,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   }
   if (o.highlightLine >= 0) request.highlightLine = static_cast<std::uint32_t>(o.highlightLine);
   request.showToolpath = !o.noToolpath;
+  request.colorToolpath = o.colorToolpath;
   request.passWires = !o.noPassWires;
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
@@ -111,6 +112,7 @@ const bool registered = registerCommand(
       sub.add_option("--highlight-line", o->highlightLine, "make the samples of this G-code line glow");
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
       sub.add_flag("--no-toolpath", o->noToolpath, "leave the programmed tool path out");
+      sub.add_flag("--color-toolpath", o->colorToolpath, "draw the sampled cutting path coloured by the quantity");
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");

@@ -218,3 +218,26 @@ TEST(quantities, ExtraChannelsPerVertex) {
 }
 
 }  // namespace
+
+namespace {
+
+// A writer that stored its own speed ("v", mm/min) is believed, not derived again.
+TEST(quantities, StoredChannelsArePreferredToDerivedOnes) {
+  Trajectory t;
+  t.source = "stored.biip";
+  for (int i = 0; i < 50; ++i) {
+    t.x.push_back(0.05 * i);
+    t.y.push_back(0);
+    t.z.push_back(0);
+    t.time.push_back(0.001 * i);
+    t.line.push_back(1);
+  }
+  const std::vector<double> derived = sampleQuantity(Quantity::Speed, t);
+  EXPECT_NEAR(derived[25], 3000.0, 1e-6);  // 0.05 mm a millisecond
+  t.extra.emplace_back("v", std::vector<double>(50, 1234.0));
+  const std::vector<double> stored = sampleQuantity(Quantity::Speed, t);
+  EXPECT_EQ(stored[25], 1234.0);
+  EXPECT_NEAR(sampleQuantity(Quantity::Jerk, t)[25], 0.0, 1e-3);  // no "jerk" channel: derived
+}
+
+}  // namespace

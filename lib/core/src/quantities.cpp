@@ -84,8 +84,22 @@ void requireFeedback(const Trajectory& s, Quantity q) {
     missing(s, std::string(quantityInfo(q).label) + " needs feedback positions (fb_x, fb_y, fb_z), which the samples do not have");
 }
 
+// A channel the writer stored for a derived quantity (docs/biip-format.md names them and their
+// units); used instead of deriving it again.
+const std::vector<double>* storedChannel(Quantity q, const Trajectory& s) {
+  static const std::pair<Quantity, const char*> names[] = {
+      {Quantity::Speed, "v"},          {Quantity::Acceleration, "acc"}, {Quantity::Jerk, "jerk"},
+      {Quantity::VelocityX, "vx"},     {Quantity::VelocityY, "vy"},     {Quantity::VelocityZ, "vz"},
+      {Quantity::AccelerationX, "ax"}, {Quantity::AccelerationY, "ay"}, {Quantity::AccelerationZ, "az"},
+      {Quantity::JerkX, "jx"},         {Quantity::JerkY, "jy"},         {Quantity::JerkZ, "jz"}};
+  for (const auto& [quantity, name] : names)
+    if (quantity == q) return s.extraChannel(name);
+  return nullptr;
+}
+
 // A quantity that is not derived: its value at sample i.
 double plainValue(Quantity q, const Trajectory& s, std::size_t i) {
+  if (const std::vector<double>* stored = storedChannel(q, s)) return (*stored)[i];
   switch (q) {
     case Quantity::FollowingError: return 1000.0 * (s.feedback(i) - s.commanded(i)).norm();
     case Quantity::Line: return double(s.line[i]);
@@ -108,7 +122,7 @@ std::vector<double> perVertex(Quantity q, const Trajectory& s, const SurfaceMesh
   const std::vector<std::uint32_t>& at = mesh.vertexSample;
   const std::size_t vertices = at.size();
   std::vector<double> out(vertices, kNaN);
-  if (!isKinematic(q)) {
+  if (!isKinematic(q) || storedChannel(q, s)) {
     for (std::size_t v = 0; v < vertices; ++v) out[v] = plainValue(q, s, at[v]);
     return out;
   }
@@ -220,7 +234,7 @@ std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples) {
   checkSampleQuantity(q, samples);
   const std::size_t n = samples.size();
   std::vector<double> out(n);
-  if (!isKinematic(q)) {
+  if (!isKinematic(q) || storedChannel(q, samples)) {
     for (std::size_t i = 0; i < n; ++i) out[i] = plainValue(q, samples, i);
     return out;
   }

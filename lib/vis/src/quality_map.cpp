@@ -72,7 +72,21 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.data.positions = meshPositions(samples, map.mesh, request.feedbackSurface);
   map.data.mesh = &map.mesh;
   map.data.scalars = vertexQuantity(request.quantity, samples, map.mesh);
-  if (program && request.showToolpath) map.data.toolpath = programPolylines(*program);
+  if (request.showToolpath && request.colorToolpath) {
+    // The passes as sampled, through the surface's own vertices and values.
+    for (std::size_t pass = 0; pass + 1 < map.mesh.passFirstVertex.size(); ++pass) {
+      std::vector<Vec3> line;
+      std::vector<float> values;
+      for (std::size_t v = map.mesh.passFirstVertex[pass]; v < map.mesh.passFirstVertex[pass + 1]; ++v) {
+        line.push_back(map.data.positions[v]);
+        values.push_back(map.data.scalars[v]);
+      }
+      map.data.toolpath.push_back(std::move(line));
+      map.data.toolpathScalars.push_back(std::move(values));
+    }
+  } else if (program && request.showToolpath) {
+    map.data.toolpath = programPolylines(*program);
+  }
   if (request.highlightLine) {
     for (std::size_t i = 0; i < samples.size(); ++i) {
       if (samples.line[i] != *request.highlightLine) continue;

@@ -164,15 +164,29 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
 
   if (style.showToolpath && !data.toolpath.empty()) {
     auto pathMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    pathMapper->SetInputData(polylines(data.toolpath));
-    pathMapper->ScalarVisibilityOff();
-    auto path = vtkSmartPointer<vtkActor>::New();
-    path->SetMapper(pathMapper);
-    path->GetProperty()->SetColor(0.15, 0.15, 0.2);
-    path->GetProperty()->SetOpacity(0.35);
-    path->GetProperty()->SetLineWidth(1.0);
-    path->GetProperty()->LightingOff();
-    p.renderer->AddActor(path);
+    vtkSmartPointer<vtkPolyData> path = polylines(data.toolpath);
+    const bool coloured = data.toolpathScalars.size() == data.toolpath.size();
+    if (coloured) {
+      std::vector<float> values;
+      for (std::size_t k = 0; k < data.toolpath.size(); ++k)
+        if (data.toolpath[k].size() >= 2)
+          values.insert(values.end(), data.toolpathScalars[k].begin(), data.toolpathScalars[k].end());
+      addPointArray(path, "value", values);
+      path->GetPointData()->SetActiveScalars("value");
+      pathMapper->SetLookupTable(p.table);
+      pathMapper->UseLookupTableScalarRangeOn();
+      pathMapper->ScalarVisibilityOn();
+    } else {
+      pathMapper->ScalarVisibilityOff();
+    }
+    pathMapper->SetInputData(path);
+    auto pathActor = vtkSmartPointer<vtkActor>::New();
+    pathActor->SetMapper(pathMapper);
+    pathActor->GetProperty()->SetColor(0.15, 0.15, 0.2);
+    pathActor->GetProperty()->SetOpacity(coloured ? 1.0 : 0.35);
+    pathActor->GetProperty()->SetLineWidth(coloured ? 2.0 : 1.0);
+    pathActor->GetProperty()->LightingOff();
+    p.renderer->AddActor(pathActor);
   }
 
   if (!data.highlight.empty()) {

@@ -21,6 +21,7 @@ struct QualityMapRequest {
   double lowPercent = 1, highPercent = 99;   // with both 0 and 100: the full range
   ViewDirection view = ViewDirection::Iso;
   bool showToolpath = true;
+  bool colorToolpath = false;                // the sampled cutting path coloured by the quantity
   bool passWires = true;
   int isoBands = 12;
   std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this

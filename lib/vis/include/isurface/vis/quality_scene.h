@@ -26,7 +26,8 @@ struct SurfaceData {
   std::vector<Vec3> positions;   // mesh vertices, mm
   const SurfaceMesh* mesh = nullptr;
   std::vector<float> scalars;    // the coloured quantity, one per vertex
-  std::vector<std::vector<Vec3>> toolpath;  // programmed cutting path as polylines, mm
+  std::vector<std::vector<Vec3>> toolpath;  // cutting path as polylines, mm
+  std::vector<std::vector<float>> toolpathScalars;  // when not empty: a value per toolpath point
   std::vector<Vec3> highlight;   // samples to make glow (a selected line's), mm
 };
 
