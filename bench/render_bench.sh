@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Whole-process timing of headless quality maps: a 1,000,000-sample and a 10,000,000+-sample
+# Whole-process timing of headless quality maps: a 1,000,000+-sample and a 10,000,000+-sample
 # dump (from ../shared/realdata/cameo.nc, a relief raster), rendered to 1600x1000 PNGs.
 # Prints wall time and peak memory of each `isurface-cli render` run.
 # Usage: bench/render_bench.sh [BUILD_DIR]   (default: build)
@@ -12,7 +12,7 @@ trap 'rm -rf "$work"' EXIT
 cameo=../shared/realdata/cameo.nc
 [ -f "$cameo" ] || { echo "render_bench: $cameo is missing" >&2; exit 1; }
 
-# About 1,000,000 samples: the first passes of the program, ended properly.
+# At least 1,000,000 samples (1.7 M): the first passes of the program, ended properly.
 head -n 1500 "$cameo" > "$work/cameo-1m.nc"
 printf 'G0 Z10\nM30\n' >> "$work/cameo-1m.nc"
 "$cli" simulate "$work/cameo-1m.nc" -o "$work/cameo-1m.biip" | tail -1
