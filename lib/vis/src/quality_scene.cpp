@@ -25,40 +25,9 @@
 #include <cmath>
 
 #include "isurface/vis/color_map.h"
-#include "isurface/vis/resources.h"
+#include "scene_actors.h"
 
 namespace isurface::vis {
-
-namespace {
-
-// A shader file split at its //DECLARATIONS and //IMPLEMENTATION markers (or all of it the
-// implementation when it has none).
-struct ShaderPiece {
-  std::string declarations, implementation;
-};
-
-ShaderPiece shaderPiece(const std::string& path) {
-  const std::string& text = resourceText(path);
-  const auto decl = text.find("//DECLARATIONS"), impl = text.find("//IMPLEMENTATION");
-  if (decl == std::string::npos || impl == std::string::npos) return {"", text};
-  return {text.substr(decl + 14, impl - decl - 14), text.substr(impl + 16)};
-}
-
-vtkSmartPointer<vtkPolyData> polylines(const std::vector<std::vector<Vec3>>& lines) {
-  auto points = vtkSmartPointer<vtkPoints>::New();
-  auto cells = vtkSmartPointer<vtkCellArray>::New();
-  for (const auto& line : lines) {
-    if (line.size() < 2) continue;
-    cells->InsertNextCell(static_cast<vtkIdType>(line.size()));
-    for (const Vec3& p : line) cells->InsertCellPoint(points->InsertNextPoint(p.x(), p.y(), p.z()));
-  }
-  auto poly = vtkSmartPointer<vtkPolyData>::New();
-  poly->SetPoints(points);
-  poly->SetLines(cells);
-  return poly;
-}
-
-}  // namespace
 
 std::optional<ViewDirection> parseView(const std::string& name) {
   if (name == "iso") return ViewDirection::Iso;
@@ -107,9 +76,12 @@ void addPointArray(vtkPolyData* polyData, const std::string& name, const std::ve
 struct QualityScene::Parts {
   vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkSmartPointer<vtkRenderer> axesCorner = vtkSmartPointer<vtkRenderer>::New();
-  vtkSmartPointer<vtkPolyData> surface;
+  vtkSmartPointer<vtkPolyData> surface, coarseSurface;
   vtkSmartPointer<vtkLookupTable> table;
-  vtkSmartPointer<vtkActor> surfaceActor = vtkSmartPointer<vtkActor>::New();
+  vtkSmartPointer<vtkActor> surfaceActor, coarseActor, toolpathActor, lineGlow, sampleGlow, pointsActor;
+  vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
+  vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
+  bool coarse = false, showSurface = true;
 };
 
 QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : parts_(new Parts) {
@@ -124,148 +96,72 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.surface = surfacePolyData(data.positions, *data.mesh);
   addPointArray(p.surface, "value", data.scalars);
   p.surface->GetPointData()->SetActiveScalars("value");
-
-  auto mapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-  mapper->SetInputData(p.surface);
-  mapper->SetLookupTable(p.table);
-  mapper->SetScalarRange(style.range.lo, style.range.hi);
-  mapper->SetScalarModeToUsePointData();
-  mapper->ScalarVisibilityOn();
-  mapper->UseLookupTableScalarRangeOn();
-  // Interpolating the value (not the colour) across triangles keeps bands sharp and gives the
-  // fragment shader the value itself (as the colour texture coordinate) for the iso-lines.
-  mapper->InterpolateScalarsBeforeMappingOn();
-  mapper->SetResolveCoincidentTopologyToPolygonOffset();
-  mapper->MapDataArrayToVertexAttribute("passCoord", "pass_coord", vtkDataObject::FIELD_ASSOCIATION_POINTS, -1);
-  p.surfaceActor->SetMapper(mapper);
-  p.surfaceActor->GetProperty()->SetAmbient(0.25);
-  p.surfaceActor->GetProperty()->SetDiffuse(0.8);
-  p.surfaceActor->GetProperty()->SetSpecular(0.08);
-  p.surfaceActor->GetProperty()->SetSpecularPower(20);
-  p.surfaceActor->GetProperty()->BackfaceCullingOff();
-
-  vtkShaderProperty* shaders = p.surfaceActor->GetShaderProperty();
-  const ShaderPiece passVertex = shaderPiece("shaders/pass_wire.vert.glsl");
-  const ShaderPiece passFragment = shaderPiece("shaders/pass_wire.frag.glsl");
-  std::string lightImpl = "//VTK::Light::Impl\n";
-  if (style.isoBands > 0) lightImpl += resourceText("shaders/iso_bands.frag.glsl");
-  if (style.passWires) lightImpl += passFragment.implementation;
-  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Dec", true,
-                                      "//VTK::PositionVC::Dec\n" + passVertex.declarations, false);
-  shaders->AddVertexShaderReplacement("//VTK::PositionVC::Impl", true,
-                                      "//VTK::PositionVC::Impl\n" + passVertex.implementation, false);
-  shaders->AddFragmentShaderReplacement("//VTK::Color::Dec", true, "//VTK::Color::Dec\n" + passFragment.declarations,
-                                        false);
-  shaders->AddFragmentShaderReplacement("//VTK::Light::Impl", true, lightImpl, false);
-  shaders->GetFragmentCustomUniforms()->SetUniformf("isoBands", static_cast<float>(std::max(style.isoBands, 1)));
-  shaders->GetFragmentCustomUniforms()->SetUniformf("isoStrength", 0.4f);
-  shaders->GetFragmentCustomUniforms()->SetUniformf("passWireStrength", 0.12f);
+  p.surfaceActor = makeSurfaceActor(p.surface, p.table, style, style.passWires);
   p.renderer->AddActor(p.surfaceActor);
 
+  if (data.coarseMesh) {
+    p.coarseSurface = surfacePolyData(data.coarsePositions, *data.coarseMesh);
+    addPointArray(p.coarseSurface, "value", data.coarseScalars);
+    p.coarseSurface->GetPointData()->SetActiveScalars("value");
+    p.coarseActor = makeSurfaceActor(p.coarseSurface, p.table, style, false);
+    p.coarseActor->VisibilityOff();
+    p.renderer->AddActor(p.coarseActor);
+  }
+
   if (style.showToolpath && !data.toolpath.empty()) {
-    auto pathMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    vtkSmartPointer<vtkPolyData> path = polylines(data.toolpath);
-    const bool coloured = data.toolpathScalars.size() == data.toolpath.size();
-    if (coloured) {
-      std::vector<float> values;
-      for (std::size_t k = 0; k < data.toolpath.size(); ++k)
-        if (data.toolpath[k].size() >= 2)
-          values.insert(values.end(), data.toolpathScalars[k].begin(), data.toolpathScalars[k].end());
-      addPointArray(path, "value", values);
-      path->GetPointData()->SetActiveScalars("value");
-      pathMapper->SetLookupTable(p.table);
-      pathMapper->UseLookupTableScalarRangeOn();
-      pathMapper->ScalarVisibilityOn();
-    } else {
-      pathMapper->ScalarVisibilityOff();
-    }
-    pathMapper->SetInputData(path);
-    auto pathActor = vtkSmartPointer<vtkActor>::New();
-    pathActor->SetMapper(pathMapper);
-    pathActor->GetProperty()->SetColor(0.15, 0.15, 0.2);
-    pathActor->GetProperty()->SetOpacity(coloured ? 1.0 : 0.35);
-    pathActor->GetProperty()->SetLineWidth(coloured ? 2.0 : 1.0);
-    pathActor->GetProperty()->LightingOff();
-    p.renderer->AddActor(pathActor);
+    p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);
+    p.renderer->AddActor(p.toolpathActor);
   }
 
-  if (!data.highlight.empty()) {
-    auto points = vtkSmartPointer<vtkPoints>::New();
-    auto verts = vtkSmartPointer<vtkCellArray>::New();
-    for (const Vec3& h : data.highlight) {
-      const vtkIdType id = points->InsertNextPoint(h.x(), h.y(), h.z());
-      verts->InsertNextCell(1, &id);
-    }
-    auto poly = vtkSmartPointer<vtkPolyData>::New();
-    poly->SetPoints(points);
-    poly->SetVerts(verts);
-    auto glowMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
-    glowMapper->SetInputData(poly);
-    glowMapper->ScalarVisibilityOff();
-    auto glow = vtkSmartPointer<vtkActor>::New();
-    glow->SetMapper(glowMapper);
-    glow->GetProperty()->SetPointSize(14);
-    glow->GetProperty()->SetOpacity(0.99);  // drawn in the translucent pass, blended
-    glow->GetProperty()->LightingOff();
-    vtkShaderProperty* glowShader = glow->GetShaderProperty();
-    glowShader->AddFragmentShaderReplacement("//VTK::Light::Impl", true,
-                                             "//VTK::Light::Impl\n" + resourceText("shaders/glow.frag.glsl"), false);
-    const float core[3] = {1.0f, 1.0f, 0.85f}, rim[3] = {1.0f, 0.15f, 0.55f};
-    glowShader->GetFragmentCustomUniforms()->SetUniform3f("glowCore", core);
-    glowShader->GetFragmentCustomUniforms()->SetUniform3f("glowRim", rim);
-    p.renderer->AddActor(glow);
-  }
+  // The surface's vertices as small points, hidden unless asked for.
+  auto pointsMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
+  pointsMapper->SetInputData(p.surface);
+  pointsMapper->SetLookupTable(p.table);
+  pointsMapper->UseLookupTableScalarRangeOn();
+  p.pointsActor = vtkSmartPointer<vtkActor>::New();
+  p.pointsActor->SetMapper(pointsMapper);
+  p.pointsActor->GetProperty()->SetRepresentationToPoints();
+  p.pointsActor->GetProperty()->SetPointSize(2);
+  p.pointsActor->VisibilityOff();
+  p.renderer->AddActor(p.pointsActor);
 
-  auto legend = vtkSmartPointer<vtkScalarBarActor>::New();
-  legend->SetLookupTable(p.table);
-  // Long labels go one word a line: the legend is narrow.
-  std::string label = style.quantityLabel;
-  if (label.size() > 12) std::replace(label.begin(), label.end(), ' ', '\n');
-  const std::string title = label + (style.unit.empty() ? "" : "\n[" + style.unit + "]");
-  legend->SetTitle(title.c_str());
-  legend->SetNumberOfLabels(6);
-  legend->SetLabelFormat("%.4g");
-  legend->SetMaximumWidthInPixels(130);
-  legend->SetBarRatio(0.25);
-  legend->GetPositionCoordinate()->SetValue(0.88, 0.1);
-  legend->SetWidth(0.11);
-  legend->SetHeight(0.8);
-  for (vtkTextProperty* text : {legend->GetTitleTextProperty(), legend->GetLabelTextProperty()}) {
-    text->SetColor(0.1, 0.1, 0.12);
-    text->ShadowOff();
-    text->ItalicOff();
-    text->BoldOff();
-  }
-  legend->GetTitleTextProperty()->SetFontSize(style.fontSize);
-  legend->GetLabelTextProperty()->SetFontSize(style.fontSize - 2);
-  legend->UnconstrainedFontSizeOn();
-  p.renderer->AddActor2D(legend);
+  const float lineCore[3] = {1.0f, 1.0f, 0.85f}, lineRim[3] = {1.0f, 0.15f, 0.55f};
+  const float sampleCore[3] = {1.0f, 1.0f, 1.0f}, sampleRim[3] = {1.0f, 0.85f, 0.1f};
+  p.lineGlow = makeGlowActor(p.lineGlowPoints, 14, lineCore, lineRim);
+  p.sampleGlow = makeGlowActor(p.sampleGlowPoints, 26, sampleCore, sampleRim);
+  setHighlight(data.highlight, {});
+  p.renderer->AddActor(p.lineGlow);
+  p.renderer->AddActor(p.sampleGlow);
 
-  if (!style.caption.empty()) {
-    auto caption = vtkSmartPointer<vtkTextActor>::New();
-    caption->SetInput(style.caption.c_str());
-    caption->GetTextProperty()->SetColor(0.1, 0.1, 0.12);
-    caption->GetTextProperty()->SetFontSize(style.fontSize);
-    caption->GetTextProperty()->SetVerticalJustificationToTop();
-    caption->GetPositionCoordinate()->SetCoordinateSystemToNormalizedViewport();
-    caption->GetPositionCoordinate()->SetValue(0.01, 0.985);
-    p.renderer->AddActor2D(caption);
-  }
-
-  auto axes = vtkSmartPointer<vtkAxesActor>::New();
-  axes->SetShaftTypeToCylinder();
-  axes->SetTotalLength(1, 1, 1);
-  for (vtkCaptionActor2D* label : {axes->GetXAxisCaptionActor2D(), axes->GetYAxisCaptionActor2D(),
-                                   axes->GetZAxisCaptionActor2D()}) {
-    label->GetCaptionTextProperty()->SetColor(0.1, 0.1, 0.12);
-    label->GetCaptionTextProperty()->ShadowOff();
-    label->GetCaptionTextProperty()->ItalicOff();
-  }
-  p.axesCorner->AddActor(axes);
+  p.renderer->AddActor2D(makeLegend(p.table, style));
+  if (!style.caption.empty()) p.renderer->AddActor2D(makeCaption(style.caption, style.fontSize));
+  p.axesCorner->AddActor(makeAxes());
   p.axesCorner->SetViewport(0.0, 0.0, 0.14, 0.2);
   p.axesCorner->SetLayer(1);
   p.axesCorner->InteractiveOff();
   setView(style.view);
+}
+
+void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample) {
+  setPoints(parts_->lineGlowPoints, line);
+  setPoints(parts_->sampleGlowPoints, sample);
+  parts_->lineGlow->SetVisibility(!line.empty());
+  parts_->sampleGlow->SetVisibility(!sample.empty());
+}
+
+void QualityScene::useCoarseSurface(bool coarse) {
+  Parts& p = *parts_;
+  p.coarse = coarse && p.coarseActor;
+  p.surfaceActor->SetVisibility(p.showSurface && !p.coarse);
+  if (p.coarseActor) p.coarseActor->SetVisibility(p.showSurface && p.coarse);
+}
+
+void QualityScene::setVisibility(bool surface, bool toolpath, bool points) {
+  Parts& p = *parts_;
+  p.showSurface = surface;
+  useCoarseSurface(p.coarse);
+  if (p.toolpathActor) p.toolpathActor->SetVisibility(toolpath);
+  p.pointsActor->SetVisibility(points);
 }
 
 QualityScene::~QualityScene() { delete parts_; }

@@ -29,6 +29,10 @@ struct SurfaceData {
   std::vector<std::vector<Vec3>> toolpath;  // cutting path as polylines, mm
   std::vector<std::vector<float>> toolpathScalars;  // when not empty: a value per toolpath point
   std::vector<Vec3> highlight;   // samples to make glow (a selected line's), mm
+  // A coarser surface shown while the camera moves (level of detail); optional.
+  std::vector<Vec3> coarsePositions;
+  const SurfaceMesh* coarseMesh = nullptr;
+  std::vector<float> coarseScalars;
 };
 
 struct MapStyle {
@@ -57,6 +61,12 @@ class QualityScene {
   void setView(ViewDirection view);
   // Keeps the axes corner turned like the main camera; call before each render.
   void syncAxes();
+
+  // The glowing samples: a selected line's, and the selected sample itself (brighter, larger).
+  void setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample);
+  // Shows the coarse surface instead of the full one (while the camera moves), if there is one.
+  void useCoarseSurface(bool coarse);
+  void setVisibility(bool surface, bool toolpath, bool points);
 
   vtkRenderer* renderer() const;
   vtkPolyData* surface() const;  // points, triangles, "value" and "pass_coord" arrays
