@@ -90,7 +90,7 @@ int runRender(const RenderOptions& o) {
   std::printf("%s: %s [%s] %.4g .. %.4g, %zu samples, %zu passes (%s), %zu triangles, render %.2f s, total %.2f s\n",
               o.output.c_str(), quantityInfo(request.quantity).name, quantityInfo(request.quantity).unit,
               map.style.range.lo, map.style.range.hi, samples.size(), map.passes.passes.size(),
-              pathPatternName(map.passes.pattern), map.mesh.triangles.size(), renderSeconds, total);
+              pathPatternName(map.passes.pattern), map.mesh->triangles.size(), renderSeconds, total);
   return kExitOk;
 }
 

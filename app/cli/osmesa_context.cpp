@@ -1,7 +1,10 @@
 #include "osmesa_context.h"
 
+#define GL_GLEXT_PROTOTYPES 1
 #include <GL/osmesa.h>
+#include <GL/glext.h>
 
+#include <algorithm>
 #include <stdexcept>
 #include <vector>
 
@@ -51,5 +54,26 @@ bool OsMesaContext::makeCurrent() {
 }
 
 bool OsMesaContext::isCurrent() const { return OSMesaGetCurrentContext() == impl_->context; }
+int OsMesaContext::width() const { return impl_->width; }
+int OsMesaContext::height() const { return impl_->height; }
+
+void OsMesaContext::clearFrame(float r, float g, float b) {
+  makeCurrent();
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glViewport(0, 0, impl_->width, impl_->height);
+  glClearColor(r, g, b, 1.0f);
+  glClear(GL_COLOR_BUFFER_BIT);
+}
+
+std::vector<unsigned char> OsMesaContext::readPixels() {
+  makeCurrent();
+  glFinish();
+  // OSMesa's buffer holds the bottom row first.
+  const std::size_t row = static_cast<std::size_t>(impl_->width) * 4;
+  std::vector<unsigned char> top(impl_->buffer.size());
+  for (int y = 0; y < impl_->height; ++y)
+    std::copy_n(&impl_->buffer[(impl_->height - 1 - y) * row], row, &top[y * row]);
+  return top;
+}
 
 }  // namespace isurface::cli

@@ -1,6 +1,8 @@
 #pragma once
 // A headless OpenGL context through OSMesa (Mesa's software renderer), no X server needed.
 // Kept apart from VTK's GL headers, which make <GL/osmesa.h> uncompilable.
+#include <vector>
+
 namespace isurface::cli {
 
 class OsMesaContext {
@@ -13,6 +15,12 @@ class OsMesaContext {
 
   bool makeCurrent();
   bool isCurrent() const;
+  int width() const;
+  int height() const;
+  // Makes the context current with its own framebuffer bound, full-size viewport, cleared.
+  void clearFrame(float r, float g, float b);
+  // Finishes drawing and returns the default framebuffer as RGBA rows, top row first.
+  std::vector<unsigned char> readPixels();
 
  private:
   struct Impl;

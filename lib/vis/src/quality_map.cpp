@@ -65,19 +65,26 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   MeshOptions meshOptions;
   meshOptions.feedback = request.feedbackSurface;
   meshOptions.stride = std::max<std::size_t>(1, (cutting + request.maxVertices - 1) / request.maxVertices);
-  map.mesh = buildSurfaceMesh(samples, map.passes, meshOptions);
-  if (map.mesh.triangles.empty())
+  map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
+  if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0, "the passes are too far apart to make a surface"});
 
-  map.data.positions = meshPositions(samples, map.mesh, request.feedbackSurface);
-  map.data.mesh = &map.mesh;
-  map.data.scalars = vertexQuantity(request.quantity, samples, map.mesh);
+  map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
+  map.data.mesh = map.mesh.get();
+  map.data.scalars = vertexQuantity(request.quantity, samples, *map.mesh);
+  if (request.coarseVertices > 0 && cutting > 2 * request.coarseVertices) {
+    meshOptions.stride = (cutting + request.coarseVertices - 1) / request.coarseVertices;
+    map.coarseMesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
+    map.data.coarsePositions = meshPositions(samples, *map.coarseMesh, request.feedbackSurface);
+    map.data.coarseMesh = map.coarseMesh.get();
+    map.data.coarseScalars = vertexQuantity(request.quantity, samples, *map.coarseMesh);
+  }
   if (request.showToolpath && request.colorToolpath) {
     // The passes as sampled, through the surface's own vertices and values.
-    for (std::size_t pass = 0; pass + 1 < map.mesh.passFirstVertex.size(); ++pass) {
+    for (std::size_t pass = 0; pass + 1 < map.mesh->passFirstVertex.size(); ++pass) {
       std::vector<Vec3> line;
       std::vector<float> values;
-      for (std::size_t v = map.mesh.passFirstVertex[pass]; v < map.mesh.passFirstVertex[pass + 1]; ++v) {
+      for (std::size_t v = map.mesh->passFirstVertex[pass]; v < map.mesh->passFirstVertex[pass + 1]; ++v) {
         line.push_back(map.data.positions[v]);
         values.push_back(map.data.scalars[v]);
       }

@@ -1,5 +1,7 @@
 #include "isurface/vis/quality_scene.h"
 
+#include <vtkAutoInit.h>
+
 #include <vtkActor.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
@@ -26,6 +28,13 @@
 
 #include "isurface/vis/color_map.h"
 #include "scene_actors.h"
+
+// VTK's rendering classes come from object factories that these register; without them every
+// renderer, mapper and shader property would be an empty base class and every picture black.
+// Registering here, where scenes are made, serves every executable that shows one.
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+VTK_MODULE_INIT(vtkRenderingFreeType);
+VTK_MODULE_INIT(vtkInteractionStyle);
 
 namespace isurface::vis {
 

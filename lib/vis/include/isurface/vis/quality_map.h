@@ -2,6 +2,7 @@
 // From samples to a ready scene description: passes, surface mesh, the coloured quantity, its
 // range, the programmed tool path and the highlighted line.
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -25,11 +26,13 @@ struct QualityMapRequest {
   bool passWires = true;
   int isoBands = 12;
   std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
+  std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
   std::string caption;                       // prefix of the caption (e.g. the file name)
 };
 
+// Held by pointer so that `data` keeps pointing at them when the map is moved.
 struct QualityMap {
-  SurfaceMesh mesh;
+  std::unique_ptr<SurfaceMesh> mesh, coarseMesh;
   PassSet passes;
   SurfaceData data;
   MapStyle style;

@@ -1,0 +1,118 @@
+// isurface-cli ui-snapshot: the whole application window (panels and 3D view) drawn through
+// OSMesa with no X server, for tests and documentation.
+#include <imgui.h>
+#include <imgui_impl_opengl3.h>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+#include "command.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/diagnostic.h"
+#include "isurface/panels/inspector.h"
+#include "osmesa_context.h"
+
+namespace isurface::cli {
+namespace {
+
+struct SnapshotOptions {
+  std::vector<std::string> files;
+  std::string output, size = "1600x1000", color = "speed";
+  long pickLine = -1, pickSample = -1;
+};
+
+void writePng(const std::vector<unsigned char>& rgbaTopFirst, int width, int height, const std::string& path) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
+  // VTK images hold the bottom row first.
+  for (int y = 0; y < height; ++y)
+    for (int x = 0; x < width; ++x)
+      std::memcpy(&out[3 * (static_cast<std::size_t>(height - 1 - y) * width + x)],
+                  &rgbaTopFirst[4 * (static_cast<std::size_t>(y) * width + x)], 3);
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputData(image);
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                                             static_cast<std::size_t>(bytes->GetNumberOfValues())));
+}
+
+int runSnapshot(const SnapshotOptions& o) {
+  int width = 0, height = 0;
+  char extra = 0;
+  if (std::sscanf(o.size.c_str(), "%dx%d%c", &width, &height, &extra) != 2 || width < 320 || height < 240 ||
+      width > 8192 || height > 8192)
+    throw InputError(Diagnostic{"", 0, 0, "bad --size '" + o.size + "': expected WxH, at least 320x240"});
+  if (o.pickLine >= 0 && o.pickSample >= 0)
+    throw InputError(Diagnostic{"", 0, 0, "give --pick-line or --pick-sample, not both"});
+  OsMesaContext context(width, height);
+  ImGui::CreateContext();
+  ImGui::StyleColorsDark();
+  ImGuiIO& io = ImGui::GetIO();
+  io.IniFilename = nullptr;
+  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
+  io.DeltaTime = 1.0f / 30.0f;
+  ImGui_ImplOpenGL3_Init("#version 150");
+  int status = kExitOk;
+  {
+    panels::GlHooks hooks{[&context] { context.makeCurrent(); }, [&context] { return context.isCurrent(); }};
+    // Snapshots do not read or change the user's settings: the same inputs give the same picture.
+    panels::Inspector inspector(hooks, ui::Settings{});
+    auto drawFrame = [&] {
+      ImGui_ImplOpenGL3_NewFrame();
+      ImGui::NewFrame();
+      inspector.frame();
+      ImGui::Render();
+      context.clearFrame(0.08f, 0.08f, 0.1f);
+      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    };
+    for (const std::string& file : o.files) {
+      inspector.open(file);
+      inspector.waitUntilIdle();
+      drawFrame();
+      if (inspector.statusText().rfind("error:", 0) == 0) {
+        std::fprintf(stderr, "%s\n", inspector.statusText().c_str());
+        status = kExitInputError;
+      }
+    }
+    if (o.color != "speed") {
+      inspector.colourBy(o.color);
+      inspector.waitUntilIdle();
+    }
+    if (o.pickLine >= 0 && !inspector.selectLine(static_cast<std::uint32_t>(o.pickLine))) {
+      std::fprintf(stderr, "error: line %ld produced no samples\n", o.pickLine);
+      status = kExitInputError;
+    }
+    if (o.pickSample >= 0) inspector.selectSample(static_cast<std::size_t>(o.pickSample));
+    // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
+    for (int frame = 0; frame < 4; ++frame) drawFrame();
+    if (status == kExitOk) writePng(context.readPixels(), width, height, o.output);
+    std::printf("%s: %s\n", o.output.c_str(), inspector.statusText().c_str());
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui::DestroyContext();
+  return status;
+}
+
+const bool registered = registerCommand(
+    "ui-snapshot", "Draw the whole application window headless (OSMesa) to a PNG", [](CLI::App& sub) {
+      auto o = std::make_shared<SnapshotOptions>();
+      sub.add_option("files", o->files, "G-code programs and Biip dumps to open");
+      sub.add_option("-o,--output", o->output, "PNG file to write")->required();
+      sub.add_option("--size", o->size, "window size WxH")->capture_default_str();
+      sub.add_option("--color", o->color, "quantity to colour the map by")->capture_default_str();
+      sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line");
+      sub.add_option("--pick-sample", o->pickSample, "select this sample");
+      return [o] { return runSnapshot(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli

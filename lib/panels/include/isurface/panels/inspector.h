@@ -1,0 +1,51 @@
+#pragma once
+// The inspection workflow of the paper's iSurface in Dear ImGui panels: a menu and toolbar, a
+// navigation tree of open programs and their interpolation samples, the G-code text, the data
+// bar of samples, the 3D quality map and the signal curves, all following one selection.
+// The same object draws the interactive window and the headless UI snapshots.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "isurface/panels/scene_view.h"
+#include "isurface/ui/selection.h"
+#include "isurface/ui/settings.h"
+
+namespace isurface::panels {
+
+struct Document;
+
+class Inspector {
+ public:
+  Inspector(GlHooks hooks, ui::Settings settings);
+  ~Inspector();
+
+  // Opens a G-code program or a Biip dump (told apart by its first bytes). A dump joins the
+  // open program it belongs to; a program alone is simulated. The work runs in the background.
+  void open(const std::string& path);
+
+  // Draws the whole window; call between ImGui::NewFrame() and ImGui::Render().
+  void frame();
+
+  bool busy() const;
+  // Lets background work finish and takes over its results (for snapshots and tests).
+  void waitUntilIdle();
+
+  void selectSample(std::size_t sample);
+  bool selectLine(std::uint32_t line);
+  void colourBy(const std::string& quantityName);  // "speed", "accel", ...
+  const ui::Selection& selection() const;
+  std::string statusText() const;
+
+  ui::Settings& settings();
+  bool quitRequested() const;
+
+  struct State;  // shared by the panels' own sources
+
+ private:
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace isurface::panels

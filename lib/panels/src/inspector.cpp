@@ -1,0 +1,191 @@
+#include "isurface/panels/inspector.h"
+
+#include <imgui.h>
+
+#include <chrono>
+#include <cstring>
+#include <fstream>
+#include <thread>
+
+#include "inspector_state.h"
+#include "isurface/vis/quality_scene.h"
+
+namespace isurface::panels {
+
+namespace {
+
+bool looksLikeBiip(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::memcmp(magic, "BIIP", 4) == 0;
+}
+
+}  // namespace
+
+vis::QualityMapRequest Inspector::State::mapRequest() const {
+  vis::QualityMapRequest r;
+  r.quantity = settings.quantity;
+  r.colorMap = settings.colorMap;
+  r.view = settings.view;
+  if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
+  if (settings.rangeMode == 2) r.fixedRange = ValueRange{settings.fixedLow, std::max(settings.fixedHigh, settings.fixedLow)};
+  // A coarse surface keeps rotation interactive on large maps; the full one shows at rest.
+  r.coarseVertices = 150'000;
+  return r;
+}
+
+void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath) {
+  const vis::QualityMapRequest request = mapRequest();
+  auto result = std::make_shared<JobResult>();
+  pending = result;
+  const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
+  job.start(label, [result, programPath, dumpPath, request](ui::JobControl& control) {
+    result->document = loadDocument(programPath, dumpPath, request, control);
+  });
+  status = label;
+}
+
+void Inspector::State::startRecolour() {
+  Document* doc = activeDocument();
+  if (!doc || !doc->samples) return;
+  const vis::QualityMapRequest request = mapRequest();
+  auto result = std::make_shared<JobResult>();
+  pending = result;
+  std::shared_ptr<const Trajectory> samples = doc->samples;
+  std::shared_ptr<const Program> program = doc->program;
+  job.start("colouring by " + std::string(quantityInfo(request.quantity).label),
+            [result, samples, program, request](ui::JobControl& control) {
+              control.progress(0.1);
+              result->map = vis::buildQualityMap(*samples, program.get(), request);
+              control.progress(0.7);
+              result->scene = std::make_shared<vis::QualityScene>(result->map.data, result->map.style);
+              control.progress(1.0);
+            });
+}
+
+void Inspector::State::takeJobResult() {
+  if (!job.takeFinished()) return;
+  std::shared_ptr<JobResult> result = std::move(pending);
+  if (job.wasCancelled()) {
+    status = job.label() + ": cancelled";
+    return;
+  }
+  if (!job.error().empty()) {
+    status = "error: " + job.error();
+    return;
+  }
+  if (!result) return;
+  if (result->document) {
+    Document& doc = *result->document;
+    status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
+    for (const std::string& w : doc.warnings) status += " | " + w;
+    documents.push_back(std::move(result->document));
+    activate(documents.size() - 1);
+  } else if (result->scene) {
+    Document* doc = activeDocument();
+    if (!doc) return;
+    doc->map = std::move(result->map);
+    doc->scene = result->scene;
+    view.setScene(doc->scene);
+    doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+    shownGeneration = ~std::uint64_t(0);
+    status = doc->name + ": coloured by " + quantityInfo(settings.quantity).label;
+  }
+}
+
+void Inspector::State::activate(std::size_t index) {
+  active = index;
+  Document* doc = activeDocument();
+  selection.setTrajectory(doc ? doc->samples.get() : nullptr);
+  selection.clear();
+  view.setScene(doc ? doc->scene : nullptr);
+  if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  curveFirst = 0;
+  curveLast = doc && doc->samples ? doc->samples->size() : 0;
+  shownGeneration = ~std::uint64_t(0);
+}
+
+void Inspector::State::syncHighlight() {
+  Document* doc = activeDocument();
+  const ui::Selection& sel = selection.current();
+  if (!doc || !doc->scene || !doc->samples || sel.generation == shownGeneration) return;
+  shownGeneration = sel.generation;
+  std::vector<Vec3> line, sample;
+  const Trajectory& t = *doc->samples;
+  if (sel.line) {
+    for (std::size_t i = 0; i < t.size(); ++i)
+      if (t.line[i] == *sel.line && t.commanded(i).allFinite()) line.push_back(t.commanded(i));
+  }
+  if (sel.sample && *sel.sample < t.size()) sample.push_back(t.commanded(*sel.sample));
+  doc->scene->setHighlight(line, sample);
+}
+
+Inspector::Inspector(GlHooks hooks, ui::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {
+  state_->persistent = std::move(settings);
+  if (const auto q = parseQuantity(state_->persistent.quantity)) state_->settings.quantity = *q;
+  state_->settings.colorMap = state_->persistent.colorMap;
+}
+
+Inspector::~Inspector() = default;
+
+void Inspector::State::openFile(const std::string& path) {
+  persistent.addRecent(path);
+  if (looksLikeBiip(path)) {
+    Document* doc = activeDocument();
+    startLoad(doc && doc->dumpPath.empty() ? doc->programPath : "", path);
+  } else {
+    startLoad(path, "");
+  }
+}
+
+void Inspector::open(const std::string& path) { state_->openFile(path); }
+
+void Inspector::frame() {
+  State& s = *state_;
+  s.takeJobResult();
+  s.syncHighlight();
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float width = viewport->Size.x, height = viewport->Size.y;
+  const float menuHeight = ImGui::GetFrameHeight();
+  const float toolbarHeight = ImGui::GetFrameHeightWithSpacing() + 10;
+  const float statusHeight = ImGui::GetFrameHeightWithSpacing() + 8;
+  const float top = menuHeight + toolbarHeight, bottom = height - statusHeight;
+  const float left = width * 0.18f, right = width * 0.70f;
+  const float middle = top + (bottom - top) * 0.64f;
+
+  drawMenuAndToolbar(s, menuHeight, width);
+  drawNavigationTree(s, 0, top, left, (bottom - top) * 0.5f);
+  drawColourControls(s, 0, top + (bottom - top) * 0.5f, left, (bottom - top) * 0.5f);
+  drawSceneView(s, left, top, right - left, middle - top);
+  drawSignalCurves(s, left, middle, right - left, bottom - middle);
+  drawGcodePane(s, right, top, width - right, (bottom - top) * 0.45f);
+  drawDataBar(s, right, top + (bottom - top) * 0.45f, width - right, (bottom - top) * 0.55f);
+  drawStatusBar(s, bottom, width);
+  drawDialogs(s);
+}
+
+bool Inspector::busy() const { return state_->job.running(); }
+
+void Inspector::waitUntilIdle() {
+  while (state_->job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  state_->takeJobResult();
+}
+
+void Inspector::selectSample(std::size_t sample) { state_->selection.selectSample(sample); }
+bool Inspector::selectLine(std::uint32_t line) { return state_->selection.selectLine(line); }
+
+void Inspector::colourBy(const std::string& quantityName) {
+  const auto q = parseQuantity(quantityName);
+  if (!q) throw InputError(Diagnostic{"", 0, 0, "unknown quantity '" + quantityName + "'"});
+  state_->settings.quantity = *q;
+  state_->persistent.quantity = quantityName;
+  state_->startRecolour();
+}
+
+const ui::Selection& Inspector::selection() const { return state_->selection.current(); }
+std::string Inspector::statusText() const { return state_->status; }
+ui::Settings& Inspector::settings() { return state_->persistent; }
+bool Inspector::quitRequested() const { return state_->quit; }
+
+}  // namespace isurface::panels

@@ -1,0 +1,107 @@
+#pragma once
+// What the inspector's panels share: the open documents, the selection, the view settings and
+// the background job. Internal to the panels library.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "isurface/core/program.h"
+#include "isurface/core/quantities.h"
+#include "isurface/core/trajectory.h"
+#include "isurface/panels/inspector.h"
+#include "isurface/panels/scene_view.h"
+#include "isurface/ui/background_job.h"
+#include "isurface/ui/signal_pyramid.h"
+#include "isurface/ui/text_lines.h"
+#include "isurface/vis/quality_map.h"
+
+namespace isurface::panels {
+
+// The signal curves under the 3D view.
+struct Curve {
+  std::string label, unit;
+  ui::SignalPyramid values;
+};
+
+// One program and its interpolation samples (simulated or read from a dump).
+struct Document {
+  std::string name;
+  std::string programPath, dumpPath;
+  std::unique_ptr<ui::TextLines> text;
+  std::shared_ptr<const Program> program;
+  std::shared_ptr<const Trajectory> samples;
+  vis::QualityMap map;
+  std::shared_ptr<vis::QualityScene> scene;
+  std::vector<Curve> curves;  // speed, acceleration, jerk, then any extra channel
+  std::vector<std::string> warnings;
+  bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
+};
+
+struct ViewSettings {
+  Quantity quantity = Quantity::Speed;
+  std::string colorMap = "rainbow";
+  int rangeMode = 0;  // 0 percentile 1-99 %, 1 full extent, 2 fixed
+  float fixedLow = 0, fixedHigh = 3000;
+  vis::ViewDirection view = vis::ViewDirection::Iso;
+};
+
+// What a background job hands over to the UI thread when it ends.
+struct JobResult {
+  std::unique_ptr<Document> document;        // a newly loaded document
+  std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
+  vis::QualityMap map;
+  std::vector<std::string> messages;
+};
+
+struct Inspector::State {
+  explicit State(GlHooks hooks) : view(std::move(hooks)) {}
+
+  SceneView view;
+  std::vector<std::unique_ptr<Document>> documents;
+  std::size_t active = 0;
+  ui::SelectionModel selection;
+  std::uint64_t shownGeneration = ~std::uint64_t(0);
+  ViewSettings settings;
+  ui::Settings persistent;
+  ui::BackgroundJob job;
+  std::shared_ptr<JobResult> pending;  // written by the job, taken on the UI thread
+  std::string status = "Open a G-code program or a Biip dump (File > Open, or drop it on the window).";
+  bool quit = false;
+  bool openDialog = false, locateDialog = false;
+  char openPath[1024] = "";
+  std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
+  bool rectangleZoom = false;
+  // Mouse in the 3D view: where the press began (screen pixels) and whether it began there.
+  float pressX = 0, pressY = 0;
+  bool pressedInView = false;
+  int extraCurve = 0;
+  int locateSample = 0, locateLine = 1;  // the locate dialog's fields  // which extra channel the fourth curve shows
+  std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
+  // Opens a program or a dump: a dump joins the active program when that has none yet.
+  void openFile(const std::string& path);
+
+  Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
+  vis::QualityMapRequest mapRequest() const;
+  void startLoad(const std::string& programPath, const std::string& dumpPath);
+  void startRecolour();
+  void takeJobResult();
+  void activate(std::size_t index);
+  void syncHighlight();
+};
+
+// The panels, each drawing one window of the layout.
+void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width);
+void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h);
+void drawColourControls(Inspector::State& s, float x, float y, float w, float h);
+void drawSceneView(Inspector::State& s, float x, float y, float w, float h);
+void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h);
+void drawGcodePane(Inspector::State& s, float x, float y, float w, float h);
+void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
+void drawStatusBar(Inspector::State& s, float y, float width);
+void drawDialogs(Inspector::State& s);
+
+// Loads a document on the job's thread.
+std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
+                                       const vis::QualityMapRequest& request, ui::JobControl& control);
+
+}  // namespace isurface::panels

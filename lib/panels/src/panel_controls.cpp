@@ -1,0 +1,253 @@
+// Menu, toolbar, navigation tree, colour controls, status bar and dialogs.
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "inspector_state.h"
+#include "isurface/vis/color_map.h"
+#include "isurface/vis/quality_scene.h"
+
+namespace isurface::panels {
+
+namespace {
+
+constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+
+// A key pressed while no text field has the keyboard (letters are their upper-case ASCII code
+// in both hosts).
+bool shortcut(int key, bool ctrl = false) {
+  const ImGuiIO& io = ImGui::GetIO();
+  return !io.WantTextInput && io.KeyCtrl == ctrl && ImGui::IsKeyPressed(key, false);
+}
+
+bool toolButton(const char* label, const char* tip) {
+  const bool pressed = ImGui::Button(label);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
+  ImGui::SameLine();
+  return pressed;
+}
+
+void setView(Inspector::State& s, vis::ViewDirection view) {
+  s.settings.view = view;
+  s.view.setView(view);
+}
+
+bool isProgramOrDump(const std::filesystem::path& p) {
+  const std::string ext = p.extension().string();
+  for (const char* known : {".nc", ".ngc", ".tap", ".gcode", ".cnc", ".biip", ".dat"})
+    if (ext == known) return true;
+  return false;
+}
+
+}  // namespace
+
+void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
+  bool simulate = false, locate = false;
+  if (ImGui::BeginMainMenuBar()) {
+    if (ImGui::BeginMenu("File")) {
+      if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.openDialog = true;
+      if (ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty())) {
+        for (const std::string& path : s.persistent.recentFiles)
+          if (ImGui::MenuItem(path.c_str())) std::snprintf(s.openPath, sizeof s.openPath, "%s", path.c_str()), s.openDialog = true;
+        ImGui::EndMenu();
+      }
+      if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.quit = true;
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("View")) {
+      if (ImGui::MenuItem("Isometric", "I")) setView(s, vis::ViewDirection::Iso);
+      if (ImGui::MenuItem("Top", "T")) setView(s, vis::ViewDirection::Top);
+      if (ImGui::MenuItem("Front", "F")) setView(s, vis::ViewDirection::Front);
+      if (ImGui::MenuItem("Left", "L")) setView(s, vis::ViewDirection::Left);
+      if (ImGui::MenuItem("Reset", "R")) setView(s, s.settings.view);
+      ImGui::MenuItem("Rectangle zoom", "Z", &s.rectangleZoom);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Colour by")) {
+      for (const QuantityInfo& q : quantityInfos())
+        if (ImGui::MenuItem(q.label, nullptr, s.settings.quantity == q.quantity)) {
+          s.settings.quantity = q.quantity;
+          s.persistent.quantity = q.name;
+          s.startRecolour();
+        }
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Tools")) {
+      if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
+      if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
+      ImGui::EndMenu();
+    }
+    ImGui::EndMainMenuBar();
+  }
+  ImGui::SetNextWindowPos(ImVec2(0, toolbarTop));
+  ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetFrameHeightWithSpacing() + 10));
+  ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  if (toolButton("Open", "Open a G-code program or a Biip dump (O)") || shortcut('O')) s.openDialog = true;
+  if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
+  if (toolButton("Iso", "Isometric view (I)") || shortcut('I')) setView(s, vis::ViewDirection::Iso);
+  if (toolButton("Top", "Top view (T)") || shortcut('T')) setView(s, vis::ViewDirection::Top);
+  if (toolButton("Front", "Front view (F)") || shortcut('F')) setView(s, vis::ViewDirection::Front);
+  if (toolButton("Left", "Left view (L)") || shortcut('L')) setView(s, vis::ViewDirection::Left);
+  if (toolButton("Reset", "Reset the camera (R)") || shortcut('R')) setView(s, s.settings.view);
+  if (toolButton(s.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
+    s.rectangleZoom = !s.rectangleZoom;
+  if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
+  ImGui::End();
+  if (shortcut('Q', true)) s.quit = true;
+  if (locate) s.locateDialog = true;
+  if (simulate) {
+    if (Document* doc = s.activeDocument(); doc && !doc->programPath.empty()) s.startLoad(doc->programPath, "");
+  }
+}
+
+void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Navigation", nullptr, kPanel);
+  for (std::size_t i = 0; i < s.documents.size(); ++i) {
+    Document& doc = *s.documents[i];
+    ImGui::PushID(static_cast<int>(i));
+    const ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | (i == s.active ? ImGuiTreeNodeFlags_Selected : 0);
+    const bool open = ImGui::TreeNodeEx(doc.name.c_str(), flags);
+    if (ImGui::IsItemClicked() && i != s.active) s.activate(i);
+    if (open) {
+      bool changed = false;
+      if (doc.program) {
+        changed |= ImGui::Checkbox("##program", &doc.showToolpath);
+        ImGui::SameLine();
+        ImGui::Text("Programmed trajectory (%zu moves)", doc.program->moves.size());
+      }
+      if (doc.samples) {
+        changed |= ImGui::Checkbox("##surface", &doc.showSurface);
+        ImGui::SameLine();
+        ImGui::Text("Interpolation trajectory (%zu samples)", doc.samples->size());
+        ImGui::Indent();
+        changed |= ImGui::Checkbox("points", &doc.showPoints);
+        ImGui::Unindent();
+      }
+      if (changed && doc.scene) doc.scene->setVisibility(doc.showSurface, doc.showToolpath, doc.showPoints);
+      ImGui::TreePop();
+    }
+    ImGui::PopID();
+  }
+  ImGui::End();
+}
+
+void drawColourControls(Inspector::State& s, float x, float y, float w, float h) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin("Colour", nullptr, kPanel);
+  bool recolour = false;
+  const QuantityInfo& current = quantityInfo(s.settings.quantity);
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##quantity", current.label)) {
+    for (const QuantityInfo& q : quantityInfos())
+      if (ImGui::Selectable(q.label, q.quantity == s.settings.quantity)) {
+        s.settings.quantity = q.quantity;
+        s.persistent.quantity = q.name;
+        recolour = true;
+      }
+    ImGui::EndCombo();
+  }
+  ImGui::Text("unit: %s", current.unit);
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
+    for (const std::string& name : vis::colorMapNames())
+      if (ImGui::Selectable(name.c_str(), name == s.settings.colorMap)) {
+        s.settings.colorMap = s.persistent.colorMap = name;
+        recolour = true;
+      }
+    ImGui::EndCombo();
+  }
+  recolour |= ImGui::RadioButton("1-99 %", &s.settings.rangeMode, 0);
+  ImGui::SameLine();
+  recolour |= ImGui::RadioButton("full", &s.settings.rangeMode, 1);
+  ImGui::SameLine();
+  recolour |= ImGui::RadioButton("fixed", &s.settings.rangeMode, 2);
+  if (s.settings.rangeMode == 2) {
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputFloat("##low", &s.settings.fixedLow);
+    ImGui::SetNextItemWidth(-1);
+    ImGui::InputFloat("##high", &s.settings.fixedHigh);
+    recolour |= ImGui::Button("Apply range");
+  }
+  if (Document* doc = s.activeDocument(); doc && doc->scene) {
+    ImGui::Separator();
+    ImGui::Text("range %.5g .. %.5g", doc->map.style.range.lo, doc->map.style.range.hi);
+    ImGui::Text("%zu passes, %s", doc->map.passes.passes.size(), pathPatternName(doc->map.passes.pattern));
+    bool visibility = ImGui::Checkbox("surface", &doc->showSurface);
+    ImGui::SameLine();
+    visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);
+    ImGui::SameLine();
+    visibility |= ImGui::Checkbox("points", &doc->showPoints);
+    if (visibility) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  }
+  if (recolour) s.startRecolour();
+  ImGui::End();
+}
+
+void drawStatusBar(Inspector::State& s, float y, float width) {
+  ImGui::SetNextWindowPos(ImVec2(0, y));
+  ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetIO().DisplaySize.y - y));
+  ImGui::Begin("##status", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
+  if (s.job.running()) {
+    ImGui::ProgressBar(static_cast<float>(s.job.progress()), ImVec2(width * 0.3f, 0), s.job.label().c_str());
+    ImGui::SameLine();
+    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) s.job.cancel();
+    ImGui::SameLine();
+  }
+  ImGui::TextUnformatted(s.status.c_str());
+  ImGui::End();
+}
+
+void drawDialogs(Inspector::State& s) {
+  if (s.openDialog) ImGui::OpenPopup("Open file");
+  s.openDialog = false;
+  if (ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::SetNextItemWidth(560);
+    const bool enter = ImGui::InputText("##path", s.openPath, sizeof s.openPath, ImGuiInputTextFlags_EnterReturnsTrue);
+    // The folder of the typed path, for picking a file by clicking.
+    std::error_code error;
+    std::filesystem::path folder = std::filesystem::path(s.openPath).parent_path();
+    if (folder.empty()) folder = ".";
+    ImGui::BeginChild("files", ImVec2(560, 220), true);
+    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
+      if (!entry.is_regular_file(error) || !isProgramOrDump(entry.path())) continue;
+      if (ImGui::Selectable(entry.path().filename().string().c_str()))
+        std::snprintf(s.openPath, sizeof s.openPath, "%s", entry.path().string().c_str());
+    }
+    ImGui::EndChild();
+    if (ImGui::Button("Open") || enter) {
+      if (s.openPath[0]) {
+        s.persistent.addRecent(s.openPath);
+        const std::string path = s.openPath;
+        ImGui::CloseCurrentPopup();
+        ImGui::EndPopup();
+        s.openFile(path);
+        return;
+      }
+    }
+    ImGui::SameLine();
+    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+
+  if (s.locateDialog) ImGui::OpenPopup("Locate");
+  s.locateDialog = false;
+  if (ImGui::BeginPopupModal("Locate", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
+    ImGui::InputInt("sample", &s.locateSample);
+    ImGui::SameLine();
+    if (ImGui::Button("Go to sample")) s.selection.selectSample(static_cast<std::size_t>(std::max(s.locateSample, 0)));
+    ImGui::InputInt("G-code line", &s.locateLine);
+    ImGui::SameLine();
+    if (ImGui::Button("Go to line")) {
+      if (!s.selection.selectLine(static_cast<std::uint32_t>(std::max(s.locateLine, 1))))
+        s.status = "line " + std::to_string(s.locateLine) + " produced no samples";
+    }
+    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+  }
+}
+
+}  // namespace isurface::panels

@@ -1,0 +1,174 @@
+#include "isurface/panels/scene_view.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkCamera.h>
+#include <vtkCellPicker.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkGenericRenderWindowInteractor.h>
+#include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkOpenGLFramebufferObject.h>
+#include <vtkOpenGLState.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+#include <vtkRendererCollection.h>
+#include <vtkStaticCellLocator.h>
+#include <vtkTextureObject.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "isurface/vis/quality_scene.h"
+
+namespace isurface::panels {
+
+struct SceneView::Impl {
+  GlHooks hooks;
+  vtkSmartPointer<vtkGenericOpenGLRenderWindow> window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor =
+      vtkSmartPointer<vtkGenericRenderWindowInteractor>::New();
+  vtkSmartPointer<vtkInteractorStyleTrackballCamera> style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
+  vtkSmartPointer<vtkCellPicker> picker = vtkSmartPointer<vtkCellPicker>::New();
+  vtkSmartPointer<vtkStaticCellLocator> locator;
+  vtkRenderer* attached = nullptr;
+  int width = 0, height = 0;
+  bool initialized = false;
+};
+
+SceneView::SceneView(GlHooks hooks) : impl_(std::make_unique<Impl>()) {
+  impl_->hooks = std::move(hooks);
+  vtkGenericOpenGLRenderWindow* window = impl_->window;
+  window->SetMultiSamples(0);
+  // The frame stays in VTK's framebuffer; ImGui shows its colour texture.
+  window->SetFrameBlitModeToNoBlit();
+  auto makeCurrent = vtkSmartPointer<vtkCallbackCommand>::New();
+  makeCurrent->SetClientData(impl_.get());
+  makeCurrent->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+    auto* impl = static_cast<Impl*>(client);
+    if (!impl->hooks.isCurrent()) impl->hooks.makeCurrent();
+  });
+  auto isCurrent = vtkSmartPointer<vtkCallbackCommand>::New();
+  isCurrent->SetClientData(impl_.get());
+  isCurrent->SetCallback([](vtkObject*, unsigned long, void* client, void* answer) {
+    *static_cast<bool*>(answer) = static_cast<Impl*>(client)->hooks.isCurrent();
+  });
+  window->AddObserver(vtkCommand::WindowMakeCurrentEvent, makeCurrent);
+  window->AddObserver(vtkCommand::WindowIsCurrentEvent, isCurrent);
+  impl_->interactor->SetRenderWindow(window);
+  impl_->interactor->EnableRenderOff();  // the host renders once a frame
+  impl_->interactor->SetInteractorStyle(impl_->style);
+  impl_->picker->SetTolerance(0.0005);
+}
+
+SceneView::~SceneView() {
+  if (impl_->initialized) {
+    impl_->hooks.makeCurrent();
+    if (impl_->attached) impl_->window->GetRenderers()->RemoveAllItems();
+    impl_->window->Finalize();
+  }
+}
+
+void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
+  vtkGenericOpenGLRenderWindow* window = impl_->window;
+  window->GetRenderers()->RemoveAllItems();
+  impl_->attached = nullptr;
+  impl_->locator = nullptr;
+  scene_ = std::move(scene);
+  if (!scene_) return;
+  scene_->attachTo(window);
+  impl_->attached = scene_->renderer();
+  impl_->interactor->GetInteractorStyle()->SetDefaultRenderer(scene_->renderer());
+  // A static cell locator makes a pick on a million triangles take well under a millisecond.
+  impl_->locator = vtkSmartPointer<vtkStaticCellLocator>::New();
+  impl_->locator->SetDataSet(scene_->surface());
+  impl_->locator->BuildLocator();
+  impl_->picker->InitializePickList();
+  impl_->picker->AddLocator(impl_->locator);
+}
+
+void SceneView::setView(vis::ViewDirection view) {
+  if (scene_) scene_->setView(view);
+}
+
+unsigned int SceneView::render(int width, int height) {
+  if (!scene_ || width < 8 || height < 8) return 0;
+  Impl& d = *impl_;
+  d.hooks.makeCurrent();
+  if (!d.initialized) {
+    d.window->InitializeFromCurrentContext();
+    d.initialized = true;
+  }
+  if (width != d.width || height != d.height) {
+    d.width = width;
+    d.height = height;
+    d.window->SetSize(width, height);
+    d.interactor->SetSize(width, height);
+  }
+  scene_->useCoarseSurface(dragging_);
+  scene_->syncAxes();
+  // ImGui changes GL state behind VTK's back: let VTK start from what is really bound.
+  d.window->GetState()->Reset();
+  d.window->GetState()->Push();
+  d.window->Render();
+  d.window->GetState()->Pop();
+  vtkOpenGLFramebufferObject* frame = d.window->GetDisplayFramebuffer();
+  if (!frame) return 0;
+  vtkTextureObject* texture = frame->GetColorAttachmentAsTextureObject(0);
+  return texture ? texture->GetHandle() : 0;
+}
+
+void SceneView::mouseMove(double x, double y) {
+  impl_->interactor->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  impl_->interactor->MouseMoveEvent();
+}
+
+void SceneView::mouseButton(int button, bool pressed, double x, double y) {
+  vtkGenericRenderWindowInteractor* i = impl_->interactor;
+  i->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  dragging_ = pressed;
+  switch (button) {
+    case 0: pressed ? i->LeftButtonPressEvent() : i->LeftButtonReleaseEvent(); break;
+    case 1: pressed ? i->RightButtonPressEvent() : i->RightButtonReleaseEvent(); break;
+    default: pressed ? i->MiddleButtonPressEvent() : i->MiddleButtonReleaseEvent(); break;
+  }
+}
+
+void SceneView::mouseWheel(double steps, double x, double y) {
+  vtkGenericRenderWindowInteractor* i = impl_->interactor;
+  i->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  if (steps > 0) i->MouseWheelForwardEvent();
+  else if (steps < 0) i->MouseWheelBackwardEvent();
+}
+
+void SceneView::zoomToRectangle(double x0, double y0, double x1, double y1) {
+  if (!scene_ || impl_->width <= 0) return;
+  vtkRenderer* renderer = scene_->renderer();
+  vtkCamera* camera = renderer->GetActiveCamera();
+  const double w = std::abs(x1 - x0), h = std::abs(y1 - y0);
+  if (w < 4 || h < 4) return;
+  // Move the focal point to the rectangle's centre, then scale the view to fit it.
+  const double cx = 0.5 * (x0 + x1), cy = impl_->height - 0.5 * (y0 + y1);
+  renderer->SetDisplayPoint(cx, cy, 0.5);
+  renderer->DisplayToWorld();
+  double world[4];
+  renderer->GetWorldPoint(world);
+  if (world[3] != 0)
+    for (int k = 0; k < 3; ++k) world[k] /= world[3];
+  double focal[3], position[3];
+  camera->GetFocalPoint(focal);
+  camera->GetPosition(position);
+  const double shift[3] = {world[0] - focal[0], world[1] - focal[1], world[2] - focal[2]};
+  camera->SetFocalPoint(world[0], world[1], world[2]);
+  camera->SetPosition(position[0] + shift[0], position[1] + shift[1], position[2] + shift[2]);
+  camera->Zoom(std::min(impl_->width / w, impl_->height / h));
+}
+
+std::optional<Vec3> SceneView::pick(double x, double y) {
+  if (!scene_ || impl_->height <= 0) return std::nullopt;
+  if (!impl_->picker->Pick(x, impl_->height - y, 0, scene_->renderer())) return std::nullopt;
+  if (impl_->picker->GetCellId() < 0) return std::nullopt;
+  double p[3];
+  impl_->picker->GetPickPosition(p);
+  return Vec3(p[0], p[1], p[2]);
+}
+
+}  // namespace isurface::panels

@@ -1,0 +1,96 @@
+// The application's selection sync through the inspector itself (no window needed: its panels
+// are only drawn by frame()), and the whole UI drawn headless against a reference picture.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+
+#include "isurface/panels/inspector.h"
+#include "test_support.h"
+#include "vis/image_compare.h"
+
+using namespace isurface;
+using namespace isurface::test;
+
+namespace {
+
+panels::GlHooks noContext() {
+  return {[] {}, [] { return false; }};
+}
+
+}  // namespace
+
+TEST(inspector, PickedLineSelectsItsFirstSampleAndBack) {
+  panels::Inspector inspector(noContext(), ui::Settings{});
+  inspector.open(sourcePath("samples/wuzhishan.nc"));
+  inspector.waitUntilIdle();
+  ASSERT_NE(inspector.statusText().find("samples"), std::string::npos) << inspector.statusText();
+  ASSERT_TRUE(inspector.selectLine(2316));
+  const ui::Selection first = inspector.selection();
+  ASSERT_TRUE(first.sample.has_value());
+  EXPECT_EQ(*first.line, 2316u);
+  // The sample's own line is the same line, and it is the first such sample.
+  inspector.selectSample(*first.sample + 1);
+  EXPECT_EQ(*inspector.selection().line, 2316u);
+  EXPECT_GT(inspector.selection().generation, first.generation);
+  inspector.selectSample(*first.sample - 1);
+  EXPECT_NE(*inspector.selection().line, 2316u);
+  // A comment line produced no sample: the line is selected, no sample.
+  EXPECT_FALSE(inspector.selectLine(2));
+  EXPECT_EQ(*inspector.selection().line, 2u);
+  EXPECT_FALSE(inspector.selection().sample.has_value());
+}
+
+TEST(inspector, ADumpJoinsItsProgramAndBadFilesReportErrors) {
+  panels::Inspector inspector(noContext(), ui::Settings{});
+  const std::string dump = (scratchDir() / "wz.biip").string();
+  ASSERT_EQ(runCli("simulate " + sourcePath("samples/wuzhishan.nc") + " -o " + dump).exitCode, 0);
+  inspector.open(sourcePath("samples/wuzhishan.nc"));
+  inspector.waitUntilIdle();
+  inspector.open(dump);
+  inspector.waitUntilIdle();
+  EXPECT_NE(inspector.statusText().find("wuzhishan"), std::string::npos) << inspector.statusText();
+  const std::string broken = (scratchDir() / "broken.nc").string();
+  std::ofstream(broken) << "G1 X1..2 F100\n";
+  inspector.open(broken);
+  inspector.waitUntilIdle();
+  EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
+  EXPECT_NE(inspector.statusText().find("broken.nc:1"), std::string::npos);
+}
+
+TEST(uiSnapshot, WholeWindowWithAPickedLineMatchesItsReference) {
+  const std::string out = (scratchDir() / "ui.png").string();
+  const CommandResult r = runCli("ui-snapshot " + sourcePath("samples/transition-surface.nc") +
+                                 " --pick-line 2000 --size 1280x800 -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string reference = sourcePath("tests/data/reference/ui-transition-surface-line2000.png");
+  if (std::getenv("ISURFACE_UPDATE_REFERENCES")) {
+    std::filesystem::copy_file(out, reference, std::filesystem::copy_options::overwrite_existing);
+    GTEST_SKIP() << "reference rewritten: " << reference;
+  }
+  const ImageDifference d = compareImages(readPng(reference), readPng(out));
+  EXPECT_TRUE(matches(d)) << "worst block " << d.worstBlock << ", mean " << d.meanDifference << " (" << out << ")";
+}
+
+TEST(uiSnapshot, BadInputsExitWithTwoAndWriteNothing) {
+  const std::string out = (scratchDir() / "never-ui.png").string();
+  EXPECT_EQ(runCli("ui-snapshot /nonexistent.nc -o " + out).exitCode, 2);
+  EXPECT_EQ(runCli("ui-snapshot " + sourcePath("samples/wuzhishan.nc") + " --pick-line 3 -o " + out).exitCode, 2);
+  EXPECT_EQ(runCli("ui-snapshot --size 10x10 -o " + out).exitCode, 2);
+  EXPECT_FALSE(fileExists(out));
+}
+
+// The real window, under a virtual X server when the machine has one.
+TEST(window, StartsDrawsAndQuitsUnderXvfb) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string home = (scratchDir() / "home").string();
+  std::filesystem::create_directories(home);
+  const std::string command = "HOME=" + home + " timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' " +
+                              std::string(ISURFACE_GUI) + " --exit-after-frames 20 " +
+                              sourcePath("samples/wuzhishan.nc") + " > " + home + "/log 2>&1";
+  const int status = std::system(command.c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 0) << readFile(home + "/log");
+  // It remembers what it opened.
+  EXPECT_NE(readFile(home + "/.config/isurface/settings.json").find("wuzhishan.nc"), std::string::npos);
+}
