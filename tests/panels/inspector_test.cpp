@@ -51,6 +51,8 @@ TEST(inspector, ADumpJoinsItsProgramAndBadFilesReportErrors) {
   inspector.open(dump);
   inspector.waitUntilIdle();
   EXPECT_NE(inspector.statusText().find("wuzhishan"), std::string::npos) << inspector.statusText();
+  EXPECT_EQ(inspector.documentCount(), 1u);  // the dump joined its program
+  ASSERT_TRUE(inspector.selectLine(2316));   // and its samples carry the program's lines
   const std::string broken = (scratchDir() / "broken.nc").string();
   std::ofstream(broken) << "G1 X1..2 F100\n";
   inspector.open(broken);

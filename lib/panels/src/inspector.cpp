@@ -35,9 +35,10 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   return r;
 }
 
-void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath) {
+void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces) {
   const vis::QualityMapRequest request = mapRequest();
   auto result = std::make_shared<JobResult>();
+  result->replaces = replaces;
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
   job.start(label, [result, programPath, dumpPath, request](ui::JobControl& control) {
@@ -80,8 +81,13 @@ void Inspector::State::takeJobResult() {
     Document& doc = *result->document;
     status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
     for (const std::string& w : doc.warnings) status += " | " + w;
-    documents.push_back(std::move(result->document));
-    activate(documents.size() - 1);
+    if (result->replaces < documents.size()) {
+      documents[result->replaces] = std::move(result->document);
+      activate(result->replaces);
+    } else {
+      documents.push_back(std::move(result->document));
+      activate(documents.size() - 1);
+    }
   } else if (result->scene) {
     Document* doc = activeDocument();
     if (!doc) return;
@@ -132,8 +138,10 @@ Inspector::~Inspector() = default;
 void Inspector::State::openFile(const std::string& path) {
   persistent.addRecent(path);
   if (looksLikeBiip(path)) {
+    // A dump joins the active program when that has no dump of its own yet.
     Document* doc = activeDocument();
-    startLoad(doc && doc->dumpPath.empty() ? doc->programPath : "", path);
+    if (doc && doc->dumpPath.empty() && !doc->programPath.empty()) startLoad(doc->programPath, path, active);
+    else startLoad("", path);
   } else {
     startLoad(path, "");
   }
@@ -166,6 +174,7 @@ void Inspector::frame() {
 }
 
 bool Inspector::busy() const { return state_->job.running(); }
+std::size_t Inspector::documentCount() const { return state_->documents.size(); }
 
 void Inspector::waitUntilIdle() {
   while (state_->job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));

@@ -48,6 +48,7 @@ struct ViewSettings {
 // What a background job hands over to the UI thread when it ends.
 struct JobResult {
   std::unique_ptr<Document> document;        // a newly loaded document
+  std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
   vis::QualityMap map;
   std::vector<std::string> messages;
@@ -82,7 +83,7 @@ struct Inspector::State {
 
   Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
   vis::QualityMapRequest mapRequest() const;
-  void startLoad(const std::string& programPath, const std::string& dumpPath);
+  void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
   void takeJobResult();
   void activate(std::size_t index);

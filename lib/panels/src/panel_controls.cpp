@@ -97,7 +97,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (shortcut('Q', true)) s.quit = true;
   if (locate) s.locateDialog = true;
   if (simulate) {
-    if (Document* doc = s.activeDocument(); doc && !doc->programPath.empty()) s.startLoad(doc->programPath, "");
+    if (Document* doc = s.activeDocument(); doc && !doc->programPath.empty()) s.startLoad(doc->programPath, "", s.active);
   }
 }
 

@@ -4,6 +4,7 @@
 #include <imgui.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "inspector_state.h"
 #include "isurface/vis/quality_scene.h"
@@ -27,6 +28,21 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
     draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+    // The picked sample's values, as the paper's window shows them (line, point, speed).
+    const ui::Selection& sel = s.selection.current();
+    Document* doc = s.activeDocument();
+    if (doc && doc->samples && sel.sample && *sel.sample < doc->samples->size() && doc->curves.size() >= 3) {
+      const std::size_t k = *sel.sample;
+      const Trajectory& t = *doc->samples;
+      char text[256];
+      std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.4f  Y %.4f  Z %.4f mm\n"
+                    "v %.1f mm/min   a %.1f mm/s^2   j %.0f mm/s^3", k, t.line[k], t.time[k], t.x[k], t.y[k], t.z[k],
+                    doc->curves[0].values.value(k), doc->curves[1].values.value(k), doc->curves[2].values.value(k));
+      const ImVec2 at(origin.x + 10, origin.y + size.y - 4 * ImGui::GetTextLineHeightWithSpacing());
+      const ImVec2 extent = ImGui::CalcTextSize(text);
+      draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3), IM_COL32(0, 0, 0, 150), 3);
+      draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
+    }
   } else {
     ImGui::Dummy(size);
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 20, origin.y + 20));

@@ -30,6 +30,7 @@ class Inspector {
   void frame();
 
   bool busy() const;
+  std::size_t documentCount() const;
   // Lets background work finish and takes over its results (for snapshots and tests).
   void waitUntilIdle();
 
