@@ -1,7 +1,5 @@
 // isurface-cli ui-snapshot: the whole application window (panels and 3D view) drawn through
 // OSMesa with no X server, for tests and documentation.
-#include <imgui.h>
-#include <imgui_impl_opengl3.h>
 #include <vtkImageData.h>
 #include <vtkPNGWriter.h>
 #include <vtkSmartPointer.h>
@@ -15,7 +13,7 @@
 #include "isurface/core/atomic_file.h"
 #include "isurface/core/diagnostic.h"
 #include "isurface/panels/inspector.h"
-#include "osmesa_context.h"
+#include "headless_ui.h"
 
 namespace isurface::cli {
 namespace {
@@ -53,52 +51,32 @@ int runSnapshot(const SnapshotOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "bad --size '" + o.size + "': expected WxH, at least 320x240"});
   if (o.pickLine >= 0 && o.pickSample >= 0)
     throw InputError(Diagnostic{"", 0, 0, "give --pick-line or --pick-sample, not both"});
-  OsMesaContext context(width, height);
-  ImGui::CreateContext();
-  ImGui::StyleColorsDark();
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
-  io.DeltaTime = 1.0f / 30.0f;
-  ImGui_ImplOpenGL3_Init("#version 150");
   int status = kExitOk;
-  {
-    panels::GlHooks hooks{[&context] { context.makeCurrent(); }, [&context] { return context.isCurrent(); }};
-    // Snapshots do not read or change the user's settings: the same inputs give the same picture.
-    panels::Inspector inspector(hooks, ui::Settings{});
-    auto drawFrame = [&] {
-      ImGui_ImplOpenGL3_NewFrame();
-      ImGui::NewFrame();
-      inspector.frame();
-      ImGui::Render();
-      context.clearFrame(0.08f, 0.08f, 0.1f);
-      ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
-    };
-    for (const std::string& file : o.files) {
-      inspector.open(file);
-      inspector.waitUntilIdle();
-      drawFrame();
-      if (inspector.statusText().rfind("error:", 0) == 0) {
-        std::fprintf(stderr, "%s\n", inspector.statusText().c_str());
-        status = kExitInputError;
-      }
-    }
-    if (o.color != "speed") {
-      inspector.colourBy(o.color);
-      inspector.waitUntilIdle();
-    }
-    if (o.pickLine >= 0 && !inspector.selectLine(static_cast<std::uint32_t>(o.pickLine))) {
-      std::fprintf(stderr, "error: line %ld produced no samples\n", o.pickLine);
+  // Snapshots do not read or change the user's settings: the same inputs give the same picture.
+  HeadlessUi ui(width, height, ui::Settings{});
+  panels::Inspector& inspector = ui.inspector();
+  for (const std::string& file : o.files) {
+    inspector.open(file);
+    inspector.waitUntilIdle();
+    ui.frame();
+    if (inspector.statusText().rfind("error:", 0) == 0) {
+      std::fprintf(stderr, "%s\n", inspector.statusText().c_str());
       status = kExitInputError;
     }
-    if (o.pickSample >= 0) inspector.selectSample(static_cast<std::size_t>(o.pickSample));
-    // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
-    for (int frame = 0; frame < 4; ++frame) drawFrame();
-    if (status == kExitOk) writePng(context.readPixels(), width, height, o.output);
-    std::printf("%s: %s\n", o.output.c_str(), inspector.statusText().c_str());
   }
-  ImGui_ImplOpenGL3_Shutdown();
-  ImGui::DestroyContext();
+  if (o.color != "speed") {
+    inspector.colourBy(o.color);
+    inspector.waitUntilIdle();
+  }
+  if (o.pickLine >= 0 && !inspector.selectLine(static_cast<std::uint32_t>(o.pickLine))) {
+    std::fprintf(stderr, "error: line %ld produced no samples\n", o.pickLine);
+    status = kExitInputError;
+  }
+  if (o.pickSample >= 0) inspector.selectSample(static_cast<std::size_t>(o.pickSample));
+  // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
+  for (int frame = 0; frame < 4; ++frame) ui.frame();
+  if (status == kExitOk) writePng(ui.pixels(), width, height, o.output);
+  std::printf("%s: %s\n", o.output.c_str(), inspector.statusText().c_str());
   return status;
 }
 

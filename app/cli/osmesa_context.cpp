@@ -65,6 +65,11 @@ void OsMesaContext::clearFrame(float r, float g, float b) {
   glClear(GL_COLOR_BUFFER_BIT);
 }
 
+void OsMesaContext::finish() {
+  makeCurrent();
+  glFinish();
+}
+
 std::vector<unsigned char> OsMesaContext::readPixels() {
   makeCurrent();
   glFinish();

@@ -19,6 +19,8 @@ class OsMesaContext {
   int height() const;
   // Makes the context current with its own framebuffer bound, full-size viewport, cleared.
   void clearFrame(float r, float g, float b);
+  // Waits until every drawing command is done.
+  void finish();
   // Finishes drawing and returns the default framebuffer as RGBA rows, top row first.
   std::vector<unsigned char> readPixels();
 

@@ -107,6 +107,7 @@ void Inspector::State::activate(std::size_t index) {
   selection.clear();
   view.setScene(doc ? doc->scene : nullptr);
   if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  view.invalidate();
   curveFirst = 0;
   curveLast = doc && doc->samples ? doc->samples->size() : 0;
   shownGeneration = ~std::uint64_t(0);
@@ -116,6 +117,12 @@ void Inspector::State::syncHighlight() {
   Document* doc = activeDocument();
   const ui::Selection& sel = selection.current();
   if (!doc || !doc->scene || !doc->samples || sel.generation == shownGeneration) return;
+  // The frame after a selection shows it in every panel at once (a marker over the view);
+  // the glow of its line in the 3D scene, which costs a full render, follows a frame later.
+  if (glowDeferred != sel.generation) {
+    glowDeferred = sel.generation;
+    return;
+  }
   shownGeneration = sel.generation;
   std::vector<Vec3> line, sample;
   const Trajectory& t = *doc->samples;
@@ -125,6 +132,7 @@ void Inspector::State::syncHighlight() {
   }
   if (sel.sample && *sel.sample < t.size()) sample.push_back(t.commanded(*sel.sample));
   doc->scene->setHighlight(line, sample);
+  view.invalidate();
 }
 
 Inspector::Inspector(GlHooks hooks, ui::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {

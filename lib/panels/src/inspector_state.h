@@ -61,7 +61,8 @@ struct Inspector::State {
   std::vector<std::unique_ptr<Document>> documents;
   std::size_t active = 0;
   ui::SelectionModel selection;
-  std::uint64_t shownGeneration = ~std::uint64_t(0);
+  std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
+  std::uint64_t glowDeferred = ~std::uint64_t(0);     // the selection whose glow comes next frame
   ViewSettings settings;
   ui::Settings persistent;
   ui::BackgroundJob job;

@@ -126,7 +126,10 @@ void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h)
         changed |= ImGui::Checkbox("points", &doc.showPoints);
         ImGui::Unindent();
       }
-      if (changed && doc.scene) doc.scene->setVisibility(doc.showSurface, doc.showToolpath, doc.showPoints);
+      if (changed && doc.scene) {
+        doc.scene->setVisibility(doc.showSurface, doc.showToolpath, doc.showPoints);
+        s.view.invalidate();
+      }
       ImGui::TreePop();
     }
     ImGui::PopID();
@@ -181,7 +184,10 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);
     ImGui::SameLine();
     visibility |= ImGui::Checkbox("points", &doc->showPoints);
-    if (visibility) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+    if (visibility) {
+      doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+      s.view.invalidate();
+    }
   }
   if (recolour) s.startRecolour();
   ImGui::End();

@@ -34,6 +34,12 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     if (doc && doc->samples && sel.sample && *sel.sample < doc->samples->size() && doc->curves.size() >= 3) {
       const std::size_t k = *sel.sample;
       const Trajectory& t = *doc->samples;
+      // A marker on the selected sample straight away; the scene's own glow follows.
+      if (const auto at = s.view.project(t.commanded(k))) {
+        const ImVec2 centre(origin.x + static_cast<float>(at->first), origin.y + static_cast<float>(at->second));
+        draw->AddCircle(centre, 9, IM_COL32(255, 230, 60, 255), 24, 2.0f);
+        draw->AddCircle(centre, 13, IM_COL32(0, 0, 0, 160), 24, 1.5f);
+      }
       char text[256];
       std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.4f  Y %.4f  Z %.4f mm\n"
                     "v %.1f mm/min   a %.1f mm/s^2   j %.0f mm/s^3", k, t.line[k], t.time[k], t.x[k], t.y[k], t.z[k],

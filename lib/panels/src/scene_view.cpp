@@ -15,6 +15,7 @@
 #include <vtkTextureObject.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "isurface/vis/quality_scene.h"
@@ -32,6 +33,9 @@ struct SceneView::Impl {
   vtkRenderer* attached = nullptr;
   int width = 0, height = 0;
   bool initialized = false;
+  unsigned int texture = 0;          // the last frame
+  std::array<double, 11> camera{};   // the camera as it was for that frame
+  bool coarse = false;               // whether that frame showed the coarse surface
 };
 
 SceneView::SceneView(GlHooks hooks) : impl_(std::make_unique<Impl>()) {
@@ -73,6 +77,7 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
   impl_->attached = nullptr;
   impl_->locator = nullptr;
   scene_ = std::move(scene);
+  invalidated_ = true;
   if (!scene_) return;
   scene_->attachTo(window);
   impl_->attached = scene_->renderer();
@@ -87,6 +92,7 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
 
 void SceneView::setView(vis::ViewDirection view) {
   if (scene_) scene_->setView(view);
+  invalidated_ = true;
 }
 
 unsigned int SceneView::render(int width, int height) {
@@ -97,12 +103,24 @@ unsigned int SceneView::render(int width, int height) {
     d.window->InitializeFromCurrentContext();
     d.initialized = true;
   }
-  if (width != d.width || height != d.height) {
+  const bool resized = width != d.width || height != d.height;
+  if (resized) {
     d.width = width;
     d.height = height;
     d.window->SetSize(width, height);
     d.interactor->SetSize(width, height);
   }
+  // What the camera shows (not its modification time, which clipping-range updates bump too).
+  vtkCamera* camera = scene_->renderer()->GetActiveCamera();
+  std::array<double, 11> view{};
+  camera->GetPosition(&view[0]);
+  camera->GetFocalPoint(&view[3]);
+  camera->GetViewUp(&view[6]);
+  view[9] = camera->GetParallelScale();
+  view[10] = camera->GetViewAngle();
+  // A frame of a million triangles costs llvmpipe over 100 ms: draw one only when it changed.
+  if (!resized && !invalidated_ && !dragging_ && d.coarse == dragging_ && view == d.camera && d.texture)
+    return d.texture;
   scene_->useCoarseSurface(dragging_);
   scene_->syncAxes();
   // ImGui changes GL state behind VTK's back: let VTK start from what is really bound.
@@ -110,13 +128,28 @@ unsigned int SceneView::render(int width, int height) {
   d.window->GetState()->Push();
   d.window->Render();
   d.window->GetState()->Pop();
+  d.camera = view;
+  d.coarse = dragging_;
+  invalidated_ = false;
   vtkOpenGLFramebufferObject* frame = d.window->GetDisplayFramebuffer();
-  if (!frame) return 0;
-  vtkTextureObject* texture = frame->GetColorAttachmentAsTextureObject(0);
-  return texture ? texture->GetHandle() : 0;
+  vtkTextureObject* texture = frame ? frame->GetColorAttachmentAsTextureObject(0) : nullptr;
+  d.texture = texture ? texture->GetHandle() : 0;
+  return d.texture;
+}
+
+std::optional<std::pair<double, double>> SceneView::project(const Vec3& point) const {
+  if (!scene_ || impl_->height <= 0) return std::nullopt;
+  vtkRenderer* renderer = scene_->renderer();
+  renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
+  renderer->WorldToDisplay();
+  double display[3];
+  renderer->GetDisplayPoint(display);
+  return std::make_pair(display[0], impl_->height - display[1]);
 }
 
 void SceneView::mouseMove(double x, double y) {
+  // A drag (not a click) shows the coarse surface until the button is let go.
+  if (pressed_ && (std::abs(x - pressX_) > 2 || std::abs(y - pressY_) > 2)) dragging_ = true;
   impl_->interactor->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
   impl_->interactor->MouseMoveEvent();
 }
@@ -124,7 +157,10 @@ void SceneView::mouseMove(double x, double y) {
 void SceneView::mouseButton(int button, bool pressed, double x, double y) {
   vtkGenericRenderWindowInteractor* i = impl_->interactor;
   i->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
-  dragging_ = pressed;
+  pressed_ = pressed;
+  pressX_ = x;
+  pressY_ = y;
+  if (!pressed) dragging_ = false;
   switch (button) {
     case 0: pressed ? i->LeftButtonPressEvent() : i->LeftButtonReleaseEvent(); break;
     case 1: pressed ? i->RightButtonPressEvent() : i->RightButtonReleaseEvent(); break;
@@ -140,6 +176,7 @@ void SceneView::mouseWheel(double steps, double x, double y) {
 }
 
 void SceneView::zoomToRectangle(double x0, double y0, double x1, double y1) {
+  invalidated_ = true;
   if (!scene_ || impl_->width <= 0) return;
   vtkRenderer* renderer = scene_->renderer();
   vtkCamera* camera = renderer->GetActiveCamera();

@@ -5,6 +5,7 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <utility>
 
 #include "isurface/core/geometry.h"
 
@@ -29,8 +30,12 @@ class SceneView {
   vis::QualityScene* scene() const { return scene_.get(); }
   void setView(vis::ViewDirection view);
 
-  // Renders at the given size (pixels) and returns the colour texture to show (0 if none).
+  // Returns the colour texture to show (0 if none) at the given size (pixels), rendering again
+  // only when something changed: the size, the scene, the camera, a drag, or invalidate().
   unsigned int render(int width, int height);
+  void invalidate() { invalidated_ = true; }
+  // Where a point (mm) appears in the view, in pixels from its top-left corner.
+  std::optional<std::pair<double, double>> project(const Vec3& point) const;
 
   // Mouse input in pixels from the view's top-left corner.
   void mouseMove(double x, double y);
@@ -46,7 +51,9 @@ class SceneView {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::shared_ptr<vis::QualityScene> scene_;
-  bool dragging_ = false;
+  bool pressed_ = false, dragging_ = false;
+  double pressX_ = 0, pressY_ = 0;
+  bool invalidated_ = true;
 };
 
 }  // namespace isurface::panels
