@@ -3,6 +3,7 @@
 #include <imgui.h>
 #include <imgui_impl_opengl3.h>
 
+#include "isurface/panels/ui_look.h"
 #include "osmesa_context.h"
 
 namespace isurface::cli {
@@ -10,7 +11,7 @@ namespace isurface::cli {
 HeadlessUi::HeadlessUi(int width, int height, ui::Settings settings)
     : width_(width), height_(height), context_(std::make_unique<OsMesaContext>(width, height)) {
   ImGui::CreateContext();
-  ImGui::StyleColorsDark();
+  panels::applyUiLook(panels::uiLook());
   ImGuiIO& io = ImGui::GetIO();
   io.IniFilename = nullptr;
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));

@@ -14,7 +14,10 @@
 #include <string>
 #include <vector>
 
+#include <stb/stb_image.h>
+
 #include "isurface/panels/inspector.h"
+#include "isurface/panels/ui_look.h"
 #include "isurface/ui/settings.h"
 
 namespace {
@@ -23,6 +26,16 @@ std::vector<std::string> dropped;
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
   for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
+}
+
+void setWindowIcon(GLFWwindow* window, const std::string& path) {
+  if (path.empty()) return;
+  GLFWimage icon;
+  int channels = 0;
+  icon.pixels = stbi_load(path.c_str(), &icon.width, &icon.height, &channels, 4);
+  if (!icon.pixels) return;
+  glfwSetWindowIcon(window, 1, &icon);
+  stbi_image_free(icon.pixels);
 }
 
 int run(int argc, char** argv) {
@@ -47,7 +60,9 @@ int run(int argc, char** argv) {
   glfwSetDropCallback(window, onDrop);
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
-  ImGui::StyleColorsDark();
+  const isurface::panels::UiLook look = isurface::panels::uiLook();
+  isurface::panels::applyUiLook(look);
+  setWindowIcon(window, look.iconFile);
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; settings.json keeps the rest
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 150");

@@ -1,0 +1,18 @@
+#pragma once
+// The application's fonts and window icon, as resources/ui/ui.json names them.
+#include <string>
+
+namespace isurface::panels {
+
+struct UiLook {
+  std::string fontFile;   // "" when none of the listed fonts exists: ImGui's own font
+  float fontSize = 14;    // pixels
+  std::string iconFile;   // absolute path of the window icon PNG ("" when missing)
+};
+
+UiLook uiLook();
+// Loads the font into the current ImGui context and sets the colours; call after
+// ImGui::CreateContext() and before the renderer builds its font texture.
+void applyUiLook(const UiLook& look);
+
+}  // namespace isurface::panels

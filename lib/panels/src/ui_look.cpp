@@ -1,0 +1,39 @@
+#include "isurface/panels/ui_look.h"
+
+#include <imgui.h>
+
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "isurface/vis/resources.h"
+
+namespace isurface::panels {
+
+UiLook uiLook() {
+  UiLook look;
+  const nlohmann::json settings = nlohmann::json::parse(vis::resourceText("resources/ui/ui.json"));
+  for (const auto& file : settings.value("font_files", nlohmann::json::array())) {
+    std::error_code error;
+    if (file.is_string() && std::filesystem::exists(file.get<std::string>(), error)) {
+      look.fontFile = file.get<std::string>();
+      break;
+    }
+  }
+  look.fontSize = settings.value("font_size_px", 14.0f);
+  const std::string icon = std::string(ISURFACE_RESOURCE_DIR) + "/" + settings.value("window_icon", std::string());
+  std::error_code error;
+  if (std::filesystem::is_regular_file(icon, error)) look.iconFile = icon;
+  return look;
+}
+
+void applyUiLook(const UiLook& look) {
+  ImGui::StyleColorsDark();
+  ImGuiStyle& style = ImGui::GetStyle();
+  style.WindowRounding = 0;
+  style.FrameRounding = 2;
+  style.WindowBorderSize = 1;
+  ImGuiIO& io = ImGui::GetIO();
+  if (!look.fontFile.empty()) io.Fonts->AddFontFromFileTTF(look.fontFile.c_str(), look.fontSize);
+}
+
+}  // namespace isurface::panels
