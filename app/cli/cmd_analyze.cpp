@@ -1,0 +1,118 @@
+// isurface-cli analyze: quality prediction. Regions where adjacent passes or consecutive samples
+// disagree beyond thresholds, ranked by severity, with their G-code lines, as JSON (and a map).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/quality_regions.h"
+#include "isurface/vis/quality_map.h"
+#include "offscreen_render.h"
+#include "progress.h"
+#include "trajectory_input.h"
+
+namespace isurface::cli {
+namespace {
+
+struct AnalyzeOptions {
+  std::string gcode, biip, output, png, machine;
+  QualityThresholds thresholds;
+  std::size_t top = 20;
+};
+
+nlohmann::json point(const Vec3& p) { return nlohmann::json::array({p.x(), p.y(), p.z()}); }
+
+void requirePositive(double value, const char* option) {
+  if (!(value > 0)) throw InputError(Diagnostic{"", 0, 0, std::string(option) + " must be greater than 0"});
+}
+
+int runAnalyze(const AnalyzeOptions& o) {
+  requirePositive(o.thresholds.speedInconsistency, "--speed-threshold");
+  requirePositive(o.thresholds.accelInconsistency, "--accel-threshold");
+  requirePositive(o.thresholds.jerk, "--jerk-threshold");
+  const Program program = loadProgram(o.gcode, false);
+  const Trajectory samples = o.biip.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
+                                            : readTrajectory(o.biip);
+  ProgressLine progress("analysing");
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::SpeedInconsistency;
+  request.fixedRange = ValueRange{0, 2 * o.thresholds.speedInconsistency};
+  request.caption = std::filesystem::path(o.gcode).filename().string() + ": predicted defects";
+  vis::QualityMap map = vis::buildQualityMap(samples, &program, request);
+  const QualityReport report = findQualityRegions(samples, *map.mesh, o.thresholds);
+  progress.finish();
+
+  nlohmann::json regions = nlohmann::json::array();
+  for (std::size_t k = 0; k < report.regions.size() && k < o.top; ++k) {
+    const QualityRegion& r = report.regions[k];
+    regions.push_back({{"rank", k + 1},
+                       {"severity", r.severity},
+                       {"lines", {r.firstLine, r.lastLine}},
+                       {"vertices", r.vertices},
+                       {"area_mm2", r.area},
+                       {"bounding_box", {{"min", point(r.lower)}, {"max", point(r.upper)}}},
+                       {"centroid", point(r.centroid)},
+                       {"worst_sample", r.worstSample},
+                       {"worst_line", samples.line[r.worstSample]},
+                       {"max_speed_inconsistency_mm_min", r.maxSpeedInconsistency},
+                       {"max_accel_inconsistency_mm_s2", r.maxAccelInconsistency},
+                       {"max_jerk_mm_s3", r.maxJerk},
+                       {"max_predicted_deviation_um", samples.hasFeedback() ? nlohmann::json(r.maxDeviation) : nlohmann::json()}});
+  }
+  const nlohmann::json out = {
+      {"source", o.gcode},
+      {"samples", samples.size()},
+      {"passes", map.passes.passes.size()},
+      {"pattern", pathPatternName(map.passes.pattern)},
+      {"thresholds",
+       {{"speed_inconsistency_mm_min", o.thresholds.speedInconsistency},
+        {"accel_inconsistency_mm_s2", o.thresholds.accelInconsistency},
+        {"jerk_mm_s3", o.thresholds.jerk}}},
+      {"vertices", report.vertices},
+      {"flagged_vertices", report.flaggedVertices},
+      {"region_count", report.regions.size()},
+      {"regions", regions}};
+  writeFileAtomically(o.output, out.dump(2) + "\n");
+
+  if (!o.png.empty()) {
+    if (!report.regions.empty()) {
+      // The most severe region's worst line glows.
+      const std::uint32_t line = samples.line[report.regions.front().worstSample];
+      for (std::size_t i = 0; i < samples.size(); ++i)
+        if (samples.line[i] == line) map.data.highlight.push_back(samples.commanded(i));
+    }
+    vis::QualityScene scene(map.data, map.style);
+    renderSceneToPng(scene, 1600, 1000, o.png);
+  }
+  std::printf("%s: %zu regions beyond the thresholds (%zu of %zu vertices)", o.output.c_str(), report.regions.size(),
+              report.flaggedVertices, report.vertices);
+  if (!report.regions.empty())
+    std::printf("; worst at lines %u-%u, severity %.1f", report.regions.front().firstLine,
+                report.regions.front().lastLine, report.regions.front().severity);
+  std::printf("\n");
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "analyze", "Predict surface defects: regions where adjacent passes or consecutive samples disagree",
+    [](CLI::App& sub) {
+      auto o = std::make_shared<AnalyzeOptions>();
+      sub.add_option("gcode", o->gcode, "G-code program")->required();
+      sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
+      sub.add_option("-o,--output", o->output, "JSON report to write")->required();
+      sub.add_option("--png", o->png, "also render the map of speed inconsistency, worst line glowing");
+      sub.add_option("--speed-threshold", o->thresholds.speedInconsistency,
+                     "speed difference between neighbouring passes, mm/min")->capture_default_str();
+      sub.add_option("--accel-threshold", o->thresholds.accelInconsistency,
+                     "acceleration difference between neighbouring passes, mm/s^2")->capture_default_str();
+      sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str();
+      sub.add_option("--top", o->top, "regions listed at most")->capture_default_str();
+      sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      return [o] { return runAnalyze(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli
