@@ -91,6 +91,9 @@ struct Inspector::State {
   void syncHighlight();
 };
 
+// Opens one window of the fixed layout at its place (ImGui::End() closes it).
+void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags = 0);
+
 // The panels, each drawing one window of the layout.
 void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width);
 void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h);

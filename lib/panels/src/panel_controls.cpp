@@ -42,6 +42,12 @@ bool isProgramOrDump(const std::filesystem::path& p) {
 
 }  // namespace
 
+void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags) {
+  ImGui::SetNextWindowPos(ImVec2(x, y));
+  ImGui::SetNextWindowSize(ImVec2(w, h));
+  ImGui::Begin(name, nullptr, kPanel | extraFlags);
+}
+
 void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   bool simulate = false, locate = false;
   if (ImGui::BeginMainMenuBar()) {
@@ -102,9 +108,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
 }
 
 void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Navigation", nullptr, kPanel);
+  beginPanel("Navigation", x, y, w, h);
   for (std::size_t i = 0; i < s.documents.size(); ++i) {
     Document& doc = *s.documents[i];
     ImGui::PushID(static_cast<int>(i));
@@ -138,9 +142,7 @@ void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h)
 }
 
 void drawColourControls(Inspector::State& s, float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Colour", nullptr, kPanel);
+  beginPanel("Colour", x, y, w, h);
   bool recolour = false;
   const QuantityInfo& current = quantityInfo(s.settings.quantity);
   ImGui::SetNextItemWidth(-1);

@@ -59,9 +59,7 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
 }  // namespace
 
 void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Signal curves", nullptr, ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse);
+  beginPanel("Signal curves", x, y, w, h);
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || doc->curves.empty()) {
     ImGui::TextDisabled("no samples");

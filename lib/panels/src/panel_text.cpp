@@ -22,9 +22,7 @@ void scrollToRow(std::size_t row, float rowHeight) {
 }  // namespace
 
 void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("G-code", nullptr, kPanel);
+  beginPanel("G-code", x, y, w, h);
   Document* doc = s.activeDocument();
   if (!doc || !doc->text) {
     ImGui::TextDisabled("no program");
@@ -61,9 +59,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
 }
 
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
-  ImGui::SetNextWindowPos(ImVec2(x, y));
-  ImGui::SetNextWindowSize(ImVec2(w, h));
-  ImGui::Begin("Data", nullptr, kPanel);
+  beginPanel("Data", x, y, w, h);
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || doc->curves.size() < 3) {
     ImGui::TextDisabled("no samples");
