@@ -262,6 +262,10 @@ class Planner {
     for (std::size_t k = 1; k < n; ++k) v[k] = std::min({v[k], maxSpeed_[k - 1], maxSpeed_[k]});
     v[0] = 0.0;
     v[n] = 0.0;
+    for (std::size_t k = 0; k < n; ++k) {
+      segs[k].cap = maxSpeed_[k];
+      segs[k].entryLimit = v[k];
+    }
     shareAcceleration(segs);
     for (std::size_t k = 0; k < n; ++k)
       v[k + 1] = std::min(v[k + 1], std::sqrt(v[k] * v[k] + 2.0 * segs[k].accel * segs[k].length));

@@ -43,6 +43,8 @@ struct PlannedSegment {
   double exitSpeed = 0;     // mm/s
   double accel = 0;         // mm/s^2, tangential, for both ramps
   double holdAfter = 0;     // s of standstill after the segment (dwell)
+  double cap = 0;           // mm/s, the segment's own speed limit (feed, axes, curvature)
+  double entryLimit = 0;    // mm/s, the limit at its start junction before look-ahead
 
   double accelTime() const { return accel > 0 ? (peakSpeed - entrySpeed) / accel : 0; }
   double decelTime() const { return accel > 0 ? (peakSpeed - exitSpeed) / accel : 0; }

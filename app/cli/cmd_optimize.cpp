@@ -1,0 +1,147 @@
+// isurface-cli optimize: re-optimise a region of a program (constant speed intervals, Akima
+// fitting, interval speed planning), write the new program, re-simulate both and compare.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/quality_regions.h"
+#include "isurface/core/region_optimizer.h"
+#include "isurface/vis/quality_map.h"
+#include "offscreen_render.h"
+#include "trajectory_input.h"
+
+namespace isurface::cli {
+namespace {
+
+struct OptimizeCliOptions {
+  std::string input, output, lines, report, pngBefore, pngAfter, machine;
+  bool automatic = false;
+  double chordTolerance = 0.002;
+};
+
+struct Run {
+  Trajectory samples;
+  PassSet passes;
+  SurfaceMesh mesh;
+};
+
+Run simulateRun(const Program& program, const Machine& machine) {
+  Run run;
+  run.samples = simulateTrajectory(program, machine);
+  PassOptions options;
+  options.program = &program;
+  run.passes = splitPasses(run.samples, options);
+  run.mesh = buildSurfaceMesh(run.samples, run.passes);
+  return run;
+}
+
+std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < program.moves.size(); ++i)
+    if (program.moves[i].isMotion() && program.moves[i].line >= lines.first && program.moves[i].line <= lines.last) {
+      if (points.empty()) points.push_back(program.startOf(i));
+      points.push_back(program.moves[i].end);
+    }
+  return points;
+}
+
+nlohmann::json metricsJson(const RegionMetrics& m) {
+  return {{"samples", m.samples},
+          {"time_s", m.time},
+          {"speed_fluctuation_mm_min", m.speedFluctuation},
+          {"max_speed_inconsistency_mm_min", m.maxSpeedInconsistency},
+          {"max_jerk_mm_s3", m.maxJerk},
+          {"max_predicted_deviation_um", m.maxDeviation}};
+}
+
+void renderSpeed(const Run& run, const Program& program, const std::string& caption, const ValueRange& range,
+                 const std::string& path) {
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::Speed;
+  request.fixedRange = range;
+  request.view = vis::ViewDirection::Top;
+  request.caption = caption;
+  const vis::QualityMap map = vis::buildQualityMap(run.samples, &program, request);
+  vis::QualityScene scene(map.data, map.style);
+  renderSceneToPng(scene, 1200, 800, path);
+}
+
+int runOptimize(const OptimizeCliOptions& o) {
+  if (o.automatic == !o.lines.empty()) throw InputError(Diagnostic{"", 0, 0, "give either --lines A-B or --auto"});
+  if (!(o.chordTolerance > 0)) throw InputError(Diagnostic{"", 0, 0, "--tolerance must be greater than 0"});
+  const Machine machine = loadMachineOption(o.machine);
+  const Program program = loadProgram(o.input, false);
+  std::ifstream in(o.input, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+
+  const Run before = simulateRun(program, machine);
+  LineRange range;
+  if (o.automatic) {
+    const QualityReport report = findQualityRegions(before.samples, before.mesh);
+    if (report.regions.empty()) throw InputError(Diagnostic{o.input, 0, 0, "no region beyond the quality thresholds to optimise"});
+    range = {report.regions.front().firstLine, report.regions.front().lastLine};
+  } else {
+    range = parseLineRange(o.lines);
+  }
+  OptimizeOptions options;
+  options.chordTolerance = o.chordTolerance;
+  const OptimizeResult result = optimizeRegion(text.str(), program, range, machine, options);
+  writeFileAtomically(o.output, result.text);
+
+  InterpretResult reread = interpretGcode(result.text, o.output);
+  if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
+  const Run after = simulateRun(reread.program, machine);
+  const RegionMetrics old = measureRegion(before.samples, before.mesh, range);
+  const RegionMetrics now = measureRegion(after.samples, after.mesh, result.newRange);
+  const double distance = polylineDistance(regionPoints(program, range), regionPoints(reread.program, result.newRange));
+  const double timeBefore = (before.samples.size() - 1) * machine.cycle, timeAfter = (after.samples.size() - 1) * machine.cycle;
+
+  nlohmann::json passes = nlohmann::json::array();
+  for (const OptimizedPass& p : result.passes)
+    passes.push_back({{"lines", {p.firstLine, p.lastLine}}, {"new_lines", {p.newFirstLine, p.newLastLine}},
+                      {"old_moves", p.oldMoves}, {"new_moves", p.newMoves}, {"interval_feeds_mm_min", p.intervalFeeds}});
+  const nlohmann::json report = {
+      {"source", o.input}, {"output", o.output}, {"lines", {range.first, range.last}},
+      {"new_lines", {result.newRange.first, result.newRange.last}},
+      {"machining_time_s", {{"before", timeBefore}, {"after", timeAfter}}},
+      {"region", {{"before", metricsJson(old)}, {"after", metricsJson(now)}}},
+      {"max_path_distance_mm", distance}, {"passes", passes}};
+  if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
+  if (!o.pngBefore.empty() || !o.pngAfter.empty()) {
+    const std::vector<float> speeds = vertexQuantity(Quantity::Speed, before.samples, before.mesh);
+    const ValueRange span = percentileRange(speeds, 1, 99);
+    if (!o.pngBefore.empty()) renderSpeed(before, program, o.input + " before", span, o.pngBefore);
+    if (!o.pngAfter.empty()) renderSpeed(after, reread.program, o.output + " after", span, o.pngAfter);
+  }
+  std::printf("%s: lines %u-%u, %zu passes re-fitted\n", o.output.c_str(), range.first, range.last, result.passes.size());
+  std::printf("machining time %s -> %s; in the region: speed fluctuation %.1f -> %.1f mm/min, "
+              "max inconsistency between passes %.1f -> %.1f mm/min, max jerk %.0f -> %.0f mm/s^3; path moved %.4f mm at most\n",
+              formatDuration(timeBefore).c_str(), formatDuration(timeAfter).c_str(), old.speedFluctuation,
+              now.speedFluctuation, old.maxSpeedInconsistency, now.maxSpeedInconsistency, old.maxJerk, now.maxJerk, distance);
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "optimize", "Re-optimise a region (constant speed intervals, Akima fitting), write it and compare", [](CLI::App& sub) {
+      auto o = std::make_shared<OptimizeCliOptions>();
+      sub.add_option("gcode", o->input, "G-code program")->required();
+      sub.add_option("-o,--output", o->output, "new G-code program to write")->required();
+      sub.add_option("--lines", o->lines, "the region as a line range A-B");
+      sub.add_flag("--auto", o->automatic, "the most severe region that analyze finds");
+      sub.add_option("--report", o->report, "comparison report (JSON)");
+      sub.add_option("--png-before", o->pngBefore, "speed map before (top view)");
+      sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range");
+      sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
+      sub.add_option("--machine", o->machine, "machine description (JSON)");
+      return [o] { return runOptimize(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli
