@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <fstream>
 #include <memory>
+#include <optional>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -83,10 +84,12 @@ int runOptimize(const OptimizeCliOptions& o) {
 
   const Run before = simulateRun(program, machine);
   LineRange range;
+  std::optional<std::pair<Vec3, Vec3>> defectBox;
   if (o.automatic) {
     const QualityReport report = findQualityRegions(before.samples, before.mesh);
     if (report.regions.empty()) throw InputError(Diagnostic{o.input, 0, 0, "no region beyond the quality thresholds to optimise"});
     range = {report.regions.front().firstLine, report.regions.front().lastLine};
+    defectBox = std::make_pair(report.regions.front().lower, report.regions.front().upper);
   } else {
     range = parseLineRange(o.lines);
   }
@@ -98,8 +101,11 @@ int runOptimize(const OptimizeCliOptions& o) {
   InterpretResult reread = interpretGcode(result.text, o.output);
   if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
   const Run after = simulateRun(reread.program, machine);
-  const RegionMetrics old = measureRegion(before.samples, before.mesh, range);
-  const RegionMetrics now = measureRegion(after.samples, after.mesh, result.newRange);
+  // The comparison looks where the defect was found (--auto), else where the path was re-fitted.
+  const Vec3 lower = defectBox ? defectBox->first : result.fittedLower;
+  const Vec3 upper = defectBox ? defectBox->second : result.fittedUpper;
+  const RegionMetrics old = measureRegion(before.samples, before.mesh, range, lower, upper);
+  const RegionMetrics now = measureRegion(after.samples, after.mesh, result.newRange, lower, upper);
   const double distance = polylineDistance(regionPoints(program, range), regionPoints(reread.program, result.newRange));
   const double timeBefore = (before.samples.size() - 1) * machine.cycle, timeAfter = (after.samples.size() - 1) * machine.cycle;
 
@@ -112,7 +118,8 @@ int runOptimize(const OptimizeCliOptions& o) {
       {"new_lines", {result.newRange.first, result.newRange.last}},
       {"machining_time_s", {{"before", timeBefore}, {"after", timeAfter}}},
       {"region", {{"before", metricsJson(old)}, {"after", metricsJson(now)}}},
-      {"max_path_distance_mm", distance}, {"passes", passes}};
+      {"max_path_distance_mm", distance}, {"passes", passes},
+      {"compared_box_mm", {{"min", {lower.x(), lower.y()}}, {"max", {upper.x(), upper.y()}}}}};
   if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
   if (!o.pngBefore.empty() || !o.pngAfter.empty()) {
     const std::vector<float> speeds = vertexQuantity(Quantity::Speed, before.samples, before.mesh);

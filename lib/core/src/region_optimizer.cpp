@@ -159,6 +159,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
                                 fmt::format("lines {}-{} hold no run of {} or more plain G1 moves to re-optimise",
                                             range.first, range.last, options.minimumMoves)});
   OptimizeResult result;
+  bool haveBox = false;
   std::uint32_t written = 0;  // lines of the output so far
   std::size_t nextSource = 1; // next source line to copy
   const char* lineEnd = text.find("\r\n") != std::string::npos ? "\r\n" : "\n";
@@ -192,6 +193,14 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
         dataIndex[i] = offset + j;
       }
       intervalEnd.push_back(fitted.size() - 1);
+      // Dense, curved intervals are the transition the region is about, not its long straight runs.
+      if (own.size() >= 3 && interval.averageCurvature > 1e-3 && interval.length / (own.size() - 1) < 1.0) {
+        for (const Vec3& p : own) {
+          if (!haveBox) result.fittedLower = result.fittedUpper = p, haveBox = true;
+          result.fittedLower = result.fittedLower.cwiseMin(p);
+          result.fittedUpper = result.fittedUpper.cwiseMax(p);
+        }
+      }
     }
     const double feed = first.feed;
     const std::vector<double> feeds = intervalFeeds(fitted, dataIndex, partition, feed, machine);
@@ -231,15 +240,23 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   return result;
 }
 
-RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines) {
+RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
+                            const Vec3& upper) {
   RegionMetrics m;
   const std::vector<double> speed = sampleQuantity(Quantity::Speed, samples);
   const std::vector<double> jerk = sampleQuantity(Quantity::Jerk, samples);
   const std::size_t n = samples.size();
-  auto inRegion = [&](std::size_t i) { return samples.line[i] >= lines.first && samples.line[i] <= lines.last; };
+  auto inRegion = [&](std::size_t i) {
+    return samples.line[i] >= lines.first && samples.line[i] <= lines.last && samples.x[i] >= lower.x() &&
+           samples.x[i] <= upper.x() && samples.y[i] >= lower.y() && samples.y[i] <= upper.y();
+  };
   const std::size_t half = static_cast<std::size_t>(std::lround(0.05 / samples.cycle));  // 100 ms window
   double sumSquares = 0;
-  for (std::size_t i = 0; i < n; ++i) {
+  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
+  std::vector<float> deviation;
+  if (samples.hasFeedback()) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
+  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
+    const std::size_t i = mesh.vertexSample[v];
     if (!inRegion(i) || !std::isfinite(speed[i])) continue;
     ++m.samples;
     const std::size_t a = i > half ? i - half : 0, b = std::min(n - 1, i + half);
@@ -250,17 +267,11 @@ RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, 
     mean /= std::max<std::size_t>(count, 1);
     sumSquares += (speed[i] - mean) * (speed[i] - mean);
     if (std::isfinite(jerk[i])) m.maxJerk = std::max(m.maxJerk, jerk[i]);
-  }
-  m.time = m.samples * samples.cycle;
-  m.speedFluctuation = m.samples ? std::sqrt(sumSquares / m.samples) : 0;
-  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
-  std::vector<float> deviation;
-  if (samples.hasFeedback()) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
-  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
-    if (!inRegion(mesh.vertexSample[v])) continue;
     if (std::isfinite(inconsistency[v])) m.maxSpeedInconsistency = std::max<double>(m.maxSpeedInconsistency, inconsistency[v]);
     if (!deviation.empty() && std::isfinite(deviation[v])) m.maxDeviation = std::max<double>(m.maxDeviation, std::abs(deviation[v]));
   }
+  m.time = m.samples * samples.cycle;
+  m.speedFluctuation = m.samples ? std::sqrt(sumSquares / m.samples) : 0;
   return m;
 }
 

@@ -34,6 +34,9 @@ struct OptimizeResult {
   std::string text;                    // the new program
   std::vector<OptimizedPass> passes;
   LineRange newRange;                  // the region's lines in the new program
+  // Where the path was re-fitted (the intervals with curvature, not the straight runs), mm:
+  // the part of the surface the comparison looks at.
+  Vec3 fittedLower = Vec3::Zero(), fittedUpper = Vec3::Zero();
 };
 
 // `text` is the program's source, `program` its interpretation. Throws InputError when the
@@ -51,7 +54,9 @@ struct RegionMetrics {
   double maxDeviation = 0;             // um, predicted (0 without feedback)
 };
 
-RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines);
+// Over the surface's samples on the given lines that lie inside the box (XY, mm).
+RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
+                            const Vec3& upper);
 
 // The largest distance from any point of `a`'s polyline vertices to `b`'s polyline, both ways
 // (a Hausdorff distance over vertices), mm.
