@@ -11,6 +11,7 @@
 
 #include "command.h"
 #include "isurface/core/atomic_file.h"
+#include "isurface/core/constant_speed_intervals.h"
 #include "isurface/core/diagnostic.h"
 #include "isurface/panels/inspector.h"
 #include "headless_ui.h"
@@ -22,6 +23,7 @@ struct SnapshotOptions {
   std::vector<std::string> files;
   std::string output, size = "1600x1000", color = "speed";
   long pickLine = -1, pickSample = -1;
+  std::string optimizeLines;
 };
 
 void writePng(const std::vector<unsigned char>& rgbaTopFirst, int width, int height, const std::string& path) {
@@ -68,6 +70,15 @@ int runSnapshot(const SnapshotOptions& o) {
     inspector.colourBy(o.color);
     inspector.waitUntilIdle();
   }
+  if (!o.optimizeLines.empty()) {
+    const LineRange range = parseLineRange(o.optimizeLines);
+    inspector.optimise(range.first, range.last);
+    inspector.waitUntilIdle();
+    if (inspector.statusText().rfind("error:", 0) == 0) {
+      std::fprintf(stderr, "%s\n", inspector.statusText().c_str());
+      status = kExitInputError;
+    }
+  }
   if (o.pickLine >= 0 && !inspector.selectLine(static_cast<std::uint32_t>(o.pickLine))) {
     std::fprintf(stderr, "error: line %ld produced no samples\n", o.pickLine);
     status = kExitInputError;
@@ -89,6 +100,7 @@ const bool registered = registerCommand(
       sub.add_option("--color", o->color, "quantity to colour the map by")->capture_default_str();
       sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line");
       sub.add_option("--pick-sample", o->pickSample, "select this sample");
+      sub.add_option("--optimize-lines", o->optimizeLines, "re-optimise the lines A-B and show both maps");
       return [o] { return runSnapshot(*o); };
     });
 

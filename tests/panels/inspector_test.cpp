@@ -96,3 +96,16 @@ TEST(window, StartsDrawsAndQuitsUnderXvfb) {
   // It remembers what it opened.
   EXPECT_NE(readFile(home + "/.config/isurface/settings.json").find("wuzhishan.nc"), std::string::npos);
 }
+
+TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
+  panels::Inspector inspector(noContext(), ui::Settings{});
+  inspector.open(sourcePath("samples/transition-surface.nc"));
+  inspector.waitUntilIdle();
+  inspector.optimise(105, 400);
+  inspector.waitUntilIdle();
+  EXPECT_NE(inspector.statusText().find("passes re-fitted"), std::string::npos) << inspector.statusText();
+  EXPECT_NE(inspector.statusText().find("Machining time"), std::string::npos);
+  inspector.optimise(1, 5);  // the header: no G1 moves to re-fit
+  inspector.waitUntilIdle();
+  EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
+}

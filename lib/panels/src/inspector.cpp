@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
 #include <thread>
@@ -77,6 +78,16 @@ void Inspector::State::takeJobResult() {
     return;
   }
   if (!result) return;
+  if (result->comparison) {
+    comparison = result->comparison;
+    afterView.setScene(comparison->scene);
+    if (Document* doc = activeDocument()) {
+      const std::string base = doc->programPath.substr(0, doc->programPath.rfind('.'));
+      std::snprintf(savePath, sizeof savePath, "%s-optimized.nc", base.c_str());
+    }
+    status = comparison->summary;
+    return;
+  }
   if (result->document) {
     Document& doc = *result->document;
     status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
@@ -102,6 +113,8 @@ void Inspector::State::takeJobResult() {
 
 void Inspector::State::activate(std::size_t index) {
   active = index;
+  comparison.reset();
+  afterView.setScene(nullptr);
   Document* doc = activeDocument();
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();
@@ -173,12 +186,19 @@ void Inspector::frame() {
   drawMenuAndToolbar(s, menuHeight, width);
   drawNavigationTree(s, 0, top, left, (bottom - top) * 0.5f);
   drawColourControls(s, 0, top + (bottom - top) * 0.5f, left, (bottom - top) * 0.5f);
-  drawSceneView(s, left, top, right - left, middle - top);
+  if (s.comparison) {
+    const float half = (right - left) * 0.5f;
+    drawSceneView(s, left, top, half, middle - top);
+    drawComparisonView(s, left + half, top, right - left - half, middle - top);
+  } else {
+    drawSceneView(s, left, top, right - left, middle - top);
+  }
   drawSignalCurves(s, left, middle, right - left, bottom - middle);
   drawGcodePane(s, right, top, width - right, (bottom - top) * 0.45f);
   drawDataBar(s, right, top + (bottom - top) * 0.45f, width - right, (bottom - top) * 0.55f);
   drawStatusBar(s, bottom, width);
   drawDialogs(s);
+  drawOptimiseDialog(s);
 }
 
 bool Inspector::busy() const { return state_->job.running(); }
@@ -199,6 +219,8 @@ void Inspector::colourBy(const std::string& quantityName) {
   state_->persistent.quantity = quantityName;
   state_->startRecolour();
 }
+
+void Inspector::optimise(std::uint32_t firstLine, std::uint32_t lastLine) { state_->startOptimise(firstLine, lastLine); }
 
 const ui::Selection& Inspector::selection() const { return state_->selection.current(); }
 std::string Inspector::statusText() const { return state_->status; }

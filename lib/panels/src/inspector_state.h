@@ -45,8 +45,21 @@ struct ViewSettings {
   vis::ViewDirection view = vis::ViewDirection::Iso;
 };
 
+// A region re-optimised: the new program, its simulation and map, and the comparison.
+struct Comparison {
+  std::string text;                         // the new program
+  std::shared_ptr<const Program> program;
+  std::shared_ptr<const Trajectory> samples;
+  vis::QualityMap map;
+  std::shared_ptr<vis::QualityScene> scene;
+  std::uint32_t first = 0, last = 0;        // the region's lines in the old program
+  double timeBefore = 0, timeAfter = 0;     // s
+  std::string summary;                      // the region's figures before and after
+};
+
 // What a background job hands over to the UI thread when it ends.
 struct JobResult {
+  std::shared_ptr<Comparison> comparison;   // a re-optimised region
   std::unique_ptr<Document> document;        // a newly loaded document
   std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
@@ -55,9 +68,14 @@ struct JobResult {
 };
 
 struct Inspector::State {
-  explicit State(GlHooks hooks) : view(std::move(hooks)) {}
+  explicit State(GlHooks hooks) : view(hooks), afterView(hooks) {}
 
   SceneView view;
+  SceneView afterView;                          // the re-optimised map beside it
+  std::shared_ptr<Comparison> comparison;       // of the active document
+  bool optimiseDialog = false;
+  int optimiseFirst = 1, optimiseLast = 1;
+  char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
   std::size_t active = 0;
   ui::SelectionModel selection;
@@ -86,10 +104,15 @@ struct Inspector::State {
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
+  void startOptimise(std::uint32_t first, std::uint32_t last);
   void takeJobResult();
   void activate(std::size_t index);
   void syncHighlight();
 };
+
+// Turns blending off while a 3D view's frame is drawn (from an ImGui draw callback): where VTK
+// blended translucent glow its alpha is below one, and the panel behind must not show through.
+void glDisableBlendForView();
 
 // Opens one window of the fixed layout at its place (ImGui::End() closes it).
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags = 0);
@@ -104,6 +127,8 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h);
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
 void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
+void drawOptimiseDialog(Inspector::State& s);
+void drawComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
 // Loads a document on the job's thread.
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,

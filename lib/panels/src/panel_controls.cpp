@@ -82,6 +82,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     if (ImGui::BeginMenu("Tools")) {
       if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
+      if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -99,6 +100,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (toolButton(s.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
     s.rectangleZoom = !s.rectangleZoom;
   if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
+  if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.optimiseDialog = true;
   ImGui::End();
   if (shortcut('Q', true)) s.quit = true;
   if (locate) s.locateDialog = true;

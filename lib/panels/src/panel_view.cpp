@@ -11,6 +11,8 @@
 
 namespace isurface::panels {
 
+void glDisableBlendForView() { glDisable(GL_BLEND); }
+
 void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
   beginPanel("3D view", x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
@@ -18,10 +20,9 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const unsigned int texture = s.view.render(static_cast<int>(size.x), static_cast<int>(size.y));
   if (texture) {
-    // VTK's frame is bottom-up: flip it. It is drawn without blending: where VTK blended
-    // translucent glow its alpha is below one, and the panel behind must not show through.
+    // VTK's frame is bottom-up: flip it; no blending (see glDisableBlendForView).
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+    draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisableBlendForView(); }, nullptr);
     ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
     draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
     // The picked sample's values, as the paper's window shows them (line, point, speed).

@@ -90,6 +90,11 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
   impl_->picker->AddLocator(impl_->locator);
 }
 
+void SceneView::copyCameraFrom(const SceneView& other) {
+  if (!scene_ || !other.scene_) return;
+  scene_->renderer()->GetActiveCamera()->DeepCopy(other.scene_->renderer()->GetActiveCamera());
+}
+
 void SceneView::setView(vis::ViewDirection view) {
   if (scene_) scene_->setView(view);
   invalidated_ = true;

@@ -37,6 +37,9 @@ class Inspector {
   void selectSample(std::size_t sample);
   bool selectLine(std::uint32_t line);
   void colourBy(const std::string& quantityName);  // "speed", "accel", ...
+  // Re-optimises the G1 moves of the lines in the background; the new map then stands beside
+  // the old one.
+  void optimise(std::uint32_t firstLine, std::uint32_t lastLine);
   const ui::Selection& selection() const;
   std::string statusText() const;
 

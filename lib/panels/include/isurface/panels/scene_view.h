@@ -29,6 +29,8 @@ class SceneView {
   void setScene(std::shared_ptr<vis::QualityScene> scene);  // null: nothing to show
   vis::QualityScene* scene() const { return scene_.get(); }
   void setView(vis::ViewDirection view);
+  // Looks at its scene the way another view looks at its own.
+  void copyCameraFrom(const SceneView& other);
 
   // Returns the colour texture to show (0 if none) at the given size (pixels), rendering again
   // only when something changed: the size, the scene, the camera, a drag, or invalidate().

@@ -1,0 +1,139 @@
+// Re-optimising a region from the application: choose the lines (or take the worst region the
+// quality prediction finds), optimise in the background, and see the new map beside the old
+// one, the same colour range and camera, with the region's figures; save the new program.
+#include <imgui.h>
+
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "inspector_state.h"
+#include "isurface/core/atomic_file.h"
+#include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/quality_regions.h"
+#include "isurface/core/region_optimizer.h"
+#include "isurface/core/simulator.h"
+#include "isurface/vis/quality_scene.h"
+
+namespace isurface::panels {
+
+void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last) {
+  Document* doc = activeDocument();
+  if (!doc || !doc->program || doc->programPath.empty() || !doc->samples) return;
+  vis::QualityMapRequest request = mapRequest();
+  request.fixedRange = doc->map.style.range;  // the same colours on both sides
+  auto result = std::make_shared<JobResult>();
+  pending = result;
+  const std::string path = doc->programPath;
+  std::shared_ptr<const Program> program = doc->program;
+  std::shared_ptr<const Trajectory> before = doc->samples;
+  const PassSet beforePasses = doc->map.passes;
+  job.start(fmt::format("optimising lines {}-{}", first, last),
+            [result, path, program, before, beforePasses, request, first, last](ui::JobControl& control) {
+              std::ifstream in(path, std::ios::binary);
+              std::stringstream text;
+              text << in.rdbuf();
+              const Machine machine = defaultMachine();
+              const OptimizeResult optimized = optimizeRegion(text.str(), *program, LineRange{first, last}, machine);
+              control.progress(0.2);
+              InterpretResult reread = interpretGcode(optimized.text, path);
+              if (!reread.ok()) throw InputError(reread.errors.front());
+              auto c = std::make_shared<Comparison>();
+              c->text = optimized.text;
+              c->first = first;
+              c->last = last;
+              c->program = std::make_shared<const Program>(std::move(reread.program));
+              SampleBuffer buffer;
+              simulate(*c->program, machine, buffer, [&](double f) { control.progress(0.2 + 0.5 * f); });
+              c->samples = std::make_shared<const Trajectory>(trajectoryFromSamples(buffer.data, machine.cycle, path));
+              c->map = vis::buildQualityMap(*c->samples, c->program.get(), request);
+              c->scene = std::make_shared<vis::QualityScene>(c->map.data, c->map.style);
+              control.progress(0.9);
+              const SurfaceMesh beforeMesh = buildSurfaceMesh(*before, beforePasses);
+              const RegionMetrics old =
+                  measureRegion(*before, beforeMesh, LineRange{first, last}, optimized.fittedLower, optimized.fittedUpper);
+              const RegionMetrics now = measureRegion(*c->samples, *c->map.mesh, optimized.newRange, optimized.fittedLower,
+                                                      optimized.fittedUpper);
+              c->timeBefore = before->size() * machine.cycle;
+              c->timeAfter = c->samples->size() * machine.cycle;
+              c->summary = fmt::format(
+                  "lines {}-{}: {} passes re-fitted. Machining time {:.1f} -> {:.1f} s. In the region: speed fluctuation "
+                  "{:.0f} -> {:.0f} mm/min, largest inconsistency between passes {:.0f} -> {:.0f} mm/min, jerk peak "
+                  "{:.0f} -> {:.0f} mm/s^3",
+                  first, last, optimized.passes.size(), c->timeBefore, c->timeAfter, old.speedFluctuation,
+                  now.speedFluctuation, old.maxSpeedInconsistency, now.maxSpeedInconsistency, old.maxJerk, now.maxJerk);
+              result->comparison = c;
+            });
+}
+
+void drawOptimiseDialog(Inspector::State& s) {
+  if (s.optimiseDialog) ImGui::OpenPopup("Optimise region");
+  s.optimiseDialog = false;
+  if (!ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  Document* doc = s.activeDocument();
+  ImGui::TextWrapped("Constant speed intervals, Akima fitting and one feed per interval, for the G1 moves of the lines:");
+  ImGui::InputInt("first line", &s.optimiseFirst);
+  ImGui::InputInt("last line", &s.optimiseLast);
+  if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
+    const QualityReport report = findQualityRegions(*doc->samples, *doc->map.mesh);
+    if (report.regions.empty()) {
+      s.status = "no region beyond the quality thresholds";
+    } else {
+      s.optimiseFirst = static_cast<int>(report.regions.front().firstLine);
+      s.optimiseLast = static_cast<int>(report.regions.front().lastLine);
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Selected line's pass") && s.selection.current().line) {
+    s.optimiseFirst = static_cast<int>(*s.selection.current().line);
+    s.optimiseLast = s.optimiseFirst + 100;
+  }
+  if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
+    s.startOptimise(static_cast<std::uint32_t>(s.optimiseFirst), static_cast<std::uint32_t>(s.optimiseLast));
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
+  beginPanel("After re-optimisation", x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
+  Comparison& c = *s.comparison;
+  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 10);
+  ImGui::TextUnformatted(c.summary.c_str());
+  ImGui::PopTextWrapPos();
+  ImGui::SetNextItemWidth(w * 0.5f);
+  ImGui::InputText("##save", s.savePath, sizeof s.savePath);
+  ImGui::SameLine();
+  if (ImGui::Button("Save program") && s.savePath[0]) {
+    try {
+      writeFileAtomically(s.savePath, c.text);
+      s.status = std::string("saved ") + s.savePath;
+    } catch (const std::exception& e) {
+      s.status = std::string("error: ") + e.what();
+    }
+  }
+  ImGui::SameLine();
+  const bool close = ImGui::Button("Close");
+  // Seen from where the map beside it is seen.
+  if (s.view.scene() && c.scene) s.afterView.copyCameraFrom(s.view);
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  const unsigned int texture = s.afterView.render(static_cast<int>(size.x), static_cast<int>(size.y));
+  if (texture) {
+    ImDrawList* draw = ImGui::GetWindowDrawList();
+    draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisableBlendForView(); }, nullptr);
+    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+    draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+  }
+  ImGui::End();
+  ImGui::PopStyleVar();
+  if (close) {
+    s.comparison.reset();
+    s.afterView.setScene(nullptr);
+  }
+}
+
+}  // namespace isurface::panels
