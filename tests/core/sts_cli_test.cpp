@@ -1,0 +1,56 @@
+// isurface-cli sts: NC program, JSON report, paper table and bad options.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "test_support.h"
+
+using namespace isurface::test;
+
+TEST(stsCli, WritesProgramAndReport) {
+  const std::string nc = (scratchDir() / "sinusoid.nc").string();
+  const std::string report = (scratchDir() / "sinusoid.json").string();
+  const CommandResult r = runCli("sts --surface sinusoid --discretise height --nodes nonuniform "
+                                 "--interp spline --radius 10 -o " + nc + " --report " + report);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string program = readFile(nc);
+  EXPECT_EQ(program.rfind("; slow tool servo turning tool path", 0), 0u);
+  EXPECT_NE(program.find("\nN1 X10.000000 C0.000000 Z"), std::string::npos);
+  EXPECT_NE(program.find("\nM30\n"), std::string::npos);
+  const auto j = nlohmann::json::parse(readFile(report));
+  EXPECT_EQ(j["surface"], "sinusoid");
+  EXPECT_EQ(j["discretise"], "height");
+  EXPECT_GT(j["contact_points"].get<int>(), 100);
+  EXPECT_GT(j["interpolation_nodes"].get<int>(), j["contact_points"].get<int>());
+  EXPECT_LT(j["spline_slope_disagreement_mm_per_rad"].get<double>(), 1e-9);
+  EXPECT_EQ(j["interpolation_error"]["per_segment_max_mm"].size(),
+            j["interpolation_nodes"].get<std::size_t>() - 1);
+  EXPECT_GE(j["discrete_error"]["max_mm"].get<double>(), 0.0);
+}
+
+TEST(stsCli, ExpressionSurface) {
+  const std::string report = (scratchDir() / "bowl.json").string();
+  const CommandResult r = runCli("sts --surface '(x^2+y^2)/200' --discretise angle --nodes uniform "
+                                 "--interp hermite --radius 5 --report " + report);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(nlohmann::json::parse(readFile(report))["nodes"], "uniform");
+}
+
+TEST(stsCli, PaperTables) {
+  const CommandResult r = runCli("sts --paper-tables");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("toric"), std::string::npos);
+  EXPECT_NE(r.out.find("sinusoid"), std::string::npos);
+}
+
+TEST(stsCli, BadOptionsExitTwo) {
+  const std::string nc = (scratchDir() / "bad.nc").string();
+  for (const std::string args : {"--discretise spiral", "--nodes random", "--interp linear",
+                                 "--surface 'x +'", "--surface 'sqrt(x-100)'", "--radius -1", "--feed 0", "--spindle-rpm 0"}) {
+    const CommandResult r = runCli("sts " + args + " -o " + nc);
+    EXPECT_EQ(r.exitCode, 2) << args;
+    EXPECT_FALSE(r.err.empty()) << args;
+  }
+  EXPECT_EQ(runCli("sts").exitCode, 2);  // nothing to write
+  EXPECT_FALSE(fileExists(nc));
+}
