@@ -9,6 +9,10 @@
 #include "isurface/core/atomic_file.h"
 #include "isurface/core/diagnostic.h"
 #include "isurface/core/sts_report.h"
+#include "isurface/core/sts_samples.h"
+#include "isurface/vis/quality_map.h"
+#include "offscreen_render.h"
+#include "trajectory_output.h"
 
 namespace isurface::cli {
 namespace {
@@ -17,7 +21,7 @@ constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
 
 struct StsOptions {
   std::string surface = "toric", discretise = "height", nodes = "nonuniform", interp = "spline";
-  std::string output, report;
+  std::string output, report, biip, png, color = "interpolation";
   bool paperTables = false;
   double radius = 0, feed = 0, angleStepDeg = 0, arcStep = 0, heightStep = 0, toolRadius = 0;
   double rhoMax = 0, spindleRpm = 10;
@@ -39,8 +43,10 @@ int runPaperTables() {
 
 int runSts(const StsOptions& o) {
   if (o.paperTables) return runPaperTables();
-  if (o.output.empty() && o.report.empty())
-    usage("sts: give -o PATH.nc and/or --report REPORT.json (or --paper-tables)");
+  if (o.output.empty() && o.report.empty() && o.biip.empty() && o.png.empty())
+    usage("sts: give -o PATH.nc, --report REPORT.json, --biip OUT.biip or --png MAP.png (or --paper-tables)");
+  if (o.color != "discrete" && o.color != "interpolation")
+    usage("sts: --color is discrete or interpolation (error)");
   StsJobOptions job;
   job.discretisation = parseStsDiscretisation(o.discretise);
   job.nodes = parseStsNodes(o.nodes);
@@ -64,7 +70,21 @@ int runSts(const StsOptions& o) {
   const StsJobResult r = runStsJob(*surface, p, job);
   if (!std::isfinite(r.discrete.max) || !std::isfinite(r.interpolation.max))
     usage("sts: the surface is not finite along the tool path (check the expression's domain)");
-  if (!o.output.empty()) writeFileAtomically(o.output, formatStsNcProgram(*surface, p, job, r));
+  const std::string program = formatStsNcProgram(*surface, p, job, r);
+  if (!o.output.empty()) writeFileAtomically(o.output, program);
+  if (!o.biip.empty() || !o.png.empty()) {
+    const Trajectory samples = stsTrajectory(r, job, program, o.output.empty() ? surface->name() : o.output);
+    if (!o.biip.empty()) writeTrajectoryBiip(samples, o.biip);
+    if (!o.png.empty()) {
+      vis::QualityMapRequest request;
+      request.channel = o.color + "_error_um";
+      request.view = vis::ViewDirection::Iso;
+      request.caption = surface->name() + ": " + o.discretise + " discretisation, " + o.nodes + " " + o.interp;
+      vis::QualityMap map = vis::buildQualityMap(samples, nullptr, request);
+      vis::QualityScene scene(map.data, map.style);
+      renderSceneToPng(scene, 1600, 1000, o.png);
+    }
+  }
   if (!o.report.empty()) writeFileAtomically(o.report, stsReportJson(*surface, p, job, r).dump(2) + "\n");
   std::printf("%s: %zu CCPs (%s), %zu nodes (%s, %s); max discrete error %.4g um, "
               "max interpolation error %.4g um\n",
@@ -84,6 +104,9 @@ const bool registered = registerCommand(
       sub.add_option("--interp", o->interp, "hermite, spline (three-slope) or spline-moment");
       sub.add_option("-o,--output", o->output, "NC program to write");
       sub.add_option("--report", o->report, "JSON error report to write");
+      sub.add_option("--biip", o->biip, "the tool path as a Biip dump (one sample a node, errors as channels)");
+      sub.add_option("--png", o->png, "render the tool path's surface coloured by an error");
+      sub.add_option("--color", o->color, "discrete or interpolation (error) for --png")->capture_default_str();
       sub.add_flag("--paper-tables", o->paperTables, "compare with the paper's reported reductions");
       o->radiusOpt = sub.add_option("--radius", o->radius, "workpiece radius R, mm");
       o->feedOpt = sub.add_option("--feed", o->feed, "feed per revolution a_f, mm/rev");

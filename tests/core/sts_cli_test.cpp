@@ -54,3 +54,21 @@ TEST(stsCli, BadOptionsExitTwo) {
   EXPECT_EQ(runCli("sts").exitCode, 2);  // nothing to write
   EXPECT_FALSE(fileExists(nc));
 }
+
+namespace {
+
+// The tool path as a dump (one sample a node, errors as channels) and as a map.
+TEST(stsCli, WritesTheToolPathAsADumpAndAMap) {
+  const std::string dump = (isurface::test::scratchDir() / "path.biip").string();
+  const std::string png = (isurface::test::scratchDir() / "path.png").string();
+  const auto r = isurface::test::runCli("sts --surface toric --biip " + dump + " --png " + png + " --color discrete");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto info = isurface::test::runCli("info " + dump);
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  for (const char* channel : {"\"discrete_error_um\"", "\"interpolation_error_um\"", "\"line\"", "\"t\""})
+    EXPECT_NE(info.out.find(channel), std::string::npos) << channel;
+  EXPECT_TRUE(isurface::test::fileExists(png));
+  EXPECT_EQ(isurface::test::runCli("sts --surface toric --png " + png + "2 --color nonsense").exitCode, 2);
+}
+
+}  // namespace

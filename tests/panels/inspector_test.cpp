@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "isurface/core/diagnostic.h"
 #include "isurface/panels/inspector.h"
 #include "test_support.h"
 #include "vis/image_compare.h"
@@ -108,4 +109,19 @@ TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
   inspector.optimise(1, 5);  // the header: no G1 moves to re-fit
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
+}
+
+// A slow tool servo path written as a dump opens alone and is coloured by its error channels.
+TEST(inspector, SlowToolServoPathColouredByItsError) {
+  const std::string dump = (scratchDir() / "sts.biip").string();
+  ASSERT_EQ(runCli("sts --surface sinusoid --interp hermite --biip " + dump).exitCode, 0);
+  panels::Inspector inspector(noContext(), ui::Settings{});
+  inspector.open(dump);
+  inspector.waitUntilIdle();
+  ASSERT_NE(inspector.statusText().find("samples"), std::string::npos) << inspector.statusText();
+  inspector.colourBy("interpolation_error_um");
+  inspector.waitUntilIdle();
+  EXPECT_NE(inspector.statusText().find("coloured by interpolation_error_um"), std::string::npos)
+      << inspector.statusText();
+  EXPECT_THROW(inspector.colourBy("no_such_channel"), InputError);
 }

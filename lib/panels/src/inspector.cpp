@@ -27,6 +27,7 @@ bool looksLikeBiip(const std::string& path) {
 vis::QualityMapRequest Inspector::State::mapRequest() const {
   vis::QualityMapRequest r;
   r.quantity = settings.quantity;
+  r.channel = settings.channel;
   r.colorMap = settings.colorMap;
   r.view = settings.view;
   if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
@@ -107,7 +108,8 @@ void Inspector::State::takeJobResult() {
     view.setScene(doc->scene);
     doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
     shownGeneration = ~std::uint64_t(0);
-    status = doc->name + ": coloured by " + quantityInfo(settings.quantity).label;
+    status = doc->name + ": coloured by " +
+             (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);
   }
 }
 
@@ -212,12 +214,19 @@ void Inspector::waitUntilIdle() {
 void Inspector::selectSample(std::size_t sample) { state_->selection.selectSample(sample); }
 bool Inspector::selectLine(std::uint32_t line) { return state_->selection.selectLine(line); }
 
-void Inspector::colourBy(const std::string& quantityName) {
-  const auto q = parseQuantity(quantityName);
-  if (!q) throw InputError(Diagnostic{"", 0, 0, "unknown quantity '" + quantityName + "'"});
-  state_->settings.quantity = *q;
-  state_->persistent.quantity = quantityName;
-  state_->startRecolour();
+void Inspector::colourBy(const std::string& name) {
+  State& s = *state_;
+  if (const auto q = parseQuantity(name)) {
+    s.settings.quantity = *q;
+    s.settings.channel.clear();
+    s.persistent.quantity = name;
+  } else {
+    const Document* doc = s.activeDocument();
+    if (!doc || !doc->samples || !doc->samples->extraChannel(name))
+      throw InputError(Diagnostic{"", 0, 0, "unknown quantity or channel '" + name + "'"});
+    s.settings.channel = name;
+  }
+  s.startRecolour();
 }
 
 void Inspector::optimise(std::uint32_t firstLine, std::uint32_t lastLine) { state_->startOptimise(firstLine, lastLine); }

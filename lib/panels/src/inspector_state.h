@@ -39,6 +39,7 @@ struct Document {
 
 struct ViewSettings {
   Quantity quantity = Quantity::Speed;
+  std::string channel;  // when not empty: colour by this channel of the samples instead
   std::string colorMap = "rainbow";
   int rangeMode = 0;  // 0 percentile 1-99 %, 1 full extent, 2 fixed
   float fixedLow = 0, fixedHigh = 3000;

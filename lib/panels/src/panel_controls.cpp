@@ -147,17 +147,26 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   beginPanel("Colour", x, y, w, h);
   bool recolour = false;
   const QuantityInfo& current = quantityInfo(s.settings.quantity);
+  const bool byChannel = !s.settings.channel.empty();
   ImGui::SetNextItemWidth(-1);
-  if (ImGui::BeginCombo("##quantity", current.label)) {
+  if (ImGui::BeginCombo("##quantity", byChannel ? s.settings.channel.c_str() : current.label)) {
     for (const QuantityInfo& q : quantityInfos())
-      if (ImGui::Selectable(q.label, q.quantity == s.settings.quantity)) {
+      if (ImGui::Selectable(q.label, !byChannel && q.quantity == s.settings.quantity)) {
         s.settings.quantity = q.quantity;
+        s.settings.channel.clear();
         s.persistent.quantity = q.name;
         recolour = true;
       }
+    // The dump's own channels (errors of a slow tool servo path, currents, ...).
+    if (Document* doc = s.activeDocument(); doc && doc->samples)
+      for (const auto& [name, values] : doc->samples->extra)
+        if (ImGui::Selectable(name.c_str(), s.settings.channel == name)) {
+          s.settings.channel = name;
+          recolour = true;
+        }
     ImGui::EndCombo();
   }
-  ImGui::Text("unit: %s", current.unit);
+  if (!byChannel) ImGui::Text("unit: %s", current.unit);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
     for (const std::string& name : vis::colorMapNames())

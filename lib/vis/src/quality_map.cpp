@@ -16,6 +16,23 @@ std::string rangeText(const ValueRange& r) {
   return fmt::format("{:.4g} .. {:.4g}", r.lo, r.hi);
 }
 
+// A channel's unit from its name's suffix, as the Biip channel names spell them.
+std::string channelUnit(const std::string& channel) {
+  for (const char* unit : {"um", "mm", "s", "deg", "mm_min", "mm_s2", "mm_s3"}) {
+    const std::string suffix = std::string("_") + unit;
+    if (channel.size() > suffix.size() && channel.compare(channel.size() - suffix.size(), suffix.size(), suffix) == 0)
+      return unit;
+  }
+  return "";
+}
+
+std::vector<float> scalarsFor(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh) {
+  if (request.channel.empty()) return vertexQuantity(request.quantity, samples, mesh);
+  auto values = vertexExtraChannel(samples, mesh, request.channel);
+  if (!values) throw InputError(Diagnostic{samples.source, 0, 0, "the samples have no channel '" + request.channel + "'"});
+  return std::move(*values);
+}
+
 }  // namespace
 
 std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
@@ -50,7 +67,7 @@ std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
 
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request) {
   const QuantityInfo& info = quantityInfo(request.quantity);
-  if ((info.needsFeedback || request.feedbackSurface) && !samples.hasFeedback())
+  if (((request.channel.empty() && info.needsFeedback) || request.feedbackSurface) && !samples.hasFeedback())
     throw InputError(Diagnostic{samples.source, 0, 0,
                                 std::string("no feedback channels (fb_x fb_y fb_z): cannot show ") +
                                     (request.feedbackSurface ? "the feedback surface" : info.label)});
@@ -71,13 +88,13 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();
-  map.data.scalars = vertexQuantity(request.quantity, samples, *map.mesh);
+  map.data.scalars = scalarsFor(request, samples, *map.mesh);
   if (request.coarseVertices > 0 && cutting > 2 * request.coarseVertices) {
     meshOptions.stride = (cutting + request.coarseVertices - 1) / request.coarseVertices;
     map.coarseMesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
     map.data.coarsePositions = meshPositions(samples, *map.coarseMesh, request.feedbackSurface);
     map.data.coarseMesh = map.coarseMesh.get();
-    map.data.coarseScalars = vertexQuantity(request.quantity, samples, *map.coarseMesh);
+    map.data.coarseScalars = scalarsFor(request, samples, *map.coarseMesh);
   }
   if (request.showToolpath && request.colorToolpath) {
     // The passes as sampled, through the surface's own vertices and values.
@@ -107,8 +124,8 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   if (request.fixedRange) style.range = *request.fixedRange;
   else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
   else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);
-  style.quantityLabel = info.label;
-  style.unit = info.unit;
+  style.quantityLabel = request.channel.empty() ? info.label : request.channel;
+  style.unit = request.channel.empty() ? info.unit : channelUnit(request.channel);
   style.view = request.view;
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;
@@ -117,7 +134,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
                                                              ? "full"
                                                              : fmt::format("{:g}-{:g}%", request.lowPercent, request.highPercent);
   style.caption = fmt::format("{}{}{} [{}] on the {} surface\nrange {} ({}), {} {} passes",
-                              request.caption, request.caption.empty() ? "" : "\n", info.label, info.unit,
+                              request.caption, request.caption.empty() ? "" : "\n", style.quantityLabel, style.unit,
                               request.feedbackSurface ? "feedback" : "commanded", rangeText(style.range), rangeKind,
                               map.passes.passes.size(), pathPatternName(map.passes.pattern));
   if (request.highlightLine)

@@ -15,6 +15,7 @@ namespace isurface::vis {
 
 struct QualityMapRequest {
   Quantity quantity = Quantity::Speed;
+  std::string channel;                       // when not empty: colour by this channel of the dump instead
   bool feedbackSurface = false;              // the surface of the feedback positions
   std::optional<std::uint32_t> highlightLine;
   std::string colorMap = "rainbow";
