@@ -36,13 +36,17 @@ std::pair<int, int> parseSize(const std::string& text) {
 
 vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   vis::QualityMapRequest request;
-  const auto quantity = parseQuantity(o.color);
-  if (!quantity) {
+  // A quantity iSurface derives, or else a channel of the dump by its name.
+  if (const auto quantity = parseQuantity(o.color)) {
+    request.quantity = *quantity;
+  } else if (!o.biip.empty()) {
+    request.channel = o.color;
+  } else {
     std::string known;
     for (const QuantityInfo& q : quantityInfos()) known += std::string(known.empty() ? "" : ", ") + q.name;
-    throw InputError(Diagnostic{"", 0, 0, "unknown --color '" + o.color + "' (known: " + known + ")"});
+    throw InputError(Diagnostic{"", 0, 0, "unknown --color '" + o.color + "' (known: " + known +
+                                              ", or a channel of the Biip dump given)"});
   }
-  request.quantity = *quantity;
   const auto view = vis::parseView(o.view);
   if (!view) throw InputError(Diagnostic{"", 0, 0, "unknown --view '" + o.view + "' (iso, top, front, left)"});
   request.view = *view;
@@ -88,7 +92,7 @@ int runRender(const RenderOptions& o) {
   const double renderSeconds = renderSceneToPng(scene, width, height, o.output);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %s [%s] %.4g .. %.4g, %zu samples, %zu passes (%s), %zu triangles, render %.2f s, total %.2f s\n",
-              o.output.c_str(), quantityInfo(request.quantity).name, quantityInfo(request.quantity).unit,
+              o.output.c_str(), map.style.quantityLabel.c_str(), map.style.unit.c_str(),
               map.style.range.lo, map.style.range.hi, samples.size(), map.passes.passes.size(),
               pathPatternName(map.passes.pattern), map.mesh->triangles.size(), renderSeconds, total);
   return kExitOk;
