@@ -2,6 +2,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <memory>
 
 #include "command.h"
@@ -26,6 +27,13 @@ struct RenderOptions {
   int isoBands = 12;
 };
 
+bool isBiipFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::string(magic, 4) == "BIIP";
+}
+
 std::pair<int, int> parseSize(const std::string& text) {
   int w = 0, h = 0;
   char extra = 0;
@@ -39,7 +47,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   // A quantity iSurface derives, or else a channel of the dump by its name.
   if (const auto quantity = parseQuantity(o.color)) {
     request.quantity = *quantity;
-  } else if (!o.biip.empty()) {
+  } else if (!o.biip.empty() || isBiipFile(o.gcode)) {
     request.channel = o.color;
   } else {
     std::string known;
@@ -81,11 +89,15 @@ int runRender(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const auto [width, height] = parseSize(o.size);
   vis::QualityMapRequest request = makeRequest(o);
-  const Program program = loadProgram(o.gcode, false);
-  const Trajectory samples = o.biip.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
-                                            : readTrajectory(o.biip);
+  // A dump alone (no program: a slow tool servo path, a machine trace) is shown as it is.
+  const bool dumpOnly = o.biip.empty() && isBiipFile(o.gcode);
+  const std::string dump = dumpOnly ? o.gcode : o.biip;
+  if (dumpOnly && !parseQuantity(o.color)) request.channel = o.color;
+  const Program program = dumpOnly ? Program{} : loadProgram(o.gcode, false);
+  const Trajectory samples = dump.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
+                                          : readTrajectory(dump);
   ProgressLine building("building the surface");
-  vis::QualityMap map = vis::buildQualityMap(samples, &program, request);
+  vis::QualityMap map = vis::buildQualityMap(samples, dumpOnly ? nullptr : &program, request);
   map.style.fontSize = vis::fontSizeForHeight(height);
   building.finish();
   vis::QualityScene scene(map.data, map.style);
@@ -102,7 +114,7 @@ const bool registered = registerCommand(
     "render", "Render a quality map of a program (simulated, or from its Biip dump) to a PNG, headless",
     [](CLI::App& sub) {
       auto o = std::make_shared<RenderOptions>();
-      sub.add_option("gcode", o->gcode, "G-code program")->required();
+      sub.add_option("gcode", o->gcode, "G-code program (or a Biip dump alone, shown without a program)")->required();
       sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
       sub.add_option("-o,--output", o->output, "PNG file to write")->required();
       sub.add_option("--color", o->color, "quantity to colour by: speed, accel, jerk, vx.., ax.., jx.., "

@@ -69,6 +69,12 @@ TEST(stsCli, WritesTheToolPathAsADumpAndAMap) {
     EXPECT_NE(info.out.find(channel), std::string::npos) << channel;
   EXPECT_TRUE(isurface::test::fileExists(png));
   EXPECT_EQ(isurface::test::runCli("sts --surface toric --png " + png + "2 --color nonsense").exitCode, 2);
+  // render shows the dump alone, coloured by either error channel.
+  const std::string map = (isurface::test::scratchDir() / "render.png").string();
+  const auto rendered = isurface::test::runCli("render " + dump + " --color interpolation_error_um --size 400x300 -o " + map);
+  EXPECT_EQ(rendered.exitCode, 0) << rendered.err;
+  EXPECT_TRUE(isurface::test::fileExists(map));
+  EXPECT_EQ(isurface::test::runCli("render " + dump + " --color no_such_channel -o " + map + "2").exitCode, 2);
 }
 
 }  // namespace
