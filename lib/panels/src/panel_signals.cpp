@@ -12,6 +12,23 @@ namespace isurface::panels {
 
 namespace {
 
+// The span a curve is drawn over: the 0.5-99.5 % percentiles of an even subsample of the shown
+// samples, so that a few rapids at 20 m/min do not flatten the cutting speed into a line.
+std::pair<float, float> displayRange(const ui::SignalPyramid& values, std::size_t first, std::size_t last) {
+  std::vector<float> picked;
+  const std::size_t step = std::max<std::size_t>(1, (last - first) / 4096);
+  for (std::size_t i = first; i < last; i += step)
+    if (std::isfinite(values.value(i))) picked.push_back(values.value(i));
+  if (picked.size() < 8) return values.range(first, last);
+  auto rank = [&](double fraction) {
+    const std::size_t k = static_cast<std::size_t>(fraction * (picked.size() - 1));
+    std::nth_element(picked.begin(), picked.begin() + k, picked.end());
+    return picked[k];
+  };
+  const float lo = rank(0.005), hi = rank(0.995);
+  return hi > lo ? std::make_pair(lo, hi) : values.range(first, last);
+}
+
 void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImVec2 origin, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
@@ -19,15 +36,18 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
   const int columns = std::max(1, static_cast<int>(size.x));
   const std::size_t first = s.curveFirst, last = std::max(s.curveLast, s.curveFirst + 1);
   const ui::Envelope envelope = curve.values.envelope(first, last, columns);
-  const auto [lo, hi] = curve.values.range(first, last);
+  const auto [lo, hi] = displayRange(curve.values, first, last);
   const float span = (std::isfinite(lo) && std::isfinite(hi) && hi > lo) ? hi - lo : 1.0f;
   auto toY = [&](float v) { return end.y - 2 - (v - (std::isfinite(lo) ? lo : 0)) / span * (size.y - 4); };
+  draw->PushClipRect(origin, end, true);
   for (int c = 0; c < columns; ++c) {
     const float a = envelope.low[c], b = envelope.high[c];
     if (!std::isfinite(a) || !std::isfinite(b)) continue;
     const float px = origin.x + c + 0.5f;
-    draw->AddLine(ImVec2(px, toY(b)), ImVec2(px, toY(a) + 1), IM_COL32(110, 200, 255, 255));
+    draw->AddLine(ImVec2(px, std::max(toY(b), origin.y)), ImVec2(px, std::min(toY(a) + 1, end.y)),
+                  IM_COL32(110, 200, 255, 255));
   }
+  draw->PopClipRect();
   char label[160];
   std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), curve.unit.c_str(), lo, hi);
   draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
