@@ -1,0 +1,90 @@
+// isurface-cli import: a recorded machine trace (LinuxCNC halsampler text or CSV) -> Biip dump.
+#include <cstdio>
+#include <memory>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/core/line_mapping.h"
+#include "isurface/core/trace_import.h"
+#include "trajectory_output.h"
+
+namespace isurface::cli {
+namespace {
+
+struct ImportOptions {
+  std::string format, input, output, map, preset, gcode;
+  double cycle = 0;  // s, 0: the format's or preset's default
+  std::size_t lookahead = LineMappingOptions{}.lookaheadMoves;
+  bool linuxcncLines = false;
+};
+
+TraceImportOptions traceOptions(const ImportOptions& o) {
+  TraceImportOptions t;
+  if (!o.preset.empty()) {
+    if (o.preset != "umich") throw InputError(Diagnostic{"--preset", 0, 0, "unknown preset '" + o.preset + "' (known: umich)"});
+    if (o.format != "csv") throw InputError(Diagnostic{"--preset", 0, 0, "preset 'umich' is for csv traces"});
+    t = umichPreset();
+  }
+  // --map replaces the whole default mapping: leaving a column out is how to drop it.
+  if (!o.map.empty()) t.columns = parseColumnMap(o.map);
+  if (o.cycle > 0) t.cycle = o.cycle;
+  if (o.format == "csv" && t.columns.empty())
+    throw InputError(Diagnostic{o.input, 0, 0, "a csv trace needs --map or --preset"});
+  return t;
+}
+
+void printMappingReport(const LineMappingReport& r) {
+  std::printf("line mapping: %zu samples, distance to the path mean %.4f mm, max %.4f mm, %.1f%% within %g mm\n",
+              r.samples, r.meanDistance, r.maxDistance, 100.0 * r.fractionWithin, r.tolerance);
+}
+
+int runImport(const ImportOptions& o) {
+  if (!(o.cycle >= 0)) throw InputError(Diagnostic{"--cycle", 0, 0, "the cycle must be > 0 s"});
+  const TraceImportOptions options = traceOptions(o);
+  Trajectory trace = o.format == "halsampler" ? importHalsampler(o.input, options) : importCsv(o.input, options);
+  std::printf("%s: %zu samples at %g ms%s%s\n", o.input.c_str(), trace.size(), trace.cycle * 1000.0,
+              trace.hasLine ? ", with lines" : "", trace.hasFeedback() ? ", with feedback" : "");
+  if (!o.gcode.empty()) {
+    const Program program = loadProgram(o.gcode, false, false);
+    LineMappingOptions mappingOptions = o.linuxcncLines ? linuxcncLineMappingOptions() : LineMappingOptions{};
+    mappingOptions.lookaheadMoves = o.lookahead;
+    LineMapping mapping = mapSamplesToLines(trace, program, mappingOptions);
+    printMappingReport(mapping.report);
+    if (trace.hasLine) {
+      // The recorded lines are kept; how far the mapping agrees tells how trustworthy it is.
+      std::size_t compared = 0, agree = 0;
+      for (std::size_t i = 0; i < trace.size(); ++i)
+        if (trace.line[i] != 0) ++compared, agree += trace.line[i] == mapping.line[i];
+      std::printf("recorded lines kept; the mapping agrees on %.1f%% of %zu samples with a line\n",
+                  compared ? 100.0 * double(agree) / double(compared) : 0.0, compared);
+    } else {
+      trace.line = std::move(mapping.line);
+      trace.hasLine = true;
+    }
+  }
+  writeTrajectoryBiip(trace, o.output);
+  std::printf("-> %s\n", o.output.c_str());
+  return kExitOk;
+}
+
+const bool registered = registerCommand(
+    "import", "Convert a recorded machine trace (halsampler text or CSV) to a Biip dump",
+    [](CLI::App& sub) {
+      auto o = std::make_shared<ImportOptions>();
+      sub.add_option("format", o->format, "trace format")->required()->check(CLI::IsMember({"halsampler", "csv"}));
+      sub.add_option("trace", o->input, "recorded trace file")->required();
+      sub.add_option("-o,--output", o->output, "Biip file to write")->required();
+      sub.add_option("--map", o->map,
+                     "role=column,... (roles x y z fb_x fb_y fb_z feed line t, others kept as channels; "
+                     "columns: 0-based index for halsampler, header name for csv)");
+      sub.add_option("--preset", o->preset, "csv column preset: umich");
+      sub.add_option("--cycle", o->cycle, "sample period, s (default 0.001; umich 0.1)");
+      sub.add_option("--gcode", o->gcode, "the program the trace ran: maps samples to lines when the trace has none");
+      sub.add_option("--lookahead", o->lookahead, "line mapping: moves ahead a sample may land on");
+      sub.add_flag("--linuxcnc-lines", o->linuxcncLines,
+                   "line mapping: give blends into a move its line, as LinuxCNC reports them");
+      return [o] { return runImport(*o); };
+    });
+
+}  // namespace
+}  // namespace isurface::cli
