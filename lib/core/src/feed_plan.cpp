@@ -4,7 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "isurface/core/diagnostic.h"
 #include "isurface/core/path_segment.h"
+
+#include <fmt/format.h>
 
 namespace isurface {
 
@@ -14,6 +17,9 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // No segment is planned slower than this (mm/s): degenerate geometry (a 1e-9 mm arc) must
 // still be passed in finite time, not skipped.
 constexpr double kSlowestSpeed = 0.1;
+// A single move or dwell longer than this (s) is a mistake in the program, not machining: it
+// would make billions of samples.
+constexpr double kLongestMove = 24 * 3600.0;
 
 // Odd number of cycles closest to a filter time, at least 1.
 int filterTaps(double time, double cycle) {
@@ -91,6 +97,10 @@ class Planner {
       const Move& move = program_.moves[i];
       if (move.kind == MoveKind::Dwell) {
         const double seconds = std::max(0.0, move.dwellSeconds());
+        if (seconds > kLongestMove)
+          throw InputError(Diagnostic{program_.source, move.line, 0,
+                                      fmt::format("a dwell of {:.0f} s is longer than {:.0f} h: not a real program",
+                                                  seconds, kLongestMove / 3600)});
         if (plan.segments.empty()) plan.holdBefore += seconds;
         else plan.segments.back().holdAfter += seconds;
         stopAtJunction(plan);
@@ -112,6 +122,13 @@ class Planner {
     }
     junction_.back() = 0.0;  // and ends at rest
     solveSpeeds(plan);
+    for (const PlannedSegment& segment : plan.segments)
+      if (segment.motionTime() > kLongestMove) {
+        const Move& move = program_.moves[segment.move];
+        throw InputError(Diagnostic{program_.source, move.line, 0,
+                                    fmt::format("this move takes {:.0f} h at F{:g}: an impossible feed for {:.1f} mm",
+                                                segment.motionTime() / 3600, move.feed, segment.length)});
+      }
     if (progress) progress(1.0);
     return plan;
   }

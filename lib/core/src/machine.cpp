@@ -55,7 +55,7 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   json root;
   try {
     root = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // malformed text, or a number beyond a double
     fail(source, std::string("not valid JSON: ") + e.what());
   }
   if (!root.is_object()) fail(source, "a machine description must be a JSON object");
@@ -67,8 +67,10 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   m.cycle = number(root, "cycle_s", m.cycle, source, "");
   requirePositive(m.cycle, source, "cycle_s");
   if (m.cycle > 0.1) fail(source, "cycle_s must be at most 0.1 s");
-  m.rapidVelocity = number(root, "rapid_mm_min", m.rapidVelocity * 60, source, "") / 60.0;
-  requirePositive(m.rapidVelocity, source, "rapid_mm_min");
+  // Checked as written (mm/min), then kept in mm/s.
+  const double rapid = number(root, "rapid_mm_min", m.rapidVelocity * 60, source, "");
+  requirePositive(rapid, source, "rapid_mm_min");
+  m.rapidVelocity = rapid / 60.0;
   m.chordTolerance = number(root, "chord_tolerance_mm", m.chordTolerance, source, "");
   requirePositive(m.chordTolerance, source, "chord_tolerance_mm");
 
@@ -85,8 +87,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       const std::string where = std::string("axes.") + names[i] + ".";
       if (!a.is_object()) fail(source, where.substr(0, where.size() - 1) + " must be an object");
       AxisLimits& limits = m.axes[i];
-      limits.maxVelocity = number(a, "max_velocity_mm_min", limits.maxVelocity * 60, source, where) / 60.0;
-      requirePositive(limits.maxVelocity, source, where + "max_velocity_mm_min");
+      const double velocity = number(a, "max_velocity_mm_min", limits.maxVelocity * 60, source, where);
+      requirePositive(velocity, source, where + "max_velocity_mm_min");
+      limits.maxVelocity = velocity / 60.0;
       limits.maxAcceleration = number(a, "max_acceleration_mm_s2", limits.maxAcceleration, source, where);
       requirePositive(limits.maxAcceleration, source, where + "max_acceleration_mm_s2");
       if (a.contains("max_jerk_mm_s3") && a["max_jerk_mm_s3"].is_null()) {
@@ -94,6 +97,10 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       } else {
         limits.maxJerk = number(a, "max_jerk_mm_s3", limits.maxJerk, source, where);
         if (limits.maxJerk < 0) fail(source, where + "max_jerk_mm_s3 must be >= 0 (0 or null: not limited)");
+        // The jerk filter lasts about twice acceleration / jerk: beyond a second it is no machine.
+        if (limits.maxJerk > 0 && limits.maxJerk < limits.maxAcceleration)
+          fail(source, where + "max_jerk_mm_s3 must be 0 (not limited) or at least max_acceleration_mm_s2 per second (got " +
+                           std::to_string(limits.maxJerk) + ")");
       }
       limits.positionGain = number(a, "position_gain_1_s", limits.positionGain, source, where);
       requirePositive(limits.positionGain, source, where + "position_gain_1_s");

@@ -200,8 +200,9 @@ NonUniformNodes nonUniformNodeAngles(const StsSurface& surface, const SpiralPara
     const double a = contactPoints[i].theta, b = contactPoints[i + 1].theta;
     const double rho = std::max({atPoint[i], atPoint[i + 1], trajectoryCurvature(surface, p, 0.5 * (a + b))});
     int extra = 0;
+    // Capped in double before the cast: a near-infinite ratio must not overflow an int.
     if (out.rhoMax > 0 && rho > out.rhoMax)
-      extra = std::min(maxInserted, static_cast<int>(std::ceil(rho / out.rhoMax)) - 1);
+      extra = static_cast<int>(std::min<double>(maxInserted, std::ceil(rho / out.rhoMax) - 1));
     for (int j = 1; j <= extra; ++j) out.theta.push_back(a + (b - a) * j / (extra + 1));
     out.inserted += std::max(0, extra);
     out.theta.push_back(b);
