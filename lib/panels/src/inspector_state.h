@@ -1,6 +1,8 @@
 #pragma once
 // What the inspector's panels share: the open documents, the selection, the view settings and
 // the background job. Internal to the panels library.
+#include <imgui.h>
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -111,9 +113,10 @@ struct Inspector::State {
   void syncHighlight();
 };
 
-// Turns blending off while a 3D view's frame is drawn (from an ImGui draw callback): where VTK
-// blended translucent glow its alpha is below one, and the panel behind must not show through.
-void glDisableBlendForView();
+// Draws a 3D view's frame (VTK's colour texture) at the cursor: flipped, as VTK's frames are
+// bottom-up, and without blending, since where VTK blended translucent glow its alpha is
+// below one and the panel behind must not show through.
+void drawViewFrame(unsigned int texture, ImVec2 size);
 
 // Opens one window of the fixed layout at its place (ImGui::End() closes it).
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags = 0);

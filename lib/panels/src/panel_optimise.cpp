@@ -122,12 +122,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   if (s.view.scene() && c.scene) s.afterView.copyCameraFrom(s.view);
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const unsigned int texture = s.afterView.render(static_cast<int>(size.x), static_cast<int>(size.y));
-  if (texture) {
-    ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisableBlendForView(); }, nullptr);
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
-    draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
-  }
+  if (texture) drawViewFrame(texture, size);
   ImGui::End();
   ImGui::PopStyleVar();
   if (close) {

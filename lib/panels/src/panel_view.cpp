@@ -11,7 +11,12 @@
 
 namespace isurface::panels {
 
-void glDisableBlendForView() { glDisable(GL_BLEND); }
+void drawViewFrame(unsigned int texture, ImVec2 size) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
+  ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
+  draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
+}
 
 void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0, 0));
@@ -20,11 +25,8 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const unsigned int texture = s.view.render(static_cast<int>(size.x), static_cast<int>(size.y));
   if (texture) {
-    // VTK's frame is bottom-up: flip it; no blending (see glDisableBlendForView).
+    drawViewFrame(texture, size);
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisableBlendForView(); }, nullptr);
-    ImGui::Image(reinterpret_cast<ImTextureID>(static_cast<std::uintptr_t>(texture)), size, ImVec2(0, 1), ImVec2(1, 0));
-    draw->AddCallback(ImDrawCallback_ResetRenderState, nullptr);
     // The picked sample's values, as the paper's window shows them (line, point, speed).
     const ui::Selection& sel = s.selection.current();
     Document* doc = s.activeDocument();
