@@ -55,6 +55,7 @@ int runAnalyze(const AnalyzeOptions& o) {
                        {"area_mm2", r.area},
                        {"bounding_box", {{"min", point(r.lower)}, {"max", point(r.upper)}}},
                        {"centroid", point(r.centroid)},
+                       {"at_pass_ends", r.atPassEnds},
                        {"worst_sample", r.worstSample},
                        {"worst_line", samples.line[r.worstSample]},
                        {"max_speed_inconsistency_mm_min", r.maxSpeedInconsistency},
@@ -78,9 +79,11 @@ int runAnalyze(const AnalyzeOptions& o) {
   writeFileAtomically(o.output, out.dump(2) + "\n");
 
   if (!o.png.empty()) {
-    if (!report.regions.empty()) {
-      // The most severe region's worst line glows.
-      const std::uint32_t line = samples.line[report.regions.front().worstSample];
+    const QualityRegion* worst = worstRegionInsidePasses(report);
+    if (!worst && !report.regions.empty()) worst = &report.regions.front();
+    if (worst) {
+      // The worst line of the most severe region that re-fitting can improve glows.
+      const std::uint32_t line = samples.line[worst->worstSample];
       for (std::size_t i = 0; i < samples.size(); ++i)
         if (samples.line[i] == line) map.data.highlight.push_back(samples.commanded(i));
     }
@@ -90,8 +93,13 @@ int runAnalyze(const AnalyzeOptions& o) {
   std::printf("%s: %zu regions beyond the thresholds (%zu of %zu vertices)", o.output.c_str(), report.regions.size(),
               report.flaggedVertices, report.vertices);
   if (!report.regions.empty())
-    std::printf("; worst at lines %u-%u, severity %.1f", report.regions.front().firstLine,
-                report.regions.front().lastLine, report.regions.front().severity);
+    std::printf("; worst at lines %u-%u, severity %.1f%s", report.regions.front().firstLine,
+                report.regions.front().lastLine, report.regions.front().severity,
+                report.regions.front().atPassEnds ? " (where passes start and end)" : "");
+  const QualityRegion* inside = worstRegionInsidePasses(report);
+  if (inside && inside != &report.regions.front())
+    std::printf("; worst inside the passes at lines %u-%u, severity %.1f", inside->firstLine, inside->lastLine,
+                inside->severity);
   std::printf("\n");
   return kExitOk;
 }

@@ -1,5 +1,7 @@
 // isurface-cli optimize: re-optimise a region of a program (constant speed intervals, Akima
 // fitting, interval speed planning), write the new program, re-simulate both and compare.
+#include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <fstream>
 #include <memory>
@@ -52,6 +54,29 @@ std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   return points;
 }
 
+// A region's lines widened to whole passes and one more pass on each side: optimising only
+// part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
+// unchanged neighbour) inside the region.
+LineRange widenToPasses(const Run& run, LineRange lines) {
+  const std::vector<Pass>& passes = run.passes.passes;
+  auto lineRangeOf = [&](const Pass& p) {
+    LineRange r{UINT32_MAX, 0};
+    for (std::size_t i = p.begin; i < p.end; ++i)
+      if (run.samples.line[i] != 0) r.first = std::min(r.first, run.samples.line[i]), r.last = std::max(r.last, run.samples.line[i]);
+    return r;
+  };
+  std::size_t first = passes.size(), last = 0;
+  for (std::size_t k = 0; k < passes.size(); ++k) {
+    const LineRange r = lineRangeOf(passes[k]);
+    if (r.last < lines.first || r.first > lines.last) continue;
+    first = std::min(first, k), last = std::max(last, k);
+  }
+  if (first > last) return lines;
+  const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
+  const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
+  return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
+}
+
 nlohmann::json metricsJson(const RegionMetrics& m) {
   return {{"samples", m.samples},
           {"time_s", m.time},
@@ -87,9 +112,13 @@ int runOptimize(const OptimizeCliOptions& o) {
   std::optional<std::pair<Vec3, Vec3>> defectBox;
   if (o.automatic) {
     const QualityReport report = findQualityRegions(before.samples, before.mesh);
-    if (report.regions.empty()) throw InputError(Diagnostic{o.input, 0, 0, "no region beyond the quality thresholds to optimise"});
-    range = {report.regions.front().firstLine, report.regions.front().lastLine};
-    defectBox = std::make_pair(report.regions.front().lower, report.regions.front().upper);
+    const QualityRegion* worst = worstRegionInsidePasses(report);
+    if (!worst)
+      throw InputError(Diagnostic{o.input, 0, 0,
+                                  report.regions.empty() ? "no region beyond the quality thresholds to optimise"
+                                                         : "every region beyond the quality thresholds lies where passes start or end"});
+    range = widenToPasses(before, {worst->firstLine, worst->lastLine});
+    defectBox = std::make_pair(worst->lower, worst->upper);
   } else {
     range = parseLineRange(o.lines);
   }

@@ -25,6 +25,7 @@ struct RenderOptions {
   long highlightLine = -1;
   bool noToolpath = false, noPassWires = false, colorToolpath = false;
   int isoBands = 12;
+  double gapLimit = MeshOptions{}.gapLimit;  // mm
 };
 
 bool isBiipFile(const std::string& path) {
@@ -81,6 +82,8 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   request.passWires = !o.noPassWires;
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
+  if (!(o.gapLimit > 0)) throw InputError(Diagnostic{"", 0, 0, "--gap-limit must be greater than 0 mm"});
+  request.gapLimit = o.gapLimit;
   request.caption = std::filesystem::path(o.biip.empty() ? o.gcode : o.biip).filename().string();
   return request;
 }
@@ -132,6 +135,7 @@ const bool registered = registerCommand(
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
       return [o] { return runRender(*o); };
     });
 

@@ -31,6 +31,20 @@ double ratio(float value, double threshold) {
   return std::isfinite(value) && threshold > 0 ? std::abs(value) / threshold : 0.0;
 }
 
+// Per vertex: whether it lies within `length` (mm, along its pass) of the pass's first or last vertex.
+std::vector<char> nearPassEnds(const std::vector<Vec3>& positions, const SurfaceMesh& mesh, double length) {
+  std::vector<char> near(positions.size(), 0);
+  std::vector<double> along(positions.size(), 0.0);
+  for (std::size_t p = 0; p + 1 < mesh.passFirstVertex.size(); ++p) {
+    const std::size_t first = mesh.passFirstVertex[p], end = mesh.passFirstVertex[p + 1];
+    if (first >= end) continue;
+    for (std::size_t v = first + 1; v < end; ++v) along[v] = along[v - 1] + (positions[v] - positions[v - 1]).norm();
+    const double total = along[end - 1];
+    for (std::size_t v = first; v < end; ++v) near[v] = along[v] <= length || total - along[v] <= length;
+  }
+  return near;
+}
+
 }  // namespace
 
 QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& mesh,
@@ -60,6 +74,8 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
   std::vector<QualityRegion> parts;
   const std::vector<Vec3> positions = meshPositions(samples, mesh);
   std::vector<double> worstInPart;
+  const std::vector<char> nearEnd = nearPassEnds(positions, mesh, thresholds.passEndLength);
+  std::vector<char> allNearEnds;
   for (std::size_t v = 0; v < n; ++v) {
     if (worst[v] <= 1) continue;
     ++report.flaggedVertices;
@@ -71,6 +87,7 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
       r.firstLine = r.lastLine = samples.line[mesh.vertexSample[v]];
       parts.push_back(r);
       worstInPart.push_back(0);
+      allNearEnds.push_back(1);
     }
     const std::size_t index = static_cast<std::size_t>(regionOf[root]);
     regionOf[v] = regionOf[root];
@@ -82,6 +99,7 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
     }
     ++r.vertices;
     r.severity += worst[v];
+    if (!nearEnd[v]) allNearEnds[index] = 0;
     r.lower = r.lower.cwiseMin(positions[v]);
     r.upper = r.upper.cwiseMax(positions[v]);
     r.centroid += positions[v];
@@ -101,14 +119,22 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
     parts[static_cast<std::size_t>(a)].area +=
         0.5 * (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).norm();
   }
-  for (QualityRegion& r : parts) {
+  for (std::size_t k = 0; k < parts.size(); ++k) {
+    QualityRegion& r = parts[k];
     if (r.vertices < thresholds.minimumVertices) continue;
+    r.atPassEnds = allNearEnds[k];
     r.centroid /= static_cast<double>(r.vertices);
     report.regions.push_back(r);
   }
   std::sort(report.regions.begin(), report.regions.end(),
             [](const QualityRegion& a, const QualityRegion& b) { return a.severity > b.severity; });
   return report;
+}
+
+const QualityRegion* worstRegionInsidePasses(const QualityReport& report) {
+  for (const QualityRegion& r : report.regions)
+    if (!r.atPassEnds) return &r;
+  return nullptr;
 }
 
 }  // namespace isurface

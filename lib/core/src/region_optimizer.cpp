@@ -107,6 +107,58 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
   return runs;
 }
 
+// The spline of one interval as G1 points: each of its segments (data point to data point) cut
+// into equal pieces, so that the points keep the data points and are evenly spaced. A piece
+// turns the path by at most `maxTurn` (rad) and strays at most `chordTolerance` (mm) from the
+// curve: the NC then sees the smooth curvature of the spline at every junction instead of
+// corners whose size depends on how the CAM system happened to space its points.
+std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chordTolerance, double maxTurn) {
+  constexpr double kShortestPiece = 0.02;  // mm; finer pieces only multiply lines
+  constexpr int kCurvatureChecks = 8;
+  std::vector<Vec3> out;
+  if (curve.empty()) return out;
+  out.push_back(curve.segments().front().position(0));
+  for (const CubicSegment& s : curve.segments()) {
+    double curvature = 0;
+    for (int k = 0; k <= kCurvatureChecks; ++k)
+      curvature = std::max(curvature, curve.curvature(s.start + s.length * k / kCurvatureChecks));
+    double piece = s.length;
+    if (curvature > kZeroCurvature) {
+      const double chordPiece = std::sqrt(8.0 * chordTolerance / curvature);  // sagitta of a chord
+      piece = std::max(kShortestPiece, std::min(maxTurn / curvature, chordPiece));
+    }
+    const int count = std::max(1, static_cast<int>(std::ceil(s.length / piece - 1e-9)));
+    for (int k = 1; k <= count; ++k) out.push_back(s.position(s.length * k / count));
+  }
+  return out;
+}
+
+// The new G1 points of one interval. An Akima spline across a jump in point spacing (a long
+// straight move met by short ones) swings away from the path, so the points are fitted in runs
+// of similar spacing (ratio of neighbouring chords within the distance-ratio threshold); a run
+// whose fit strays from its points by more than `maximumDeviation` keeps its points.
+std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options) {
+  std::vector<Vec3> out = {own.front()};
+  const double ratio = options.thresholds.distanceRatio;
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < own.size(); ++i) {
+    const bool last = i + 1 == own.size();
+    bool jump = false;
+    if (!last) {
+      const double before = (own[i] - own[i - 1]).norm(), after = (own[i + 1] - own[i]).norm();
+      jump = after > ratio * before || before > ratio * after;
+    }
+    if (!jump && !last) continue;
+    const std::vector<Vec3> run(own.begin() + start, own.begin() + i + 1);
+    std::vector<Vec3> piece;
+    if (run.size() >= 3) piece = evenlySubdivided(fitAkimaSpline(run), options.chordTolerance, options.maxTurn);
+    if (piece.size() < 2 || polylineDistance(piece, run) > options.maximumDeviation) piece = run;
+    out.insert(out.end(), piece.begin() + 1, piece.end());
+    start = i;
+  }
+  return out;
+}
+
 // One feed per constant speed interval: the speed the planner allows over most of it (the
 // median of its limits), so that the machine holds it rather than braking and speeding up
 // at every point.
@@ -184,8 +236,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     std::vector<std::size_t> intervalEnd;  // index in `fitted` of each interval's last point
     for (const ConstantSpeedInterval& interval : partition.intervals) {
       const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-      std::vector<Vec3> piece = fitAkimaSpline(own).resample(options.chordTolerance);
-      if (piece.size() < 2 || polylineDistance(piece, own) > options.maximumDeviation) piece = own;
+      const std::vector<Vec3> piece = refitInterval(own, options);
       const std::size_t offset = fitted.size() - 1;
       fitted.insert(fitted.end(), piece.begin() + 1, piece.end());
       for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
@@ -236,7 +287,13 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     result.passes.push_back(pass);
   }
   copyUntil(lines.size());
-  result.newRange = {result.passes.front().newFirstLine, result.passes.back().newLastLine};
+  // Lines of the range before its first pass keep their numbers; those after its last pass
+  // moved by what the passes added.
+  const OptimizedPass& lastPass = result.passes.back();
+  result.newRange.first = std::min(range.first, result.passes.front().newFirstLine);
+  result.newRange.last = range.last > lastPass.lastLine
+                             ? static_cast<std::uint32_t>(range.last + (lastPass.newLastLine - lastPass.lastLine))
+                             : lastPass.newLastLine;
   return result;
 }
 

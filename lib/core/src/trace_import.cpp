@@ -121,6 +121,10 @@ class TrajectoryBuilder {
     if (rows_ == 0) fail(file_, 0, 0, "no samples in the file");
     Trajectory& t = t_;
     if (t.x.empty() || t.y.empty() || t.z.empty()) fail(file_, 0, 0, "the column mapping needs x, y and z");
+    // Feedback is a position: one or two of its axes alone would be read past their end.
+    const int feedbackAxes = int(!t.fbX.empty()) + int(!t.fbY.empty()) + int(!t.fbZ.empty());
+    if (feedbackAxes != 0 && feedbackAxes != 3)
+      fail(file_, 0, 0, "the column mapping needs fb_x, fb_y and fb_z together, or none of them");
     t.cycle = cycle;
     if (!time_.empty()) {
       // A recorded time column: its mean step is the nominal cycle unless one was given.

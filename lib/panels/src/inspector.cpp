@@ -79,7 +79,15 @@ void Inspector::State::takeJobResult() {
     return;
   }
   if (!result) return;
+  if (result->runComparison) {
+    comparison.reset();
+    runComparison = result->runComparison;
+    showRunDifference(runComparison->showDifference);
+    status = runComparison->summary;
+    return;
+  }
   if (result->comparison) {
+    runComparison.reset();
     comparison = result->comparison;
     afterView.setScene(comparison->scene);
     if (Document* doc = activeDocument()) {
@@ -116,6 +124,7 @@ void Inspector::State::takeJobResult() {
 void Inspector::State::activate(std::size_t index) {
   active = index;
   comparison.reset();
+  runComparison.reset();
   afterView.setScene(nullptr);
   Document* doc = activeDocument();
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
@@ -188,10 +197,11 @@ void Inspector::frame() {
   drawMenuAndToolbar(s, menuHeight, width);
   drawNavigationTree(s, 0, top, left, (bottom - top) * 0.5f);
   drawColourControls(s, 0, top + (bottom - top) * 0.5f, left, (bottom - top) * 0.5f);
-  if (s.comparison) {
+  if (s.comparison || s.runComparison) {
     const float half = (right - left) * 0.5f;
     drawSceneView(s, left, top, half, middle - top);
-    drawComparisonView(s, left + half, top, right - left - half, middle - top);
+    if (s.comparison) drawComparisonView(s, left + half, top, right - left - half, middle - top);
+    else drawRunComparisonView(s, left + half, top, right - left - half, middle - top);
   } else {
     drawSceneView(s, left, top, right - left, middle - top);
   }
@@ -201,6 +211,7 @@ void Inspector::frame() {
   drawStatusBar(s, bottom, width);
   drawDialogs(s);
   drawOptimiseDialog(s);
+  drawCompareDialog(s);
 }
 
 bool Inspector::busy() const { return state_->job.running(); }
@@ -230,6 +241,12 @@ void Inspector::colourBy(const std::string& name) {
 }
 
 void Inspector::optimise(std::uint32_t firstLine, std::uint32_t lastLine) { state_->startOptimise(firstLine, lastLine); }
+
+void Inspector::compareWith(const std::string& dumpPath) { state_->startRunComparison(dumpPath); }
+void Inspector::showRunDifference(bool difference) { state_->showRunDifference(difference); }
+const RunComparison* Inspector::runComparison() const {
+  return state_->runComparison ? &state_->runComparison->result : nullptr;
+}
 
 const ui::Selection& Inspector::selection() const { return state_->selection.current(); }
 std::string Inspector::statusText() const { return state_->status; }

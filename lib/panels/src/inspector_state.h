@@ -9,6 +9,7 @@
 
 #include "isurface/core/program.h"
 #include "isurface/core/quantities.h"
+#include "isurface/core/run_comparison.h"
 #include "isurface/core/trajectory.h"
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/scene_view.h"
@@ -60,9 +61,23 @@ struct Comparison {
   std::string summary;                      // the region's figures before and after
 };
 
+// A second run of the active document's program (a Biip dump: another simulation, a machine's
+// recording) compared with the document's own: its map beside the document's, or the
+// difference map on the document's surface.
+struct RunComparisonView {
+  std::string path;                         // run B's dump
+  std::shared_ptr<const Trajectory> samples;
+  RunComparison result;                     // B against the document's samples (A)
+  vis::QualityMap map, differenceMap;
+  std::shared_ptr<vis::QualityScene> scene, differenceScene;
+  bool showDifference = false;
+  std::string summary;
+};
+
 // What a background job hands over to the UI thread when it ends.
 struct JobResult {
   std::shared_ptr<Comparison> comparison;   // a re-optimised region
+  std::shared_ptr<RunComparisonView> runComparison;  // a second run compared
   std::unique_ptr<Document> document;        // a newly loaded document
   std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
@@ -76,6 +91,9 @@ struct Inspector::State {
   SceneView view;
   SceneView afterView;                          // the re-optimised map beside it
   std::shared_ptr<Comparison> comparison;       // of the active document
+  std::shared_ptr<RunComparisonView> runComparison;  // of the active document
+  bool compareDialog = false;
+  char comparePath[1024] = "";
   bool optimiseDialog = false;
   int optimiseFirst = 1, optimiseLast = 1;
   char savePath[1024] = "";
@@ -108,6 +126,9 @@ struct Inspector::State {
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
   void startOptimise(std::uint32_t first, std::uint32_t last);
+  void startRunComparison(const std::string& dumpPath);
+  // The view beside the main one shows run B's map or the difference map.
+  void showRunDifference(bool difference);
   void takeJobResult();
   void activate(std::size_t index);
   void syncHighlight();
@@ -133,6 +154,13 @@ void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
 void drawOptimiseDialog(Inspector::State& s);
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h);
+void drawCompareDialog(Inspector::State& s);
+// The panel beside the 3D view: its figures on top (begin), then the view beside the main one
+// (afterView) with the main view's camera in the rest of it (end). `close`: the panel's Close
+// button was pressed; the view is emptied and true returned.
+void beginBesidePanel(const char* name, const std::string& summary, float x, float y, float w, float h);
+bool endBesidePanel(Inspector::State& s, bool close);
+void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
 // Loads a document on the job's thread.
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,

@@ -58,6 +58,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
           if (ImGui::MenuItem(path.c_str())) std::snprintf(s.openPath, sizeof s.openPath, "%s", path.c_str()), s.openDialog = true;
         ImGui::EndMenu();
       }
+      if (ImGui::MenuItem("Compare with another run...", nullptr, false, s.activeDocument() != nullptr))
+        s.compareDialog = true;
       if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.quit = true;
       ImGui::EndMenu();
     }

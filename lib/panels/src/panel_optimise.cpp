@@ -77,11 +77,11 @@ void drawOptimiseDialog(Inspector::State& s) {
   ImGui::InputInt("last line", &s.optimiseLast);
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
     const QualityReport report = findQualityRegions(*doc->samples, *doc->map.mesh);
-    if (report.regions.empty()) {
-      s.status = "no region beyond the quality thresholds";
+    if (const QualityRegion* worst = worstRegionInsidePasses(report)) {
+      s.optimiseFirst = static_cast<int>(worst->firstLine);
+      s.optimiseLast = static_cast<int>(worst->lastLine);
     } else {
-      s.optimiseFirst = static_cast<int>(report.regions.front().firstLine);
-      s.optimiseLast = static_cast<int>(report.regions.front().lastLine);
+      s.status = "no region beyond the quality thresholds away from the pass ends";
     }
   }
   ImGui::SameLine();
@@ -98,13 +98,29 @@ void drawOptimiseDialog(Inspector::State& s) {
   ImGui::EndPopup();
 }
 
-void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
+void beginBesidePanel(const char* name, const std::string& summary, float x, float y, float w, float h) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
-  beginPanel("After re-optimisation", x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  Comparison& c = *s.comparison;
+  beginPanel(name, x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 10);
-  ImGui::TextUnformatted(c.summary.c_str());
+  ImGui::TextUnformatted(summary.c_str());
   ImGui::PopTextWrapPos();
+}
+
+bool endBesidePanel(Inspector::State& s, bool close) {
+  // Seen from where the map beside it is seen.
+  if (s.view.scene() && s.afterView.scene()) s.afterView.copyCameraFrom(s.view);
+  const ImVec2 size = ImGui::GetContentRegionAvail();
+  const unsigned int texture = s.afterView.render(static_cast<int>(size.x), static_cast<int>(size.y));
+  if (texture) drawViewFrame(texture, size);
+  ImGui::End();
+  ImGui::PopStyleVar();
+  if (close) s.afterView.setScene(nullptr);
+  return close;
+}
+
+void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
+  Comparison& c = *s.comparison;
+  beginBesidePanel("After re-optimisation", c.summary, x, y, w, h);
   ImGui::SetNextItemWidth(w * 0.5f);
   ImGui::InputText("##save", s.savePath, sizeof s.savePath);
   ImGui::SameLine();
@@ -118,17 +134,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   }
   ImGui::SameLine();
   const bool close = ImGui::Button("Close");
-  // Seen from where the map beside it is seen.
-  if (s.view.scene() && c.scene) s.afterView.copyCameraFrom(s.view);
-  const ImVec2 size = ImGui::GetContentRegionAvail();
-  const unsigned int texture = s.afterView.render(static_cast<int>(size.x), static_cast<int>(size.y));
-  if (texture) drawViewFrame(texture, size);
-  ImGui::End();
-  ImGui::PopStyleVar();
-  if (close) {
-    s.comparison.reset();
-    s.afterView.setScene(nullptr);
-  }
+  if (endBesidePanel(s, close)) s.comparison.reset();
 }
 
 }  // namespace isurface::panels

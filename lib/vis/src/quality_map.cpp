@@ -27,6 +27,14 @@ std::string channelUnit(const std::string& channel) {
 }
 
 std::vector<float> scalarsFor(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh) {
+  if (request.sampleValues) {
+    const std::vector<float>& values = *request.sampleValues;
+    if (values.size() != samples.size())
+      throw InputError(Diagnostic{samples.source, 0, 0, "per-sample values do not match the samples"});
+    std::vector<float> out(mesh.vertexSample.size());
+    for (std::size_t v = 0; v < out.size(); ++v) out[v] = values[mesh.vertexSample[v]];
+    return out;
+  }
   if (request.channel.empty()) return vertexQuantity(request.quantity, samples, mesh);
   auto values = vertexExtraChannel(samples, mesh, request.channel);
   if (!values) throw InputError(Diagnostic{samples.source, 0, 0, "the samples have no channel '" + request.channel + "'"});
@@ -67,13 +75,14 @@ std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
 
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request) {
   const QuantityInfo& info = quantityInfo(request.quantity);
-  if (((request.channel.empty() && info.needsFeedback) || request.feedbackSurface) && !samples.hasFeedback())
+  if (((request.channel.empty() && !request.sampleValues && info.needsFeedback) || request.feedbackSurface) && !samples.hasFeedback())
     throw InputError(Diagnostic{samples.source, 0, 0,
                                 std::string("no feedback channels (fb_x fb_y fb_z): cannot show ") +
                                     (request.feedbackSurface ? "the feedback surface" : info.label)});
   QualityMap map;
   PassOptions passOptions;
   passOptions.program = program;
+  passOptions.pattern = request.pattern;
   map.passes = splitPasses(samples, passOptions);
   std::size_t cutting = 0;
   for (const Pass& pass : map.passes.passes) cutting += pass.size();
@@ -81,10 +90,12 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
 
   MeshOptions meshOptions;
   meshOptions.feedback = request.feedbackSurface;
+  meshOptions.gapLimit = request.gapLimit;
   meshOptions.stride = std::max<std::size_t>(1, (cutting + request.maxVertices - 1) / request.maxVertices);
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
-    throw InputError(Diagnostic{samples.source, 0, 0, "the passes are too far apart to make a surface"});
+    throw InputError(Diagnostic{samples.source, 0, 0,
+                                fmt::format("the passes are too far apart to make a surface (gap limit {:g} mm)", request.gapLimit)});
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();
@@ -124,8 +135,8 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   if (request.fixedRange) style.range = *request.fixedRange;
   else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
   else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);
-  style.quantityLabel = request.channel.empty() ? info.label : request.channel;
-  style.unit = request.channel.empty() ? info.unit : channelUnit(request.channel);
+  style.quantityLabel = request.sampleValues ? request.valuesLabel : request.channel.empty() ? info.label : request.channel;
+  style.unit = request.sampleValues ? request.valuesUnit : request.channel.empty() ? info.unit : channelUnit(request.channel);
   style.view = request.view;
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;

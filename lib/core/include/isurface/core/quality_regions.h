@@ -16,6 +16,7 @@ struct QualityThresholds {
   double accelInconsistency = 600;   // mm/s^2 between neighbouring passes
   double jerk = 40000;               // mm/s^3 along the path (consecutive samples disagreeing)
   std::size_t minimumVertices = 3;   // smaller clusters are noise, not a region
+  double passEndLength = 3.0;        // mm from a pass's start or end: where the tool enters or leaves it
 };
 
 struct QualityRegion {
@@ -29,6 +30,9 @@ struct QualityRegion {
   double maxJerk = 0;                // mm/s^3
   double maxDeviation = 0;           // um, largest |predicted deviation| (0 without feedback)
   std::size_t worstSample = 0;       // the sample where the worst ratio is
+  // Every vertex lies within passEndLength of its pass's start or end: marks of starting and
+  // stopping at the edge of the cut, which re-fitting the path cannot change.
+  bool atPassEnds = false;
 };
 
 struct QualityReport {
@@ -40,5 +44,8 @@ struct QualityReport {
 // threshold.
 QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& mesh,
                                  const QualityThresholds& thresholds = {});
+
+// The most severe region away from the pass ends (what re-fitting can improve); null if none.
+const QualityRegion* worstRegionInsidePasses(const QualityReport& report);
 
 }  // namespace isurface

@@ -19,7 +19,8 @@ namespace isurface {
 struct OptimizeOptions {
   IntervalThresholds thresholds;
   double chordTolerance = 0.002;  // mm, resampling of the spline into G1 moves
-  double maximumDeviation = 0.005; // mm, a fit that strays further from its points is not used
+  double maximumDeviation = 0.008; // mm, a fit that strays further from the old path is not used
+  double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
 };
 

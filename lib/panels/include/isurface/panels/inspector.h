@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "isurface/core/run_comparison.h"
 #include "isurface/panels/scene_view.h"
 #include "isurface/ui/selection.h"
 #include "isurface/ui/settings.h"
@@ -40,6 +41,13 @@ class Inspector {
   // Re-optimises the G1 moves of the lines in the background; the new map then stands beside
   // the old one.
   void optimise(std::uint32_t firstLine, std::uint32_t lastLine);
+  // Compares a second run of the active document's program (a Biip dump) with the document's
+  // samples in the background; its map then stands beside the document's.
+  void compareWith(const std::string& dumpPath);
+  // Beside the document's map: run B's map (false) or the difference map (true).
+  void showRunDifference(bool difference);
+  // The comparison of the active document with a second run; nullptr when there is none.
+  const RunComparison* runComparison() const;
   const ui::Selection& selection() const;
   std::string statusText() const;
 

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "isurface/core/program.h"
 #include "isurface/core/quantities.h"
@@ -16,6 +17,10 @@ namespace isurface::vis {
 struct QualityMapRequest {
   Quantity quantity = Quantity::Speed;
   std::string channel;                       // when not empty: colour by this channel of the dump instead
+  // When set: colour by these values, one per sample (a comparison with another run), named
+  // by valuesLabel and valuesUnit, instead of the quantity or channel.
+  std::shared_ptr<const std::vector<float>> sampleValues;
+  std::string valuesLabel, valuesUnit;
   bool feedbackSurface = false;              // the surface of the feedback positions
   std::optional<std::uint32_t> highlightLine;
   std::string colorMap = "rainbow";
@@ -26,6 +31,8 @@ struct QualityMapRequest {
   bool colorToolpath = false;                // the sampled cutting path coloured by the quantity
   bool passWires = true;
   int isoBands = 12;
+  double gapLimit = MeshOptions{}.gapLimit;  // mm; passes further apart are not joined by triangles
+  PathPattern pattern = PathPattern::Auto;   // how the samples split into passes
   std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
   std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
   std::string caption;                       // prefix of the caption (e.g. the file name)
