@@ -10,6 +10,7 @@
 #include "isurface/core/akima_spline.h"
 #include "isurface/core/diagnostic.h"
 #include "isurface/core/feed_plan.h"
+#include "isurface/core/interval_speed_plan.h"
 #include "isurface/core/quantities.h"
 
 namespace isurface {
@@ -159,9 +160,10 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
   return out;
 }
 
-// One feed per constant speed interval: the speed the planner allows over most of it (the
-// median of its limits), so that the machine holds it rather than braking and speeding up
-// at every point.
+// One feed per constant speed interval: the paper's planned speed from the interval's average
+// curvature (interval_speed_plan.h), but no more than the NC allows over most of the new
+// points (the median of its limits), so that the machine holds it rather than braking and
+// speeding up at every point.
 std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
                                   const IntervalPartition& partition, double feed, const Machine& machine) {
   Program probe;
@@ -183,13 +185,16 @@ std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::ve
     ofSegment[s.move] = std::min(feed / 60.0, s.cap);  // segment k runs from point k to k + 1
     if (s.move > 0) atPoint[s.move] = std::min(feed / 60.0, s.entryLimit);
   }
+  const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
   std::vector<double> feeds;
-  for (const ConstantSpeedInterval& interval : partition.intervals) {
+  for (std::size_t k = 0; k < partition.intervals.size(); ++k) {
+    const ConstantSpeedInterval& interval = partition.intervals[k];
     const std::size_t from = dataIndex[interval.first], to = dataIndex[interval.last];
     std::vector<double> limits(ofSegment.begin() + from, ofSegment.begin() + to);
     for (std::size_t k = from + 1; k < to; ++k) limits.push_back(atPoint[k]);
     std::sort(limits.begin(), limits.end());
-    const double v = limits.empty() ? feed / 60.0 : limits[limits.size() / 2];
+    const double v = std::min(limits.empty() ? feed / 60.0 : limits[limits.size() / 2],
+                              planned[k].plannedFeedMmMin / 60.0);
     feeds.push_back(std::clamp(std::floor(v * 60.0), 0.2 * feed, feed));
   }
   return feeds;
