@@ -13,8 +13,10 @@
 #include "inputs.h"
 #include "isurface/core/atomic_file.h"
 #include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/optimized_run_comparison.h"
 #include "isurface/core/quality_regions.h"
 #include "isurface/core/region_optimizer.h"
+#include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_map.h"
 #include "offscreen_render.h"
 #include "trajectory_input.h"
@@ -23,7 +25,7 @@ namespace isurface::cli {
 namespace {
 
 struct OptimizeCliOptions {
-  std::string input, output, lines, report, pngBefore, pngAfter, machine;
+  std::string input, output, lines, report, pngBefore, pngAfter, pngDifference, machine;
   bool automatic = false;
   double chordTolerance = 0.002;
 };
@@ -54,29 +56,6 @@ std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   return points;
 }
 
-// A region's lines widened to whole passes and one more pass on each side: optimising only
-// part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
-// unchanged neighbour) inside the region.
-LineRange widenToPasses(const Run& run, LineRange lines) {
-  const std::vector<Pass>& passes = run.passes.passes;
-  auto lineRangeOf = [&](const Pass& p) {
-    LineRange r{UINT32_MAX, 0};
-    for (std::size_t i = p.begin; i < p.end; ++i)
-      if (run.samples.line[i] != 0) r.first = std::min(r.first, run.samples.line[i]), r.last = std::max(r.last, run.samples.line[i]);
-    return r;
-  };
-  std::size_t first = passes.size(), last = 0;
-  for (std::size_t k = 0; k < passes.size(); ++k) {
-    const LineRange r = lineRangeOf(passes[k]);
-    if (r.last < lines.first || r.first > lines.last) continue;
-    first = std::min(first, k), last = std::max(last, k);
-  }
-  if (first > last) return lines;
-  const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
-  const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
-  return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
-}
-
 nlohmann::json metricsJson(const RegionMetrics& m) {
   return {{"samples", m.samples},
           {"time_s", m.time},
@@ -86,16 +65,22 @@ nlohmann::json metricsJson(const RegionMetrics& m) {
           {"max_predicted_deviation_um", m.maxDeviation}};
 }
 
-void renderSpeed(const Run& run, const Program& program, const std::string& caption, const ValueRange& range,
-                 const std::string& path) {
-  vis::QualityMapRequest request;
-  request.quantity = Quantity::Speed;
-  request.fixedRange = range;
+// A top view of the run's surface coloured as the request says.
+void renderTop(const Run& run, const Program& program, vis::QualityMapRequest request, const std::string& caption,
+               const std::string& path) {
   request.view = vis::ViewDirection::Top;
   request.caption = caption;
   const vis::QualityMap map = vis::buildQualityMap(run.samples, &program, request);
   vis::QualityScene scene(map.data, map.style);
   renderSceneToPng(scene, 1200, 800, path);
+}
+
+void renderSpeed(const Run& run, const Program& program, const std::string& caption, const ValueRange& range,
+                 const std::string& path) {
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::Speed;
+  request.fixedRange = range;
+  renderTop(run, program, request, caption, path);
 }
 
 int runOptimize(const OptimizeCliOptions& o) {
@@ -117,7 +102,7 @@ int runOptimize(const OptimizeCliOptions& o) {
       throw InputError(Diagnostic{o.input, 0, 0,
                                   report.regions.empty() ? "no region beyond the quality thresholds to optimise"
                                                          : "every region beyond the quality thresholds lies where passes start or end"});
-    range = widenToPasses(before, {worst->firstLine, worst->lastLine});
+    range = widenToWholePasses(before.samples, before.passes, {worst->firstLine, worst->lastLine});
     defectBox = std::make_pair(worst->lower, worst->upper);
   } else {
     range = parseLineRange(o.lines);
@@ -156,6 +141,11 @@ int runOptimize(const OptimizeCliOptions& o) {
     if (!o.pngBefore.empty()) renderSpeed(before, program, o.input + " before", span, o.pngBefore);
     if (!o.pngAfter.empty()) renderSpeed(after, reread.program, o.output + " after", span, o.pngAfter);
   }
+  if (!o.pngDifference.empty()) {
+    const RunComparison difference = compareOptimizedRuns(before.samples, after.samples, result);
+    renderTop(before, program, vis::regionDifferenceMapRequest(difference, before.samples, range),
+              o.output + " against " + o.input, o.pngDifference);
+  }
   std::printf("%s: lines %u-%u, %zu passes re-fitted\n", o.output.c_str(), range.first, range.last, result.passes.size());
   std::printf("machining time %s -> %s; in the region: speed fluctuation %.1f -> %.1f mm/min, "
               "max inconsistency between passes %.1f -> %.1f mm/min, max jerk %.0f -> %.0f mm/s^3; path moved %.4f mm at most\n",
@@ -174,6 +164,8 @@ const bool registered = registerCommand(
       sub.add_option("--report", o->report, "comparison report (JSON)");
       sub.add_option("--png-before", o->pngBefore, "speed map before (top view)");
       sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range");
+      sub.add_option("--png-diff", o->pngDifference,
+                     "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description (JSON)");
       return [o] { return runOptimize(*o); };

@@ -23,7 +23,7 @@ struct SnapshotOptions {
   std::vector<std::string> files;
   std::string output, size = "1600x1000", color = "speed";
   long pickLine = -1, pickSample = -1;
-  std::string optimizeLines;
+  std::string optimizeLines, optimizeView = "side-by-side";
 };
 
 void writePng(const std::vector<unsigned char>& rgbaTopFirst, int width, int height, const std::string& path) {
@@ -74,6 +74,7 @@ int runSnapshot(const SnapshotOptions& o) {
     const LineRange range = parseLineRange(o.optimizeLines);
     inspector.optimise(range.first, range.last);
     inspector.waitUntilIdle();
+    inspector.showOptimisedDifference(o.optimizeView == "difference");
     if (inspector.statusText().rfind("error:", 0) == 0) {
       std::fprintf(stderr, "%s\n", inspector.statusText().c_str());
       status = kExitInputError;
@@ -100,7 +101,13 @@ const bool registered = registerCommand(
       sub.add_option("--color", o->color, "quantity to colour the map by")->capture_default_str();
       sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line");
       sub.add_option("--pick-sample", o->pickSample, "select this sample");
-      sub.add_option("--optimize-lines", o->optimizeLines, "re-optimise the lines A-B and show both maps");
+      CLI::Option* optimize =
+          sub.add_option("--optimize-lines", o->optimizeLines, "re-optimise the lines A-B and show both maps");
+      sub.add_option("--optimize-view", o->optimizeView,
+                     "beside the map: the new map (side-by-side) or the speed difference after - before (difference)")
+          ->check(CLI::IsMember({"side-by-side", "difference"}))
+          ->needs(optimize)
+          ->capture_default_str();
       return [o] { return runSnapshot(*o); };
     });
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdint>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -300,6 +301,26 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
                              ? static_cast<std::uint32_t>(range.last + (lastPass.newLastLine - lastPass.lastLine))
                              : lastPass.newLastLine;
   return result;
+}
+
+LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passSet, LineRange lines) {
+  const std::vector<Pass>& passes = passSet.passes;
+  auto lineRangeOf = [&](const Pass& p) {
+    LineRange r{UINT32_MAX, 0};
+    for (std::size_t i = p.begin; i < p.end; ++i)
+      if (samples.line[i] != 0) r.first = std::min(r.first, samples.line[i]), r.last = std::max(r.last, samples.line[i]);
+    return r;
+  };
+  std::size_t first = passes.size(), last = 0;
+  for (std::size_t k = 0; k < passes.size(); ++k) {
+    const LineRange r = lineRangeOf(passes[k]);
+    if (r.last < lines.first || r.first > lines.last) continue;
+    first = std::min(first, k), last = std::max(last, k);
+  }
+  if (first > last) return lines;
+  const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
+  const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
+  return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
 }
 
 RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,

@@ -35,14 +35,17 @@ struct LineIndex {
   const std::size_t* begin(std::uint32_t line) const { return samples.data() + offsets[line]; }
 };
 
-LineIndex indexLines(const Trajectory& t) {
+// `keys`: the key each line is indexed under (see RunComparisonOptions::lineKeyA); the index
+// then speaks of keys where it says lines.
+LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys) {
+  const auto keyOf = [&](std::uint32_t line) { return line != 0 && line < keys.size() ? keys[line] : line; };
   LineIndex index;
   std::uint32_t maxLine = 0;
-  for (std::uint32_t line : t.line) maxLine = std::max(maxLine, line);
+  for (std::uint32_t line : t.line) maxLine = std::max(maxLine, keyOf(line));
   index.offsets.assign(std::size_t(maxLine) + 2, 0);
   bool started = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
-    const std::uint32_t line = t.line[i];
+    const std::uint32_t line = keyOf(t.line[i]);
     if (line == 0) continue;
     if (index.offsets[line + 1]++ == 0) index.order.push_back(line);
     if (!started) index.firstTime = t.time[i], started = true;
@@ -52,7 +55,7 @@ LineIndex indexLines(const Trajectory& t) {
   std::vector<std::size_t> fill(index.offsets.begin(), index.offsets.end() - 1);
   index.samples.resize(index.offsets.back());
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (t.line[i] != 0) index.samples[fill[t.line[i]]++] = i;
+    if (const std::uint32_t line = keyOf(t.line[i]); line != 0) index.samples[fill[line]++] = i;
   return index;
 }
 
@@ -214,7 +217,7 @@ UnmatchedLine unmatched(const Trajectory& t, const LineIndex& index, std::uint32
 RunComparison compareRuns(const Trajectory& a, const Trajectory& b, const RunComparisonOptions& options) {
   requireLines(a);
   requireLines(b);
-  const LineIndex ia = indexLines(a), ib = indexLines(b);
+  const LineIndex ia = indexLines(a, options.lineKeyA), ib = indexLines(b, options.lineKeyB);
   RunComparison out;
   out.cycleA = a.cycle;
   out.durationA = ia.lastTime - ia.firstTime;

@@ -89,7 +89,7 @@ void Inspector::State::takeJobResult() {
   if (result->comparison) {
     runComparison.reset();
     comparison = result->comparison;
-    afterView.setScene(comparison->scene);
+    showOptimisedDifference(comparison->showDifference);
     if (Document* doc = activeDocument()) {
       const std::string base = doc->programPath.substr(0, doc->programPath.rfind('.'));
       std::snprintf(savePath, sizeof savePath, "%s-optimized.nc", base.c_str());
@@ -241,6 +241,10 @@ void Inspector::colourBy(const std::string& name) {
 }
 
 void Inspector::optimise(std::uint32_t firstLine, std::uint32_t lastLine) { state_->startOptimise(firstLine, lastLine); }
+void Inspector::showOptimisedDifference(bool difference) { state_->showOptimisedDifference(difference); }
+const RunComparison* Inspector::optimisedDifference() const {
+  return state_->comparison ? &state_->comparison->difference : nullptr;
+}
 
 void Inspector::compareWith(const std::string& dumpPath) { state_->startRunComparison(dumpPath); }
 void Inspector::showRunDifference(bool difference) { state_->showRunDifference(difference); }

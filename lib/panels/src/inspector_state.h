@@ -4,7 +4,9 @@
 #include <imgui.h>
 
 #include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "isurface/core/program.h"
@@ -14,6 +16,7 @@
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/scene_view.h"
 #include "isurface/ui/background_job.h"
+#include "isurface/ui/box_selection.h"
 #include "isurface/ui/signal_pyramid.h"
 #include "isurface/ui/text_lines.h"
 #include "isurface/vis/quality_map.h"
@@ -59,6 +62,12 @@ struct Comparison {
   std::uint32_t first = 0, last = 0;        // the region's lines in the old program
   double timeBefore = 0, timeAfter = 0;     // s
   std::string summary;                      // the region's figures before and after
+  // The new run aligned to the old one pass by pass, and the speed difference (after - before)
+  // on the old surface, shown in place of the new map on request.
+  RunComparison difference;
+  vis::QualityMap differenceMap;
+  std::shared_ptr<vis::QualityScene> differenceScene;
+  bool showDifference = false;
 };
 
 // A second run of the active document's program (a Biip dump: another simulation, a machine's
@@ -94,8 +103,12 @@ struct Inspector::State {
   std::shared_ptr<RunComparisonView> runComparison;  // of the active document
   bool compareDialog = false;
   char comparePath[1024] = "";
-  bool optimiseDialog = false;
+  bool optimiseDialog = false, optimiseDialogOpen = false;
   int optimiseFirst = 1, optimiseLast = 1;
+  // The rectangle last dragged over the view to choose the region, and what it holds; shown
+  // while the dialog is open, and the region's figures are taken inside it.
+  std::optional<ui::BoxSelection> optimiseBox;
+  ui::ScreenRectangle optimiseBoxOnView;
   char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
   std::size_t active = 0;
@@ -112,6 +125,7 @@ struct Inspector::State {
   char openPath[1024] = "";
   std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
   bool rectangleZoom = false;
+  bool boxSelect = false;  // the next drag in the view chooses the region to optimise
   // Mouse in the 3D view: where the press began (screen pixels) and whether it began there.
   float pressX = 0, pressY = 0;
   bool pressedInView = false;
@@ -125,7 +139,11 @@ struct Inspector::State {
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
-  void startOptimise(std::uint32_t first, std::uint32_t last);
+  // `measuredBox`: where the region's figures are taken (XY, mm); else where the path was re-fitted.
+  void startOptimise(std::uint32_t first, std::uint32_t last,
+                     std::optional<std::pair<Vec3, Vec3>> measuredBox = std::nullopt);
+  // The view beside the main one shows the new map or the difference map.
+  void showOptimisedDifference(bool difference);
   void startRunComparison(const std::string& dumpPath);
   // The view beside the main one shows run B's map or the difference map.
   void showRunDifference(bool difference);
@@ -160,6 +178,12 @@ void drawCompareDialog(Inspector::State& s);
 // button was pressed; the view is emptied and true returned.
 void beginBesidePanel(const char* name, const std::string& summary, float x, float y, float w, float h);
 bool endBesidePanel(Inspector::State& s, bool close);
+// Radio buttons over a view beside the main one: "Side by side" or the difference; returns the
+// choice when it changed.
+std::optional<bool> drawDifferenceToggle(bool showingDifference, const char* differenceLabel);
+// A difference map on run A's surface, seen like the map the request `like` is for, and its scene.
+void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRequest& like, const Trajectory& a,
+                         const Program* program, vis::QualityMap& map, std::shared_ptr<vis::QualityScene>& scene);
 void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
 // Loads a document on the job's thread.

@@ -50,6 +50,7 @@ void beginPanel(const char* name, float x, float y, float w, float h, int extraF
 
 void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   bool simulate = false, locate = false;
+  const bool boxSelectWasOn = s.boxSelect;
   if (ImGui::BeginMainMenuBar()) {
     if (ImGui::BeginMenu("File")) {
       if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.openDialog = true;
@@ -85,6 +86,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
       if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
+      ImGui::MenuItem("Select region box", "B", &s.boxSelect);
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -101,9 +103,18 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (toolButton("Reset", "Reset the camera (R)") || shortcut('R')) setView(s, s.settings.view);
   if (toolButton(s.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
     s.rectangleZoom = !s.rectangleZoom;
+  if (toolButton(s.boxSelect ? "[Select box]" : "Select box",
+                 "Drag a rectangle over the surface: its lines go to the Optimise dialog (B)") ||
+      shortcut('B'))
+    s.boxSelect = !s.boxSelect;
   if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
   if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.optimiseDialog = true;
   ImGui::End();
+  // One rectangle tool at a time: the one switched on last.
+  if (s.boxSelect && s.rectangleZoom) {
+    if (boxSelectWasOn) s.boxSelect = false;
+    else s.rectangleZoom = false;
+  }
   if (shortcut('Q', true)) s.quit = true;
   if (locate) s.locateDialog = true;
   if (simulate) {

@@ -1,8 +1,11 @@
-// Re-optimising a region from the application: choose the lines (or take the worst region the
-// quality prediction finds), optimise in the background, and see the new map beside the old
-// one, the same colour range and camera, with the region's figures; save the new program.
+// Re-optimising a region from the application: choose the lines (typed, dragged as a box over
+// the surface, or the worst region the quality prediction finds), optimise in the background,
+// and see the new map beside the old one, the same colour range and camera, or the speed
+// difference on the old surface, with the region's figures; save the new program.
 #include <imgui.h>
 
+#include <algorithm>
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -11,14 +14,35 @@
 #include "inspector_state.h"
 #include "isurface/core/atomic_file.h"
 #include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/optimized_run_comparison.h"
 #include "isurface/core/quality_regions.h"
 #include "isurface/core/region_optimizer.h"
 #include "isurface/core/simulator.h"
+#include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
 
-void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last) {
+namespace {
+
+// How far the re-fitted passes moved and how their speed changed (after - before).
+std::string passDifferenceText(const RunComparison& difference, const OptimizeResult& optimized) {
+  double apart = 0, speedChange = 0;  // mm; mm/min, the signed change of largest magnitude
+  for (const LineDifference& d : difference.lines) {
+    const bool refitted = std::any_of(optimized.passes.begin(), optimized.passes.end(),
+                                      [&](const OptimizedPass& p) { return p.firstLine == d.line; });
+    if (!refitted) continue;
+    apart = std::max(apart, d.figures.maxPathDistance);
+    if (std::abs(d.figures.maxSpeedDifference) > std::abs(speedChange)) speedChange = d.figures.maxSpeedDifference;
+  }
+  return fmt::format(". The new passes lie within {:.4f} mm of the old; speed after - before up to {:+.0f} mm/min",
+                     apart, speedChange);
+}
+
+}  // namespace
+
+void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
+                                     std::optional<std::pair<Vec3, Vec3>> measuredBox) {
   Document* doc = activeDocument();
   if (!doc || !doc->program || doc->programPath.empty() || !doc->samples) return;
   vis::QualityMapRequest request = mapRequest();
@@ -30,7 +54,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last) {
   std::shared_ptr<const Trajectory> before = doc->samples;
   const PassSet beforePasses = doc->map.passes;
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, before, beforePasses, request, first, last](ui::JobControl& control) {
+            [result, path, program, before, beforePasses, request, first, last, measuredBox](ui::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
@@ -49,12 +73,16 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last) {
               c->samples = std::make_shared<const Trajectory>(trajectoryFromSamples(buffer.data, machine.cycle, path));
               c->map = vis::buildQualityMap(*c->samples, c->program.get(), request);
               c->scene = std::make_shared<vis::QualityScene>(c->map.data, c->map.style);
+              control.progress(0.8);
+              c->difference = compareOptimizedRuns(*before, *c->samples, optimized);
+              buildDifferenceView(vis::regionDifferenceMapRequest(c->difference, *before, LineRange{first, last}), request,
+                                  *before, program.get(), c->differenceMap, c->differenceScene);
               control.progress(0.9);
               const SurfaceMesh beforeMesh = buildSurfaceMesh(*before, beforePasses);
-              const RegionMetrics old =
-                  measureRegion(*before, beforeMesh, LineRange{first, last}, optimized.fittedLower, optimized.fittedUpper);
-              const RegionMetrics now = measureRegion(*c->samples, *c->map.mesh, optimized.newRange, optimized.fittedLower,
-                                                      optimized.fittedUpper);
+              const Vec3 lower = measuredBox ? measuredBox->first : optimized.fittedLower;
+              const Vec3 upper = measuredBox ? measuredBox->second : optimized.fittedUpper;
+              const RegionMetrics old = measureRegion(*before, beforeMesh, LineRange{first, last}, lower, upper);
+              const RegionMetrics now = measureRegion(*c->samples, *c->map.mesh, optimized.newRange, lower, upper);
               c->timeBefore = before->size() * machine.cycle;
               c->timeAfter = c->samples->size() * machine.cycle;
               c->summary = fmt::format(
@@ -63,23 +91,46 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last) {
                   "{:.0f} -> {:.0f} mm/s^3",
                   first, last, optimized.passes.size(), c->timeBefore, c->timeAfter, old.speedFluctuation,
                   now.speedFluctuation, old.maxSpeedInconsistency, now.maxSpeedInconsistency, old.maxJerk, now.maxJerk);
+              c->summary += passDifferenceText(c->difference, optimized);
               result->comparison = c;
             });
+}
+
+void Inspector::State::showOptimisedDifference(bool difference) {
+  if (!comparison) return;
+  comparison->showDifference = difference;
+  afterView.setScene(difference ? comparison->differenceScene : comparison->scene);
 }
 
 void drawOptimiseDialog(Inspector::State& s) {
   if (s.optimiseDialog) ImGui::OpenPopup("Optimise region");
   s.optimiseDialog = false;
-  if (!ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  s.optimiseDialogOpen = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!s.optimiseDialogOpen) {
+    s.optimiseBox.reset();  // a box chosen for a dialog that was closed
+    return;
+  }
   Document* doc = s.activeDocument();
   ImGui::TextWrapped("Constant speed intervals, Akima fitting and one feed per interval, for the G1 moves of the lines:");
   ImGui::InputInt("first line", &s.optimiseFirst);
   ImGui::InputInt("last line", &s.optimiseLast);
+  // The box only stands for the region while the lines are still its own.
+  const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
+                     s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
+  if (boxed) {
+    const ui::BoxSelection& b = *s.optimiseBox;
+    ImGui::Text("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
+                b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
+  }
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
     const QualityReport report = findQualityRegions(*doc->samples, *doc->map.mesh);
     if (const QualityRegion* worst = worstRegionInsidePasses(report)) {
-      s.optimiseFirst = static_cast<int>(worst->firstLine);
-      s.optimiseLast = static_cast<int>(worst->lastLine);
+      // As `optimize --auto`: whole passes around the region, its figures taken inside its box.
+      const LineRange lines = widenToWholePasses(*doc->samples, doc->map.passes, {worst->firstLine, worst->lastLine});
+      s.optimiseFirst = static_cast<int>(lines.first);
+      s.optimiseLast = static_cast<int>(lines.last);
+      s.optimiseBox = ui::BoxSelection{lines, worst->lower, worst->upper, worst->vertices};
+      s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
     } else {
       s.status = "no region beyond the quality thresholds away from the pass ends";
     }
@@ -90,7 +141,9 @@ void drawOptimiseDialog(Inspector::State& s) {
     s.optimiseLast = s.optimiseFirst + 100;
   }
   if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
-    s.startOptimise(static_cast<std::uint32_t>(s.optimiseFirst), static_cast<std::uint32_t>(s.optimiseLast));
+    std::optional<std::pair<Vec3, Vec3>> measured;
+    if (boxed) measured = std::make_pair(s.optimiseBox->lower, s.optimiseBox->upper);
+    s.startOptimise(static_cast<std::uint32_t>(s.optimiseFirst), static_cast<std::uint32_t>(s.optimiseLast), measured);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
@@ -121,6 +174,8 @@ bool endBesidePanel(Inspector::State& s, bool close) {
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
   Comparison& c = *s.comparison;
   beginBesidePanel("After re-optimisation", c.summary, x, y, w, h);
+  if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (speed after - before)"))
+    s.showOptimisedDifference(*difference);
   ImGui::SetNextItemWidth(w * 0.5f);
   ImGui::InputText("##save", s.savePath, sizeof s.savePath);
   ImGui::SameLine();

@@ -35,6 +35,23 @@ std::string summaryOf(const RunComparison& c, const std::string& nameB) {
 
 }  // namespace
 
+void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRequest& like, const Trajectory& a,
+                         const Program* program, vis::QualityMap& map, std::shared_ptr<vis::QualityScene>& scene) {
+  request.view = like.view;
+  request.coarseVertices = like.coarseVertices;
+  map = vis::buildQualityMap(a, program, request);
+  scene = std::make_shared<vis::QualityScene>(map.data, map.style);
+}
+
+std::optional<bool> drawDifferenceToggle(bool showingDifference, const char* differenceLabel) {
+  std::optional<bool> choice;
+  if (ImGui::RadioButton("Side by side", !showingDifference)) choice = false;
+  ImGui::SameLine();
+  if (ImGui::RadioButton(differenceLabel, showingDifference)) choice = true;
+  if (choice == showingDifference) choice.reset();
+  return choice;
+}
+
 void Inspector::State::startRunComparison(const std::string& dumpPath) {
   Document* doc = activeDocument();
   if (!doc || !doc->samples) {
@@ -60,11 +77,8 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
     view->map = vis::buildQualityMap(*view->samples, program.get(), request);
     view->scene = std::make_shared<vis::QualityScene>(view->map.data, view->map.style);
     control.progress(0.75);
-    vis::QualityMapRequest differenceRequest = vis::differenceMapRequest(view->result, ComparisonQuantity::Speed);
-    differenceRequest.view = request.view;
-    differenceRequest.coarseVertices = request.coarseVertices;
-    view->differenceMap = vis::buildQualityMap(*a, program.get(), differenceRequest);
-    view->differenceScene = std::make_shared<vis::QualityScene>(view->differenceMap.data, view->differenceMap.style);
+    buildDifferenceView(vis::differenceMapRequest(view->result, ComparisonQuantity::Speed), request, *a, program.get(),
+                        view->differenceMap, view->differenceScene);
     view->summary = summaryOf(view->result, std::filesystem::path(dumpPath).filename().string());
     result->runComparison = view;
   });
@@ -97,9 +111,8 @@ void drawCompareDialog(Inspector::State& s) {
 void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h) {
   RunComparisonView& c = *s.runComparison;
   beginBesidePanel("Second run", c.summary, x, y, w, h);
-  if (ImGui::RadioButton("Side by side", !c.showDifference)) s.showRunDifference(false);
-  ImGui::SameLine();
-  if (ImGui::RadioButton("Difference (speed B - A)", c.showDifference)) s.showRunDifference(true);
+  if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (speed B - A)"))
+    s.showRunDifference(*difference);
   ImGui::SameLine();
   const bool close = ImGui::Button("Close");
   if (endBesidePanel(s, close)) s.runComparison.reset();

@@ -1,5 +1,5 @@
 // The 3D view panel: VTK's frame as an image, mouse input to the camera, click to pick,
-// rectangle zoom.
+// rectangle zoom, and a rectangle that chooses the region to optimise.
 #include <GL/gl.h>
 #include <imgui.h>
 
@@ -10,6 +10,27 @@
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
+
+namespace {
+
+// The lines of the surface's samples inside a rectangle dragged over the view (pixels from its
+// top-left corner) go into the Optimise dialog, which opens.
+void chooseRegion(Inspector::State& s, const ui::ScreenRectangle& rectangle) {
+  Document* doc = s.activeDocument();
+  if (!doc || !doc->samples || !doc->map.mesh) return;
+  const auto chosen = ui::selectInRectangle(*doc->samples, doc->map.mesh->vertexSample, s.view.projection(), rectangle);
+  if (!chosen) {
+    s.status = "no cutting sample of the surface inside the box";
+    return;
+  }
+  s.optimiseBox = *chosen;
+  s.optimiseBoxOnView = rectangle;
+  s.optimiseFirst = static_cast<int>(chosen->lines.first);
+  s.optimiseLast = static_cast<int>(chosen->lines.last);
+  s.optimiseDialog = true;
+}
+
+}  // namespace
 
 void drawViewFrame(unsigned int texture, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -48,6 +69,12 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3), IM_COL32(0, 0, 0, 150), 3);
       draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
     }
+    // The box that chose the region, while the dialog it filled is open.
+    const ui::ScreenRectangle& r = s.optimiseBoxOnView;
+    if (s.optimiseBox && s.optimiseDialogOpen && r.x0 != r.x1 && r.y0 != r.y1) {
+      draw->AddRect(ImVec2(origin.x + float(r.x0), origin.y + float(r.y0)), ImVec2(origin.x + float(r.x1), origin.y + float(r.y1)),
+                    IM_COL32(255, 200, 40, 255), 0, 0, 2.0f);
+    }
   } else {
     ImGui::Dummy(size);
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 20, origin.y + 20));
@@ -56,27 +83,33 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   const ImGuiIO& io = ImGui::GetIO();
   const double mx = io.MousePos.x - origin.x, my = io.MousePos.y - origin.y;
   const ImVec2 pressedAt(s.pressX, s.pressY);
+  // A left drag draws a rectangle instead of turning the camera.
+  const bool rectangleTool = s.rectangleZoom || s.boxSelect;
   if (ImGui::IsWindowHovered() && texture) {
     for (int button = 0; button < 3; ++button) {
       if (ImGui::IsMouseClicked(button)) {
         s.pressX = io.MousePos.x;
         s.pressY = io.MousePos.y;
         s.pressedInView = true;
-        if (!(s.rectangleZoom && button == 0)) s.view.mouseButton(button, true, mx, my);
+        if (!(rectangleTool && button == 0)) s.view.mouseButton(button, true, mx, my);
       }
     }
     if (io.MouseWheel != 0) s.view.mouseWheel(io.MouseWheel, mx, my);
   }
   if (s.pressedInView && texture) {
     s.view.mouseMove(mx, my);
-    if (s.rectangleZoom && ImGui::IsMouseDown(0))
-      ImGui::GetWindowDrawList()->AddRect(pressedAt, io.MousePos, IM_COL32(255, 255, 255, 220), 0, 0, 1.5f);
+    if (rectangleTool && ImGui::IsMouseDown(0))
+      ImGui::GetWindowDrawList()->AddRect(pressedAt, io.MousePos,
+                                          s.boxSelect ? IM_COL32(255, 200, 40, 255) : IM_COL32(255, 255, 255, 220), 0, 0, 1.5f);
     for (int button = 0; button < 3; ++button) {
       if (!ImGui::IsMouseReleased(button)) continue;
       const double moved = std::hypot(io.MousePos.x - pressedAt.x, io.MousePos.y - pressedAt.y);
       if (s.rectangleZoom && button == 0) {
         s.view.zoomToRectangle(pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my);
         s.rectangleZoom = false;
+      } else if (s.boxSelect && button == 0) {
+        if (moved >= 3) chooseRegion(s, ui::ScreenRectangle{pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my});
+        s.boxSelect = false;
       } else {
         s.view.mouseButton(button, false, mx, my);
       }

@@ -6,6 +6,7 @@
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
+#include <vtkMatrix4x4.h>
 #include <vtkOpenGLFramebufferObject.h>
 #include <vtkOpenGLState.h>
 #include <vtkPolyData.h>
@@ -144,12 +145,20 @@ unsigned int SceneView::render(int width, int height) {
 
 std::optional<std::pair<double, double>> SceneView::project(const Vec3& point) const {
   if (!scene_ || impl_->height <= 0) return std::nullopt;
+  return projection()(point);
+}
+
+ui::ScreenProjection SceneView::projection() const {
+  ui::ScreenProjection p;
+  if (!scene_ || impl_->height <= 0) return p;
+  // What vtkRenderer::WorldToDisplay does per point, once: the renderer fills the whole view.
   vtkRenderer* renderer = scene_->renderer();
-  renderer->SetWorldPoint(point.x(), point.y(), point.z(), 1.0);
-  renderer->WorldToDisplay();
-  double display[3];
-  renderer->GetDisplayPoint(display);
-  return std::make_pair(display[0], impl_->height - display[1]);
+  vtkMatrix4x4* m = renderer->GetActiveCamera()->GetCompositeProjectionTransformMatrix(renderer->GetTiledAspectRatio(), 0, 1);
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) p.worldToDevice(r, c) = m->GetElement(r, c);
+  p.width = impl_->width;
+  p.height = impl_->height;
+  return p;
 }
 
 void SceneView::mouseMove(double x, double y) {

@@ -5,6 +5,20 @@
 
 namespace isurface::vis {
 
+namespace {
+
+// 1st to 99th percentile, made symmetric about zero for signed differences.
+ValueRange differenceRange(const std::vector<float>& values, ComparisonQuantity quantity) {
+  const bool isSigned = quantity != ComparisonQuantity::Position;
+  const ValueRange p = percentileRange(values, 1, 99);
+  double reach = isSigned ? std::max(std::abs(p.lo), std::abs(p.hi)) : std::max(p.hi, 0.0);
+  // Identical runs: a small span rather than an empty one, so that the legend still reads.
+  if (!(reach > 0)) reach = quantity == ComparisonQuantity::Speed ? 1.0 : 0.001;  // mm/min; s or mm
+  return ValueRange{isSigned ? -reach : 0.0, reach};
+}
+
+}  // namespace
+
 QualityMapRequest differenceMapRequest(const RunComparison& comparison, ComparisonQuantity quantity,
                                        std::optional<ValueRange> fixedRange, const std::string& colorMap) {
   QualityMapRequest request;
@@ -16,15 +30,19 @@ QualityMapRequest differenceMapRequest(const RunComparison& comparison, Comparis
   // (measurement noise about zero): they hide the pattern instead of showing it.
   request.isoBands = 0;
   request.colorMap = !colorMap.empty() ? colorMap : isSigned ? "coolwarm" : "viridis";
-  if (fixedRange) {
-    request.fixedRange = fixedRange;
-  } else {
-    const ValueRange p = percentileRange(*request.sampleValues, 1, 99);
-    double reach = isSigned ? std::max(std::abs(p.lo), std::abs(p.hi)) : std::max(p.hi, 0.0);
-    // Identical runs: a small span rather than an empty one, so that the legend still reads.
-    if (!(reach > 0)) reach = quantity == ComparisonQuantity::Speed ? 1.0 : 0.001;  // mm/min; s or mm
-    request.fixedRange = ValueRange{isSigned ? -reach : 0.0, reach};
-  }
+  request.fixedRange = fixedRange ? *fixedRange : differenceRange(*request.sampleValues, quantity);
+  return request;
+}
+
+QualityMapRequest regionDifferenceMapRequest(const RunComparison& comparison, const Trajectory& before,
+                                             LineRange region) {
+  const std::vector<float>& all = comparison.sampleValues(ComparisonQuantity::Speed);
+  std::vector<float> inRegion;
+  for (std::size_t i = 0; i < all.size() && i < before.size(); ++i)
+    if (before.line[i] >= region.first && before.line[i] <= region.last) inRegion.push_back(all[i]);
+  QualityMapRequest request =
+      differenceMapRequest(comparison, ComparisonQuantity::Speed, differenceRange(inRegion, ComparisonQuantity::Speed));
+  request.valuesLabel = "Speed after-before";  // one word a line in the legend: this keeps the sign readable
   return request;
 }
 

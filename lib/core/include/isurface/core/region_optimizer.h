@@ -10,6 +10,7 @@
 
 #include "isurface/core/constant_speed_intervals.h"
 #include "isurface/core/machine.h"
+#include "isurface/core/passes.h"
 #include "isurface/core/program.h"
 #include "isurface/core/surface_mesh.h"
 #include "isurface/core/trajectory.h"
@@ -44,6 +45,11 @@ struct OptimizeResult {
 // range holds no run of plain G1 moves to optimise.
 OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange lines,
                               const Machine& machine, const OptimizeOptions& options = {});
+
+// A region's lines widened to whole passes and one more pass on each side: optimising only
+// part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
+// unchanged neighbour) inside the region. Lines outside every pass are returned unchanged.
+LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passes, LineRange lines);
 
 // What changes in a region between two runs of a program.
 struct RegionMetrics {

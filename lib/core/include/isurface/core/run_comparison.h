@@ -21,6 +21,13 @@ struct RunComparisonOptions {
   // range; a range also ends after this many lines.
   std::size_t maxRangeLines = 20;
   double timeTolerance = 0.002;  // s; a line whose |time difference| is within it counts as equal
+  // Lines compared as one, for runs of programs numbered differently (a re-optimised region:
+  // its passes replaced by other lines, the lines after them shifted). When not empty,
+  // lineKeyA[line] is the key under which run A's line is aligned (lines past the end keep
+  // their own number; key 0 leaves the line out), lineKeyB likewise for run B. The samples of a
+  // key are aligned by arc length from each run's first sample of it, and the results name
+  // keys where they name lines. Empty: every line is its own key.
+  std::vector<std::uint32_t> lineKeyA, lineKeyB;
 };
 
 // Figures shared by a line and a range of lines.

@@ -41,6 +41,11 @@ class Inspector {
   // Re-optimises the G1 moves of the lines in the background; the new map then stands beside
   // the old one.
   void optimise(std::uint32_t firstLine, std::uint32_t lastLine);
+  // Beside the document's map: the re-optimised map (false) or the speed difference, after
+  // minus before, on the document's surface (true).
+  void showOptimisedDifference(bool difference);
+  // The re-optimised run aligned to the document's pass by pass; nullptr when there is none.
+  const RunComparison* optimisedDifference() const;
   // Compares a second run of the active document's program (a Biip dump) with the document's
   // samples in the background; its map then stands beside the document's.
   void compareWith(const std::string& dumpPath);

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "isurface/core/geometry.h"
+#include "isurface/ui/box_selection.h"
 
 namespace isurface::vis {
 class QualityScene;
@@ -38,6 +39,8 @@ class SceneView {
   void invalidate() { invalidated_ = true; }
   // Where a point (mm) appears in the view, in pixels from its top-left corner.
   std::optional<std::pair<double, double>> project(const Vec3& point) const;
+  // The same mapping for many points at once, as the camera stands now (an empty view: 0 x 0).
+  ui::ScreenProjection projection() const;
 
   // Mouse input in pixels from the view's top-left corner.
   void mouseMove(double x, double y);

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "isurface/core/constant_speed_intervals.h"
 #include "isurface/core/run_comparison.h"
 #include "isurface/vis/quality_map.h"
 
@@ -17,5 +18,12 @@ namespace isurface::vis {
 QualityMapRequest differenceMapRequest(const RunComparison& comparison, ComparisonQuantity quantity,
                                        std::optional<ValueRange> fixedRange = std::nullopt,
                                        const std::string& colorMap = "");
+
+// The map of a re-optimised region (run A before, B after): the speed difference, after minus
+// before (mm/min), on the surface before, its symmetric range taken from the samples of the
+// region's lines only: elsewhere the runs hardly differ, and a range over the whole surface
+// would shrink towards zero and saturate the region.
+QualityMapRequest regionDifferenceMapRequest(const RunComparison& comparison, const Trajectory& before,
+                                             LineRange region);
 
 }  // namespace isurface::vis
