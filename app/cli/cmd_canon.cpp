@@ -8,12 +8,13 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "command.h"
 #include "isurface/core/atomic_file.h"
-#include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/gcode_stream.h"
 #include "progress.h"
 
 namespace isurface::cli {
@@ -137,18 +138,33 @@ char* writeMove(char* out, const Move& m, FeedText& feedText) {
   return out;
 }
 
-template <typename Sink>
-void writeMoves(Sink& sink, const std::vector<Move>& moves) {
-  Output<Sink> output(sink);
-  FeedText feedText;
-  for (const Move& m : moves) output.advance(writeMove(output.cursor(), m, feedText));
-  output.flush();
+// Formats the moves into `write(data, size)` as the interpreter hands them over.
+template <typename Write>
+class CanonWriter : public MoveSink {
+ public:
+  explicit CanonWriter(Write& write) : output_(write) {}
+  void consume(const Move* moves, std::size_t count, std::uint64_t) override {
+    for (std::size_t i = 0; i < count; ++i) output_.advance(writeMove(output_.cursor(), moves[i], feedText_));
+  }
+  void flush() { output_.flush(); }
+
+ private:
+  Output<Write> output_;
+  FeedText feedText_;
+};
+
+// Interprets into `write`, streaming: memory stays the same whatever the size of the file.
+template <typename Write>
+StreamedInterpretation interpretInto(const std::string& input, const InterpreterOptions& options, Write& write) {
+  CanonWriter<Write> writer(write);
+  StreamedInterpretation result = interpretGcodeFileStream(input, writer, options);
+  writer.flush();
+  return result;
 }
 
-// Writes to standard output; returns 0 or the errno of the first failed write.
-int writeMovesToStdout(const std::vector<Move>& moves) {
-  int error = 0;
-  auto sink = [&error](const char* p, std::size_t left) {
+// Writes to standard output; `error` gets the errno of the first failed write.
+StreamedInterpretation interpretToStdout(const std::string& input, const InterpreterOptions& options, int& error) {
+  auto write = [&error](const char* p, std::size_t left) {
     while (left > 0 && error == 0) {
       const ssize_t n = ::write(STDOUT_FILENO, p, left);
       if (n < 0) {
@@ -159,17 +175,37 @@ int writeMovesToStdout(const std::vector<Move>& moves) {
       left -= static_cast<std::size_t>(n);
     }
   };
-  writeMoves(sink, moves);
-  return error;
+  return interpretInto(input, options, write);
 }
 
-// Writes through a temporary file renamed into place (AtomicOutputFile): a failed run leaves no
-// partial file. Throws InputError.
-void writeMovesToPath(const std::string& path, const std::vector<Move>& moves) {
-  AtomicOutputFile file(path);
-  auto sink = [&file](const char* p, std::size_t n) { file.write(p, n); };
-  writeMoves(sink, moves);
-  file.commit();
+// Writes through a temporary file renamed into place (AtomicOutputFile) when the program has no
+// error or `keepGoing`: a failed run leaves no partial file. `writeError` gets the message of a
+// failed write; the program is still interpreted, so that its own errors are reported.
+StreamedInterpretation interpretToPath(const std::string& input, const InterpreterOptions& options,
+                                       const std::string& path, std::string& writeError) {
+  std::optional<AtomicOutputFile> file;
+  try {
+    file.emplace(path);
+  } catch (const InputError& e) {
+    writeError = e.what();
+  }
+  auto write = [&](const char* p, std::size_t n) {
+    if (!writeError.empty()) return;
+    try {
+      file->write(p, n);
+    } catch (const InputError& e) {
+      writeError = e.what();
+    }
+  };
+  StreamedInterpretation result = interpretInto(input, options, write);
+  if (writeError.empty() && (result.ok() || options.keepGoing)) {
+    try {
+      file->commit();
+    } catch (const InputError& e) {
+      writeError = e.what();
+    }
+  }
+  return result;
 }
 
 std::function<int()> setup(CLI::App& sub) {
@@ -189,24 +225,28 @@ std::function<int()> setup(CLI::App& sub) {
     options.keepGoing = args->keepGoing;
     ProgressLine progress("canon");
     options.progress = [&progress](double f) { progress.update(f); };
-    const InterpretResult result = interpretGcodeFile(args->input, options);
-    progress.finish();
-
-    int code = result.ok() ? kExitOk : kExitInputError;
+    int code = kExitOk;
+    StreamedInterpretation result;
     if (args->output.empty()) {
-      if (const int error = writeMovesToStdout(result.program.moves)) {
+      int error = 0;
+      result = interpretToStdout(args->input, options, error);
+      progress.finish();
+      if (error != 0) {
         std::fprintf(stderr, "error: cannot write the output: %s\n", std::strerror(error));
-        if (code == kExitOk) code = kExitFailure;
+        code = kExitFailure;
       }
-    } else if (result.ok() || args->keepGoing) {
-      try {
-        writeMovesToPath(args->output, result.program.moves);
-      } catch (const InputError& e) {
-        std::fprintf(stderr, "error: %s\n", e.what());
-        if (code == kExitOk) code = kExitFailure;
+    } else {
+      std::string writeError;
+      result = interpretToPath(args->input, options, args->output, writeError);
+      progress.finish();
+      // Without --keep-going a program with errors is not written at all.
+      if (!writeError.empty() && (result.ok() || args->keepGoing)) {
+        std::fprintf(stderr, "error: %s\n", writeError.c_str());
+        code = kExitFailure;
       }
     }
-    for (const Diagnostic& w : result.program.warnings)
+    if (!result.ok()) code = kExitInputError;
+    for (const Diagnostic& w : result.warnings)
       std::fprintf(stderr, "warning: %s\n", w.str().c_str());
     for (const Diagnostic& e : result.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
     return code;

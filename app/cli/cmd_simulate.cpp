@@ -17,20 +17,32 @@ struct SimulateOptions {
 
 int runSimulate(const SimulateOptions& o) {
   const Machine machine = loadMachineOption(o.machine);
-  const Program program = loadProgram(o.input, o.keepGoing);
   ProgressLine progress("simulating " + o.input);
-  const SimulationReport r =
-      simulateToBiip(program, machine, o.output, [&](double f) { progress.update(f); });
+  InterpreterOptions options;
+  options.keepGoing = o.keepGoing;
+  options.progress = [&](double f) { progress.update(f); };
+  // Interpreted, planned and interpolated as the file is read: memory does not grow with it.
+  const StreamedSimulation s = simulateGcodeFileToBiip(o.input, machine, o.output, options);
   progress.finish();
+  for (const Diagnostic& w : s.interpretation.warnings) std::fprintf(stderr, "warning: %s\n", w.str().c_str());
+  for (const Diagnostic& e : s.interpretation.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
+  if (!s.interpretation.ok()) return kExitInputError;
+  if (s.forcedCommits > 0)
+    std::fprintf(stderr,
+                 "warning: %zu times the look-ahead window filled up with tiny moves before the speed was "
+                 "settled: the tool slows down there more than planning the whole program would\n",
+                 s.forcedCommits);
+  const SimulationReport& r = s.report;
+  const auto moves = static_cast<unsigned long long>(s.interpretation.moveCount);
   if (o.json) {
     nlohmann::json j = {{"source", o.input},          {"output", o.output},
-                        {"moves", program.moves.size()}, {"motion_segments", r.segments},
+                        {"moves", moves},             {"motion_segments", r.segments},
                         {"samples", r.samples},        {"cycle_s", machine.cycle},
                         {"machining_time_s", r.machiningTime}, {"path_length_mm", r.pathLength},
                         {"jerk_filter_s", r.filterTime1}, {"corner_filter_s", r.filterTime2}};
     std::printf("%s\n", j.dump(2).c_str());
   } else {
-    std::printf("%s: %zu moves, %.1f mm of path\n", o.input.c_str(), program.moves.size(), r.pathLength);
+    std::printf("%s: %llu moves, %.1f mm of path\n", o.input.c_str(), moves, r.pathLength);
     std::printf("machining time %s (%.3f s), %llu samples at %g ms -> %s\n",
                 formatDuration(r.machiningTime).c_str(), r.machiningTime,
                 static_cast<unsigned long long>(r.samples), machine.cycle * 1000.0, o.output.c_str());

@@ -8,11 +8,11 @@
 
 namespace isurface::cli {
 
-Trajectory readTrajectory(const std::string& biipPath) {
+Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels) {
   const BiipReader reader(biipPath);
   for (const std::string& w : reader.warnings()) std::fprintf(stderr, "warning: %s: %s\n", biipPath.c_str(), w.c_str());
   ProgressLine progress("loading " + biipPath);
-  Trajectory t = loadTrajectory(reader, [&](double f) { progress.update(f); });
+  Trajectory t = loadTrajectory(reader, [&](double f) { progress.update(f); }, channels);
   progress.finish();
   return t;
 }

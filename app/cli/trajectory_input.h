@@ -9,7 +9,7 @@
 
 namespace isurface::cli {
 
-Trajectory readTrajectory(const std::string& biipPath);
+Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels = {});
 Trajectory simulateTrajectory(const Program& program, const Machine& machine);
 
 }  // namespace isurface::cli

@@ -182,6 +182,15 @@ void writeInputs() {
              machineJson("0.001", axisJson(), axisJson(),
                          R"({ "max_velocity_mm_min": -1, "max_acceleration_mm_s2": 1500 })"));
   writeBytes("m_overflow.json", machineJson("0.001", axisJson("1e400")));
+  // Machine traces
+  writeBytes("trace.csv", "x,y,z,ax\n0,0,0,0\n1,0,0,1\n2,0,0,2\n");
+  {  // the umich preset keeps every numeric column: 250 more than its own are too many channels
+    std::string header = "X1_CommandPosition,Y1_CommandPosition,Z1_CommandPosition,X1_ActualPosition,"
+                         "Y1_ActualPosition,Z1_ActualPosition,M1_CURRENT_FEEDRATE";
+    std::string row = "0,0,0,0,0,0,0";
+    for (int c = 0; c < 250; ++c) header += ",c" + std::to_string(c), row += ",0";
+    writeBytes("wide.csv", header + "\n" + row + "\n");
+  }
   writeBytes("m_vff2.json",
              machineJson("0.001", axisJson(), axisJson(), axisJson("2000", "40", "2")));
 }
@@ -381,6 +390,12 @@ const std::vector<Row>& catalogue() {
        {"no_such.biip", "No such file or directory"}, "missing.json"},
       {"missing_input_simulate", "simulate {in}/no_such.nc -o {out}/missing.biip", 2,
        {"no_such.nc"}, "missing.biip"},
+
+      // Machine traces
+      {"trace_partial_feedback", "import csv {in}/trace.csv --map x=x,y=y,z=z,fb_x=ax -o {out}/partial_fb.biip", 2,
+       {"trace.csv", "fb_x, fb_y and fb_z together"}, "partial_fb.biip"},
+      {"trace_too_many_columns", "import csv {in}/wide.csv --preset umich -o {out}/wide.biip", 2,
+       {"wide.csv", "more than 247 extra channels", "'c247'"}, "wide.biip"},
 
       // Outputs that cannot be written (canon documents exit code 1 for these)
       {"output_missing_dir_canon", "canon {in}/good.nc -o {out}/no_dir/a.txt", 1,

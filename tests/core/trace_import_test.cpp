@@ -104,6 +104,35 @@ TEST(traceImport, shortRowNamesMissingColumn) {
   }
 }
 
+// The umich preset keeps every other numeric column; one whose header is a role's name ("x",
+// "line") becomes a channel of its own instead of feeding that role a second value per row.
+TEST(traceImport, keptColumnNamedLikeARoleIsAChannelOfItsOwn) {
+  const std::string path = writeScratch(
+      "role-named.csv",
+      "line,x,X1_CommandPosition,Y1_CommandPosition,Z1_CommandPosition,X1_ActualPosition,Y1_ActualPosition,"
+      "Z1_ActualPosition,M1_CURRENT_FEEDRATE\n7,9,1,2,3,1,2,3,100\n8,9,4,5,6,4,5,6,100\n");
+  const Trajectory t = importCsv(path, umichPreset());
+  ASSERT_EQ(t.size(), 2u);
+  EXPECT_EQ(t.x, (std::vector<double>{1, 4}));
+  EXPECT_EQ(t.line, (std::vector<std::uint32_t>{0, 0}));  // no M1_sequence_number column
+  ASSERT_NE(t.extraChannel("line_2"), nullptr);
+  EXPECT_EQ(*t.extraChannel("line_2"), (std::vector<double>{7, 8}));
+  ASSERT_NE(t.extraChannel("x_2"), nullptr);
+  EXPECT_EQ(t.extraChannel("x_2")->size(), 2u);
+}
+
+TEST(traceImport, feedbackNeedsAllThreeAxes) {
+  const std::string path = writeScratch("fb.csv", "x,y,z,a\n0,0,0,0\n1,0,0,1\n");
+  TraceImportOptions options;
+  options.columns = parseColumnMap("x=x,y=y,z=z,fb_x=a");
+  try {
+    importCsv(path, options);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("fb_x, fb_y and fb_z together"), std::string::npos) << e.what();
+  }
+}
+
 TEST(traceImport, cliRejectsBadInputsWithExitCode2) {
   const std::string out = (scratchDir() / "bad.biip").string();
   const std::string csv = writeScratch("cols.csv", "a,b,c\n1,2,3\n");

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
+#include <string>
 
 #include "isurface/core/diagnostic.h"
 #include "isurface/core/path_segment.h"
@@ -67,10 +69,16 @@ double projectedLimit(const Vec3& direction, PerAxis perAxis) {
   return limit;
 }
 
+// Plans move by move. Each segment is first "closed" once the next one is known (its end
+// junction's limit, hence its share of acceleration and the forward pass's speed at its end,
+// depend on the next segment); the backward pass then settles the speeds of closed segments.
+// planFeed runs it once over the whole program; the streaming planner over a window, assuming
+// a stop at the window's end, and hands out only the segments that this assumption cannot
+// change (see commit()). Both do the same floating-point operations in the same order.
 class Planner {
  public:
-  Planner(const Program& program, const Machine& machine, const LimitBudget& budget)
-      : program_(program), machine_(machine), budget_(budget) {
+  Planner(const Machine& machine, const LimitBudget& budget, std::string source)
+      : machine_(machine), budget_(budget), source_(std::move(source)) {
     const FilterTimes f = chooseFilters(machine, budget);
     t1_ = f.t1;
     t2_ = f.t2;
@@ -78,77 +86,136 @@ class Planner {
     settleTime_ = t1_ + t2_;
   }
 
-  FeedPlan run(const ProgressCallback& progress) {
-    FeedPlan plan;
-    plan.filterTime1 = t1_;
-    plan.filterTime2 = t2_;
-    plan.cycle = machine_.cycle;
-    plan.segments.reserve(program_.moves.size());
-    junction_.reserve(program_.moves.size() + 1);
-    junction_.push_back(0.0);  // the machine starts at rest
-    junctionRadius_.push_back(kInfinity);
-    maxSpeed_.reserve(program_.moves.size());
+  double filterTime1() const { return t1_; }
+  double filterTime2() const { return t2_; }
+  double holdBefore() const { return holdBefore_; }
+  std::size_t held() const { return window_.size() - head_; }
+  std::size_t forcedCommits() const { return forcedCommits_; }
+  std::uint64_t closedSegments() const { return closedSegments_; }
+  bool finished() const { return finished_; }
 
-    PathSegment previous;
-    bool havePrevious = false;
-    const std::size_t n = program_.moves.size();
-    for (std::size_t i = 0; i < n; ++i) {
-      if (progress && (i & 0xFFFF) == 0) progress(0.5 * static_cast<double>(i) / n);
-      const Move& move = program_.moves[i];
-      if (move.kind == MoveKind::Dwell) {
-        const double seconds = std::max(0.0, move.dwellSeconds());
-        if (seconds > kLongestMove)
-          throw InputError(Diagnostic{program_.source, move.line, 0,
-                                      fmt::format("a dwell of {:.0f} s is longer than {:.0f} h: not a real program",
-                                                  seconds, kLongestMove / 3600)});
-        if (plan.segments.empty()) plan.holdBefore += seconds;
-        else plan.segments.back().holdAfter += seconds;
-        stopAtJunction(plan);
-        continue;
-      }
-      const PathSegment seg = PathSegment::from(program_, i);
-      if (seg.length > 0) {
-        if (havePrevious) {
-          double hold = 0;
-          const double limit = junctionLimit(previous, seg, plan.segments.back().accel, hold);
-          if (limit > 0) junction_.back() = std::min(junction_.back(), limit);
-          else stopAtJunction(plan, hold);
-        }
-        addSegment(plan, static_cast<std::uint32_t>(i), move, seg);
-        previous = seg;
-        havePrevious = true;
-      }
-      if (move.flags & (kExactStop | kStopAfter)) stopAtJunction(plan);
+  // Move `index`, which starts at `start`.
+  void add(std::uint32_t index, const Move& move, const Vec3& start) {
+    if (move.kind == MoveKind::Dwell) {
+      const double seconds = std::max(0.0, move.dwellSeconds());
+      if (seconds > kLongestMove)
+        throw InputError(Diagnostic{source_, move.line, 0,
+                                    fmt::format("a dwell of {:.0f} s is longer than {:.0f} h: not a real program",
+                                                seconds, kLongestMove / 3600)});
+      if (segments_ == 0) holdBefore_ += seconds;
+      else window_.back().planned.holdAfter += seconds;
+      stopAtJunction();
+      return;
     }
-    junction_.back() = 0.0;  // and ends at rest
-    solveSpeeds(plan);
-    for (const PlannedSegment& segment : plan.segments)
-      if (segment.motionTime() > kLongestMove) {
-        const Move& move = program_.moves[segment.move];
-        throw InputError(Diagnostic{program_.source, move.line, 0,
-                                    fmt::format("this move takes {:.0f} h at F{:g}: an impossible feed for {:.1f} mm",
-                                                segment.motionTime() / 3600, move.feed, segment.length)});
+    const PathSegment seg = PathSegment::from(start, move);
+    if (seg.length > 0) {
+      if (segments_ > 0) {
+        double hold = 0;
+        const double limit = junctionLimit(previous_, seg, window_.back().planned.accel, hold);
+        if (limit > 0) junctionLimit_ = std::min(junctionLimit_, limit);
+        else stopAtJunction(hold);
       }
-    if (progress) progress(1.0);
-    return plan;
+      addSegment(index, move, seg);
+      previous_ = seg;
+    }
+    if (move.flags & (kExactStop | kStopAfter)) stopAtJunction();
   }
 
+  // The program has ended: the machine comes to rest after the last segment.
+  void finish() {
+    finished_ = true;
+    if (segments_ == 0) return;
+    close(window_.back(), 0.0, junctionRadius_);  // v[n] = 0
+    ++closed_;
+    ++closedSegments_;
+  }
+
+  // Settles the speeds of the closed segments and appends those that are final to `out`.
+  //
+  // The backward pass gives junction k the speed v[k] = min(f[k], sqrt(v[k+1]^2 + 2 a L)), f
+  // being the forward pass's. Assuming a stop at the window's end gives speeds w[k] <= v[k]
+  // (floating-point sqrt, + and min are monotonic). Where w[j] == f[j], v[j] == f[j] too, and
+  // every junction before j is computed from it exactly as the whole program's pass does: the
+  // segments before the last such j are final. At the program's end the stop is real.
+  //
+  // A window that would still hold more than maxHeld segments after that (a braking distance
+  // spanning that many segments) commits all but maxHeld / 2 of them with the stop assumed,
+  // which only slows it down, and counts it in forcedCommits(); the forward pass is redone
+  // from there.
+  void commit(std::vector<PlannedSegment>& out, std::size_t maxHeld = kUnbounded) {
+    const std::size_t m = closed_ - head_;
+    if (m == 0) return;
+    const double endForward = finished_ && closed_ == window_.size() ? 0.0 : window_[closed_].entryForward;
+    speeds_.resize(m + 1);
+    speeds_[m] = 0.0;
+    std::size_t last = endForward == 0.0 ? m : 0;  // the last junction whose speed is final
+    for (std::size_t k = m; k-- > 1;) {
+      const Entry& e = window_[head_ + k];
+      speeds_[k] = std::min(e.entryForward,
+                            std::sqrt(speeds_[k + 1] * speeds_[k + 1] + 2.0 * e.planned.accel * e.planned.length));
+      if (last == 0 && speeds_[k] == e.entryForward) last = k;
+    }
+    speeds_[0] = window_[head_].entryForward;
+    bool forced = false;
+    if (held() - last > maxHeld) {
+      const std::size_t keep = maxHeld / 2;
+      if (m > keep && m - keep > last) {
+        last = m - keep;
+        forced = true;
+        ++forcedCommits_;
+      }
+    }
+    for (std::size_t k = 0; k < last; ++k) {
+      PlannedSegment& s = window_[head_ + k].planned;
+      s.entrySpeed = speeds_[k];
+      s.exitSpeed = speeds_[k + 1];
+      const double reachable =
+          std::sqrt(s.accel * s.length + 0.5 * (s.entrySpeed * s.entrySpeed + s.exitSpeed * s.exitSpeed));
+      s.peakSpeed = std::max({std::min(s.cap, reachable), s.entrySpeed, s.exitSpeed});
+      if (s.motionTime() > kLongestMove)
+        throw InputError(Diagnostic{source_, window_[head_ + k].line, 0,
+                                    fmt::format("this move takes {:.0f} h at F{:g}: an impossible feed for {:.1f} mm",
+                                                s.motionTime() / 3600, window_[head_ + k].feed, s.length)});
+      out.push_back(s);
+    }
+    head_ += last;
+    if (forced) redoForward(speeds_[last]);
+    if (head_ > 4096 && head_ > window_.size() / 2) {
+      window_.erase(window_.begin(), window_.begin() + static_cast<std::ptrdiff_t>(head_));
+      closed_ -= head_;
+      head_ = 0;
+    }
+  }
+
+  static constexpr std::size_t kUnbounded = std::numeric_limits<std::size_t>::max();
+
  private:
+  struct Entry {
+    PlannedSegment planned;   // cap and entryLimit (the start junction's limit) set when added
+    double axisAccel = 0;     // mm/s^2 along it that its axes allow, no shares
+    double centripetal = 0;   // mm/s^2 on an arc at its speed cap
+    double entryRadius = 0;   // mm, three-point radius at its start junction between lines
+    double entryForward = 0;  // mm/s, the forward pass's speed at its start
+    std::uint32_t line = 0;   // of its move, for messages
+    float feed = 0;
+  };
+
   // The machine comes to rest at the current junction and waits `hold` seconds; by default
   // until the filters have drained, so that the corner is reached exactly (an exact stop, as
   // in-position checking does).
-  void stopAtJunction(FeedPlan& plan, double hold = -1) {
+  void stopAtJunction(double hold = -1) {
     if (hold < 0) hold = settleTime_;
-    junction_.back() = 0.0;
-    if (!plan.segments.empty()) {
-      double& planned = plan.segments.back().holdAfter;
+    junctionLimit_ = 0.0;
+    if (segments_ > 0) {
+      double& planned = window_.back().planned.holdAfter;
       planned = stopped_ ? std::max(planned, hold) : planned + hold;
     }
     stopped_ = true;
   }
 
-  void addSegment(FeedPlan& plan, std::uint32_t index, const Move& move, const PathSegment& seg) {
-    PlannedSegment ps;
+  void addSegment(std::uint32_t index, const Move& move, const PathSegment& seg) {
+    Entry e;
+    PlannedSegment& ps = e.planned;
     ps.move = index;
     ps.length = seg.length;
     double speed = move.kind == MoveKind::Rapid
@@ -168,15 +235,58 @@ class Planner {
       speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
     }
     speed = std::max(speed, kSlowestSpeed);
-    ps.peakSpeed = speed;  // the cap until solveSpeeds() settles the profile
+    ps.peakSpeed = speed;  // the cap until commit() settles the profile
+    ps.cap = speed;
     ps.accel = tangentialAccel(seg);
-    plan.segments.push_back(ps);
-    maxSpeed_.push_back(speed);
-    axisAccel_.push_back(ps.accel / budget_.tangentialAccel);
-    centripetal_.push_back(seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0);
-    junction_.push_back(kInfinity);
-    junctionRadius_.push_back(kInfinity);
+    e.axisAccel = ps.accel / budget_.tangentialAccel;
+    e.centripetal = seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0;
+    e.entryRadius = junctionRadius_;
+    if (segments_ == 0) {
+      ps.entryLimit = 0.0;  // the machine starts at rest
+      e.entryForward = 0.0;
+    } else {
+      Entry& before = window_.back();
+      ps.entryLimit = std::min({junctionLimit_, before.planned.cap, speed});
+      close(before, ps.entryLimit, e.entryRadius);
+      ++closed_;
+      ++closedSegments_;
+      e.entryForward = std::min(ps.entryLimit, std::sqrt(before.entryForward * before.entryForward +
+                                                         2.0 * before.planned.accel * before.planned.length));
+    }
+    e.line = move.line;
+    e.feed = move.feed;
+    window_.push_back(e);
+    ++segments_;
+    junctionLimit_ = kInfinity;
+    junctionRadius_ = kInfinity;
     stopped_ = false;
+  }
+
+  // Once its end junction's limit is known, a segment's ramps may use what its curvature (on
+  // an arc, at its junctions) leaves over where the path is straight: its axes need no share
+  // for centripetal acceleration there.
+  void close(Entry& e, double exitLimit, double exitRadius) const {
+    if (machine_.jerkLimited()) return;  // the jerk filter was sized for the fixed share
+    const double most = budget_.tangentialAccelWithoutJerkLimit;
+    auto junctionCentripetal = [](double speed, double r) {
+      return std::isfinite(r) && r > 0 ? speed * speed / r : 0.0;
+    };
+    const double normal = std::max({e.centripetal, junctionCentripetal(e.planned.entryLimit, e.entryRadius),
+                                    junctionCentripetal(exitLimit, exitRadius)});
+    const double available = e.axisAccel * (1.0 - budget_.cornerAccel) - normal;
+    e.planned.accel = std::clamp(available, e.planned.accel, most * e.axisAccel);
+  }
+
+  // After a forced commit: the forward pass again from the speed committed at the window's
+  // start, so that no segment speeds up beyond its ramps from there.
+  void redoForward(double startSpeed) {
+    window_[head_].entryForward = startSpeed;
+    for (std::size_t k = head_ + 1; k < window_.size(); ++k) {
+      const Entry& before = window_[k - 1];
+      window_[k].entryForward = std::min(window_[k].planned.entryLimit,
+                                         std::sqrt(before.entryForward * before.entryForward +
+                                                   2.0 * before.planned.accel * before.planned.length));
+    }
   }
 
   // The acceleration along the path that keeps every axis within its share, mm/s^2.
@@ -250,66 +360,33 @@ class Planner {
     if (!in.arc && !out.arc) {
       // Short G1 moves approximate a curve: its radius from three points limits the speed.
       const double radius = threePointRadius(in.start, in.end, out.end);
-      junctionRadius_.back() = radius;
+      junctionRadius_ = radius;
       v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), false));
     }
     return v;
   }
 
-  // Where the path is straight, its axes need no share for centripetal acceleration: a
-  // segment's ramps may use what its curvature (on an arc, at its junctions) leaves over.
-  void shareAcceleration(std::vector<PlannedSegment>& segs) const {
-    if (machine_.jerkLimited()) return;  // the jerk filter was sized for the fixed share
-    const double most = budget_.tangentialAccelWithoutJerkLimit;
-    auto junctionCentripetal = [&](std::size_t j) {
-      const double r = junctionRadius_[j];
-      return std::isfinite(r) && r > 0 ? junction_[j] * junction_[j] / r : 0.0;
-    };
-    for (std::size_t k = 0; k < segs.size(); ++k) {
-      const double normal = std::max({centripetal_[k], junctionCentripetal(k), junctionCentripetal(k + 1)});
-      const double available = axisAccel_[k] * (1.0 - budget_.cornerAccel) - normal;
-      segs[k].accel = std::clamp(available, segs[k].accel, most * axisAccel_[k]);
-    }
-  }
-
-  void solveSpeeds(FeedPlan& plan) {
-    auto& segs = plan.segments;
-    const std::size_t n = segs.size();
-    std::vector<double>& v = junction_;  // becomes the junction speeds
-    for (std::size_t k = 1; k < n; ++k) v[k] = std::min({v[k], maxSpeed_[k - 1], maxSpeed_[k]});
-    v[0] = 0.0;
-    v[n] = 0.0;
-    for (std::size_t k = 0; k < n; ++k) {
-      segs[k].cap = maxSpeed_[k];
-      segs[k].entryLimit = v[k];
-    }
-    shareAcceleration(segs);
-    for (std::size_t k = 0; k < n; ++k)
-      v[k + 1] = std::min(v[k + 1], std::sqrt(v[k] * v[k] + 2.0 * segs[k].accel * segs[k].length));
-    for (std::size_t k = n; k-- > 0;)
-      v[k] = std::min(v[k], std::sqrt(v[k + 1] * v[k + 1] + 2.0 * segs[k].accel * segs[k].length));
-    for (std::size_t k = 0; k < n; ++k) {
-      PlannedSegment& s = segs[k];
-      s.entrySpeed = v[k];
-      s.exitSpeed = v[k + 1];
-      const double reachable =
-          std::sqrt(s.accel * s.length + 0.5 * (s.entrySpeed * s.entrySpeed + s.exitSpeed * s.exitSpeed));
-      s.peakSpeed = std::max({std::min(maxSpeed_[k], reachable), s.entrySpeed, s.exitSpeed});
-    }
-  }
-
-  const Program& program_;
   const Machine& machine_;
   const LimitBudget budget_;
+  const std::string source_;
   double t1_ = 0, t2_ = 0;
   double settleTime_ = 0;  // s for the filters to drain
-  bool stopped_ = false;   // a stop is already planned at the current junction
   double smoothingTolerance_ = 0;
-  std::vector<double> junction_;  // speed limit at the start of segment k (k == size: the end)
-  std::vector<double> maxSpeed_;
-  std::vector<double> axisAccel_;       // mm/s^2 along segment k that its axes allow, no shares
-  std::vector<double> centripetal_;     // mm/s^2 on arc k at its speed cap
-  std::vector<double> junctionRadius_;  // mm, three-point radius at junction k between lines
+  double holdBefore_ = 0;  // s of dwell before the first motion
+  bool stopped_ = false;   // a stop is already planned at the current junction
+  bool finished_ = false;
+  std::uint64_t segments_ = 0;        // segments added
+  std::uint64_t closedSegments_ = 0;  // segments closed
+  std::size_t forcedCommits_ = 0;
+  PathSegment previous_;              // the last segment added
+  // The junction after the last segment added (before the first: the start), until the next
+  // segment is added: its speed limit and, between lines, its three-point radius (mm).
+  double junctionLimit_ = 0.0;        // the machine starts at rest
+  double junctionRadius_ = kInfinity;
+  // window_[head_, closed_) are closed, window_[closed_] (unless finished) is the last added.
+  std::vector<Entry> window_;
+  std::size_t head_ = 0, closed_ = 0;
+  std::vector<double> speeds_;        // commit()'s junction speeds, from window_[head_]
 };
 
 }  // namespace
@@ -336,7 +413,63 @@ double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& nex
 
 FeedPlan planFeed(const Program& program, const Machine& machine, const LimitBudget& budget,
                   const ProgressCallback& progress) {
-  return Planner(program, machine, budget).run(progress);
+  Planner planner(machine, budget, program.source);
+  FeedPlan plan;
+  plan.filterTime1 = planner.filterTime1();
+  plan.filterTime2 = planner.filterTime2();
+  plan.cycle = machine.cycle;
+  plan.segments.reserve(program.moves.size());
+  const std::size_t n = program.moves.size();
+  for (std::size_t i = 0; i < n; ++i) {
+    if (progress && (i & 0xFFFF) == 0) progress(0.5 * static_cast<double>(i) / n);
+    planner.add(static_cast<std::uint32_t>(i), program.moves[i], program.startOf(i));
+  }
+  planner.finish();
+  planner.commit(plan.segments);
+  plan.holdBefore = planner.holdBefore();
+  if (progress) progress(1.0);
+  return plan;
 }
+
+struct StreamingFeedPlanner::Impl {
+  Impl(const Machine& machine, const LimitBudget& budget, std::string source)
+      : planner(machine, budget, std::move(source)) {}
+  Planner planner;
+  std::size_t commitEvery = 0, maxHeld = 0;
+  std::uint64_t closedAtLastCommit = 0;
+  std::size_t largestHeld = 0;
+};
+
+StreamingFeedPlanner::StreamingFeedPlanner(const Machine& machine, const LimitBudget& budget, std::string source,
+                                           const Window& window)
+    : impl_(std::make_unique<Impl>(machine, budget, std::move(source))) {
+  impl_->commitEvery = std::max<std::size_t>(window.commitEvery, 1);
+  impl_->maxHeld = std::max(window.maxHeld, impl_->commitEvery);
+}
+
+StreamingFeedPlanner::~StreamingFeedPlanner() = default;
+
+void StreamingFeedPlanner::add(std::uint32_t index, const Move& move, const Vec3& start) {
+  impl_->planner.add(index, move, start);
+  impl_->largestHeld = std::max(impl_->largestHeld, impl_->planner.held());
+}
+
+void StreamingFeedPlanner::finish() { impl_->planner.finish(); }
+
+void StreamingFeedPlanner::take(std::vector<PlannedSegment>& out) {
+  Planner& planner = impl_->planner;
+  // A commit walks the whole window: attempted every commitEvery segments, the work per
+  // segment stays constant.
+  if (!planner.finished() && planner.closedSegments() - impl_->closedAtLastCommit < impl_->commitEvery) return;
+  impl_->closedAtLastCommit = planner.closedSegments();
+  planner.commit(out, impl_->maxHeld);
+}
+
+double StreamingFeedPlanner::holdBefore() const { return impl_->planner.holdBefore(); }
+double StreamingFeedPlanner::filterTime1() const { return impl_->planner.filterTime1(); }
+double StreamingFeedPlanner::filterTime2() const { return impl_->planner.filterTime2(); }
+std::size_t StreamingFeedPlanner::held() const { return impl_->planner.held(); }
+std::size_t StreamingFeedPlanner::largestHeld() const { return impl_->largestHeld; }
+std::size_t StreamingFeedPlanner::forcedCommits() const { return impl_->planner.forcedCommits(); }
 
 }  // namespace isurface

@@ -10,6 +10,7 @@
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
+#include <functional>
 
 #include "gcode_machine.h"
 
@@ -20,6 +21,8 @@ namespace {
 
 // With keepGoing, interpretation stops after this many bad blocks (binary junk, wrong file).
 constexpr std::size_t kMaxErrors = 1000;
+// Streaming releases the text read so far in steps of this many bytes.
+constexpr std::ptrdiff_t kReleaseBytes = std::ptrdiff_t{8} << 20;
 
 std::string codeName(char letter, int tenths) {
   if (tenths < 0) return fmt::format("{}?", letter);
@@ -77,6 +80,20 @@ void adviseHugePages(const void* data, std::size_t bytes) {
   if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
 }
 
+// Physical lines: newlines, plus a last line that has none.
+std::size_t countLines(const char* begin, const char* end) {
+  std::size_t newlines = 0;
+  for (const char* p = begin; p < end;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (!nl) break;
+    ++newlines;
+    p = static_cast<const char*>(nl) + 1;
+  }
+  return newlines + (begin < end && end[-1] != '\n' ? 1 : 0);
+}
+
+std::uint32_t clampToU32(std::size_t n) { return static_cast<std::uint32_t>(std::min<std::size_t>(n, 0xffffffffu)); }
+
 }  // namespace
 
 std::string fmtLength(double v) { return fmt::format("{:.4f}", v); }
@@ -102,34 +119,69 @@ void Machine::warnOnce(bool& done, std::uint32_t column, std::string message) {
   result_.program.warnings.push_back(Diagnostic{source_, line_, column, std::move(message)});
 }
 
+void Machine::streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released) {
+  sink_ = &sink;
+  chunkMoves_ = std::max<std::size_t>(chunkMoves, 1);
+  released_ = std::move(released);
+}
+
+void Machine::deliverMoves(bool all) {
+  const std::size_t last = all ? moves_.size() : moves_.size() - 1;
+  std::size_t first = 0;
+  while (first < last) {
+    const std::size_t count = std::min(chunkMoves_, last - first);
+    sink_->consume(moves_.data() + first, count, delivered_);
+    delivered_ += count;
+    first += count;
+  }
+  moves_.erase(moves_.begin(), moves_.begin() + static_cast<std::ptrdiff_t>(first));
+}
+
 void Machine::run(std::string_view text) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
-  std::size_t newlines = 0;
-  for (const char* p = begin; p < end;) {
-    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-    if (!nl) break;
-    ++newlines;
-    p = static_cast<const char*>(nl) + 1;
+  if (sink_) {
+    moves_.reserve(chunkMoves_ + 16);
+  } else {
+    result_.program.lineCount = clampToU32(countLines(begin, end));
+    // One move per line is the common case; a line of a move is rarely under 8 bytes.
+    moves_.reserve(std::min<std::size_t>(result_.program.lineCount, text.size() / 8) + 16);
+    adviseHugePages(moves_.data(), moves_.capacity() * sizeof(Move));
   }
-  const std::size_t lines = newlines + (!text.empty() && text.back() != '\n' ? 1 : 0);
-  result_.program.lineCount = static_cast<std::uint32_t>(std::min<std::size_t>(lines, 0xffffffffu));
-  // One move per line is the common case; a line of a move is rarely under 8 bytes.
-  moves_.reserve(std::min(lines, text.size() / 8) + 16);
-  adviseHugePages(moves_.data(), moves_.capacity() * sizeof(Move));
 
   const double total = text.empty() ? 1.0 : static_cast<double>(text.size());
   const char* first = begin;
   if (text.size() >= 3 && std::memcmp(begin, "\xEF\xBB\xBF", 3) == 0) first += 3;  // UTF-8 BOM
-  for (const char* p = first; p < end && !ended_;) {
+  const char* releasedUpTo = begin;
+  const char* p = first;
+  while (p < end && !ended_) {
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
     const char* lineEnd = nl ? static_cast<const char*>(nl) : end;
     ++line_;
     runLine(p, lineEnd);
     p = lineEnd + 1;
+    if (sink_) {
+      if (moves_.size() > chunkMoves_) deliverMoves(false);
+      if (released_ && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
+    }
     if ((line_ & 0xffffu) == 0 && options_.progress) options_.progress((p - begin) / total);
   }
-  if (moves_.capacity() > moves_.size() + moves_.size() / 4 + 64) moves_.shrink_to_fit();
+  if (sink_) {
+    deliverMoves(true);
+    // The lines after M2, M30 or a closing '%' still count; read in pieces released behind.
+    std::size_t lines = line_;
+    for (const char* rest = std::min(p, end); rest < end;) {
+      const char* pieceEnd = rest + std::min<std::size_t>(kReleaseBytes, static_cast<std::size_t>(end - rest));
+      lines += countLines(rest, pieceEnd) - (pieceEnd < end && pieceEnd[-1] != '\n' ? 1 : 0);
+      rest = pieceEnd;
+      if (released_) released_(rest);
+    }
+    // Text that is only a byte order mark is one (empty) line, as countLines() says.
+    if (lines == 0 && !text.empty()) lines = 1;
+    result_.program.lineCount = clampToU32(lines);
+  } else if (moves_.capacity() > moves_.size() + moves_.size() / 4 + 64) {
+    moves_.shrink_to_fit();
+  }
   if (options_.progress) options_.progress(1.0);
 }
 
@@ -354,39 +406,43 @@ InterpretResult interpretGcode(std::string_view text, const std::string& sourceN
   return result;
 }
 
-InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options) {
-  auto failed = [&](const std::string& what) {
-    InterpretResult result;
-    result.program.source = path;
-    result.errors.push_back(Diagnostic{path, 0, 0, what});
-    return result;
-  };
+namespace {
+
+// Opens `path` and calls use(text, mapped) with its contents: a regular file mapped (read in
+// ahead when `readAhead`), anything else read into memory. Returns why the file could not be
+// read, or an empty string.
+std::string withFileText(const std::string& path, bool readAhead,
+                         const std::function<void(std::string_view, bool)>& use) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
-  if (fd < 0) return failed(fmt::format("cannot open: {}", std::strerror(errno)));
+  if (fd < 0) return fmt::format("cannot open: {}", std::strerror(errno));
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int e = errno;
     ::close(fd);
-    return failed(fmt::format("cannot read: {}", std::strerror(e)));
+    return fmt::format("cannot read: {}", std::strerror(e));
   }
   if (S_ISDIR(st.st_mode)) {
     ::close(fd);
-    return failed("cannot read: is a directory");
+    return "cannot read: is a directory";
   }
   if (S_ISREG(st.st_mode)) {
     const auto size = static_cast<std::size_t>(st.st_size);
     if (size == 0) {
       ::close(fd);
-      return interpretGcode(std::string_view(), path, options);
+      use(std::string_view(), false);
+      return {};
     }
-    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | MAP_POPULATE, fd, 0);
+    void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE | (readAhead ? MAP_POPULATE : 0), fd, 0);
     if (map != MAP_FAILED) {
       ::close(fd);
       ::madvise(map, size, MADV_SEQUENTIAL);
-      InterpretResult result =
-          interpretGcode(std::string_view(static_cast<const char*>(map), size), path, options);
-      ::munmap(map, size);
-      return result;
+      struct Unmap {
+        void* map;
+        std::size_t size;
+        ~Unmap() { ::munmap(map, size); }
+      } unmap{map, size};
+      use(std::string_view(static_cast<const char*>(map), size), true);
+      return {};
     }
   }
   // Pipes, devices, or a file that cannot be mapped: read it.
@@ -398,13 +454,77 @@ InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOpt
       if (errno == EINTR) continue;
       const int e = errno;
       ::close(fd);
-      return failed(fmt::format("cannot read: {}", std::strerror(e)));
+      return fmt::format("cannot read: {}", std::strerror(e));
     }
     if (n == 0) break;
     text.append(buffer, static_cast<std::size_t>(n));
   }
   ::close(fd);
-  return interpretGcode(text, path, options);
+  use(text, false);
+  return {};
+}
+
+StreamedInterpretation streamText(std::string_view text, const std::string& sourceName, MoveSink& sink,
+                                  const InterpreterOptions& options, std::size_t chunkMoves,
+                                  std::function<void(const char*)> released) {
+  InterpretResult result;
+  gcode::Machine machine(options, result, sourceName);
+  machine.streamTo(sink, chunkMoves, std::move(released));
+  machine.run(text);
+  StreamedInterpretation out;
+  out.source = std::move(result.program.source);
+  out.start = result.program.start;
+  out.warnings = std::move(result.program.warnings);
+  out.errors = std::move(result.errors);
+  out.lineCount = result.program.lineCount;
+  out.moveCount = machine.movesMade();
+  return out;
+}
+
+}  // namespace
+
+InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options) {
+  InterpretResult result;
+  const std::string error = withFileText(path, true, [&](std::string_view text, bool) {
+    result = interpretGcode(text, path, options);
+  });
+  if (!error.empty()) {
+    result = InterpretResult{};
+    result.program.source = path;
+    result.errors.push_back(Diagnostic{path, 0, 0, error});
+  }
+  return result;
+}
+
+StreamedInterpretation interpretGcodeStream(std::string_view text, const std::string& sourceName,
+                                            MoveSink& sink, const InterpreterOptions& options,
+                                            std::size_t chunkMoves) {
+  return streamText(text, sourceName, sink, options, chunkMoves, {});
+}
+
+StreamedInterpretation interpretGcodeFileStream(const std::string& path, MoveSink& sink,
+                                                const InterpreterOptions& options, std::size_t chunkMoves) {
+  StreamedInterpretation result;
+  const std::string error = withFileText(path, false, [&](std::string_view text, bool mapped) {
+    const char* base = text.data();
+    const long page = ::sysconf(_SC_PAGESIZE);
+    std::size_t releasedBytes = 0;
+    auto release = [base, page, &releasedBytes](const char* upTo) {
+      // The mapping is private and read-only: its dropped pages are read again if touched.
+      const auto bytes = static_cast<std::size_t>(upTo - base) & ~static_cast<std::size_t>(page - 1);
+      if (bytes <= releasedBytes) return;
+      ::madvise(const_cast<char*>(base + releasedBytes), bytes - releasedBytes, MADV_DONTNEED);
+      releasedBytes = bytes;
+    };
+    result = streamText(text, path, sink, options, chunkMoves,
+                        mapped ? std::function<void(const char*)>(release) : nullptr);
+  });
+  if (!error.empty()) {
+    result = StreamedInterpretation{};
+    result.source = path;
+    result.errors.push_back(Diagnostic{path, 0, 0, error});
+  }
+  return result;
 }
 
 }  // namespace isurface

@@ -2,11 +2,13 @@
 // The RS274/NGC machine model behind interpretGcode: modal state, one block's execution, moves
 // out. Private to the core library; split over gcode_interpreter.cpp (blocks and modal codes),
 // gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp (canned cycles).
+#include <functional>
 #include <string>
 #include <vector>
 
 #include "gcode_lexer.h"
 #include "isurface/core/gcode_interpreter.h"
+#include "isurface/core/gcode_stream.h"
 
 namespace isurface::gcode {
 
@@ -78,12 +80,21 @@ class Machine {
  public:
   Machine(const InterpreterOptions& options, InterpretResult& result, std::string source);
 
+  // Hands the moves to `sink` in chunks of about `chunkMoves` between blocks instead of keeping
+  // them all; `released(p)` is told now and then that the text before p is no longer needed.
+  void streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released);
+
   // Interprets the whole text.
   void run(std::string_view text);
+
+  std::uint64_t movesMade() const { return delivered_ + moves_.size(); }
 
  private:
   // gcode_interpreter.cpp
   void runLine(const char* begin, const char* end);
+  // Streaming: hands over every move but the last, which a later block may still mark as
+  // ending at rest (M0, M6, a spindle change); all of them when `all`.
+  void deliverMoves(bool all);
   bool executeBlock(const Block& block);
   bool groupCodes(const Block& block, GroupedCodes& groups);
   void applyModalCodes(const GroupedCodes& groups);
@@ -122,6 +133,11 @@ class Machine {
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
   Block block_;
+  // Streaming (null sink_: every move stays in the program).
+  MoveSink* sink_ = nullptr;
+  std::size_t chunkMoves_ = 0;
+  std::uint64_t delivered_ = 0;
+  std::function<void(const char*)> released_;
 };
 
 // Formats a length for messages: 4 decimals.

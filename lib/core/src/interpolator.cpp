@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <deque>
+#include <memory>
 #include <limits>
 #include <vector>
 
@@ -51,49 +53,72 @@ int taps(double time, double cycle) {
   return time > 0 ? 2 * static_cast<int>(std::lround((time / cycle - 1.0) / 2.0)) + 1 : 1;
 }
 
-// Walks the unfiltered profile one cycle at a time.
+struct SampleTag {
+  std::uint32_t line, block;
+  double feed;
+};
+
+// A segment of the plan with what walking it needs.
+struct QueuedSegment {
+  PlannedSegment planned;
+  Move move;
+  Vec3 start;
+};
+
+// Walks the unfiltered profile one cycle at a time, over segments handed to it as they come.
 class ProfileWalker {
  public:
-  ProfileWalker(const Program& program, const FeedPlan& plan)
-      : program_(program), plan_(plan), last_(program.start) {
-    tau_ = -plan.holdBefore;
-    if (!plan.segments.empty()) enter(0);
+  ProfileWalker(const Vec3& start, double holdBefore) : tau_(-holdBefore), last_(start) {}
+
+  void add(const QueuedSegment& segment) {
+    queue_.push_back(segment);
+    if (!active_ && !ended_) enter();
   }
+  bool started() const { return active_ || ended_; }
+  bool active() const { return active_; }
 
-  bool done() const { return index_ >= plan_.segments.size(); }
-  std::size_t index() const { return index_; }
-
-  // Position at the current time; then `advance(cycle)`.
-  Vec3 position() const {
-    if (done()) return last_;
-    return geometry_.at(distance());
-  }
-  const PlannedSegment& segment() const { return plan_.segments[index_]; }
-
-  void advance(double dt) {
-    tau_ += dt;
-    while (!done() && tau_ >= total_) {
+  // Catches up with the time advanced: moves on over the segments whose time has run out.
+  // False when that needs a segment not handed over yet (and `final` is not set).
+  bool settle(bool final) {
+    while (active_ && tau_ >= total_) {
+      if (queue_.size() < 2 && !final) return false;
       tau_ -= total_;
       last_ = geometry_.end;
-      if (++index_ < plan_.segments.size()) enter(index_);
+      queue_.pop_front();
+      if (queue_.empty()) {
+        active_ = false;
+        ended_ = true;
+      } else {
+        enter();
+      }
     }
+    return true;
   }
 
+  // Position at the current time; then `advance(cycle)`.
+  Vec3 position() const { return active_ ? geometry_.at(distance()) : last_; }
+  SampleTag tag(double rapidFeed) const {
+    const QueuedSegment& q = queue_.front();
+    return SampleTag{q.move.line, q.planned.move,
+                     q.move.kind == MoveKind::Rapid ? rapidFeed : static_cast<double>(q.move.feed)};
+  }
+  void advance(double dt) { tau_ += dt; }
+
  private:
-  void enter(std::size_t k) {
-    index_ = k;
-    const PlannedSegment& s = plan_.segments[k];
-    geometry_ = PathSegment::from(program_, s.move);
+  void enter() {
+    const PlannedSegment& s = queue_.front().planned;
+    geometry_ = PathSegment::from(queue_.front().start, queue_.front().move);
     tAccel_ = s.accelTime();
     tCruise_ = s.cruiseTime();
     tDecel_ = s.decelTime();
     total_ = tAccel_ + tCruise_ + tDecel_ + s.holdAfter;
     dAccel_ = s.accelDistance();
     last_ = geometry_.end;
+    active_ = true;
   }
 
   double distance() const {
-    const PlannedSegment& s = plan_.segments[index_];
+    const PlannedSegment& s = queue_.front().planned;
     double t = tau_;
     if (t <= 0) return 0;
     if (t < tAccel_) return s.entrySpeed * t + 0.5 * s.accel * t * t;
@@ -107,44 +132,34 @@ class ProfileWalker {
     return s.length;
   }
 
-  const Program& program_;
-  const FeedPlan& plan_;
-  std::size_t index_ = 0;
+  std::deque<QueuedSegment> queue_;  // the front is the segment being walked
+  bool active_ = false, ended_ = false;
   PathSegment geometry_;
   double tau_ = 0, total_ = 0;
   double tAccel_ = 0, tCruise_ = 0, tDecel_ = 0, dAccel_ = 0;
   Vec3 last_;
 };
 
-struct SampleTag {
-  std::uint32_t line, block;
-  double feed;
-};
-
 }  // namespace
 
-InterpolationSummary interpolate(const Program& program, const Machine& machine, const FeedPlan& plan,
-                                 SampleSink& sink, const ProgressCallback& progress) {
-  InterpolationSummary summary;
-  const double cycle = machine.cycle;
-  ProfileWalker walker(program, plan);
-  const Vec3 start = program.start;
-  MovingAverage3 jerkFilter(taps(plan.filterTime1, cycle), start);
-  MovingAverage3 cornerFilter(taps(plan.filterTime2, cycle), start);
-  const int delay = jerkFilter.lag() + cornerFilter.lag();
-  std::vector<SampleTag> tags(delay + 1);
-  std::array<AxisServo, 3> servos{AxisServo(machine.axes[0], cycle, start[0]),
-                                  AxisServo(machine.axes[1], cycle, start[1]),
-                                  AxisServo(machine.axes[2], cycle, start[2])};
+struct StreamingInterpolator::Impl {
+  Impl(const Machine& m, const Vec3& startPosition, double holdBefore, double filterTime1, double filterTime2,
+       SampleSink& s)
+      : machine(m),
+        sink(s),
+        start(startPosition),
+        walker(startPosition, holdBefore),
+        holdBefore(holdBefore),
+        jerkFilter(taps(filterTime1, m.cycle), startPosition),
+        cornerFilter(taps(filterTime2, m.cycle), startPosition),
+        delay(jerkFilter.lag() + cornerFilter.lag()),
+        tags(delay + 1),
+        servos{AxisServo(m.axes[0], m.cycle, startPosition[0]), AxisServo(m.axes[1], m.cycle, startPosition[1]),
+               AxisServo(m.axes[2], m.cycle, startPosition[2])} {
+    batch.reserve(kBatch);
+  }
 
-  std::vector<SimSample> batch;
-  constexpr std::size_t kBatch = 4096;
-  batch.reserve(kBatch);
-  const double totalTime = std::max(plan.profileDuration(), cycle);
-  std::uint64_t rawIndex = 0;
-  SampleTag lastTag{0, 0, 0};
-
-  auto emit = [&](const Vec3& commanded, const SampleTag& tag) {
+  void emit(const Vec3& commanded, const SampleTag& tag) {
     SimSample s;
     s.line = tag.line;
     s.block = tag.block;
@@ -156,13 +171,15 @@ InterpolationSummary interpolate(const Program& program, const Machine& machine,
     s.fbZ = servos[2].step(commanded[2]);
     s.feed = tag.feed;
     batch.push_back(s);
-    if (batch.size() == kBatch) {
-      sink.consume(batch.data(), batch.size());
-      summary.samples += batch.size();
-      batch.clear();
-    }
-  };
-  auto push = [&](const Vec3& raw, const SampleTag& tag) {
+    if (batch.size() == kBatch) flush();
+  }
+  void flush() {
+    if (batch.empty()) return;
+    sink.consume(batch.data(), batch.size());
+    samples += batch.size();
+    batch.clear();
+  }
+  void push(const Vec3& raw, const SampleTag& tag) {
     const std::size_t slot = rawIndex % tags.size();
     tags[slot] = tag;
     const Vec3 smoothed = cornerFilter.push(jerkFilter.push(raw));
@@ -170,30 +187,83 @@ InterpolationSummary interpolate(const Program& program, const Machine& machine,
     // to the first move too.
     emit(smoothed, rawIndex >= static_cast<std::uint64_t>(delay) ? tags[(rawIndex + 1) % tags.size()] : tags[0]);
     ++rawIndex;
-  };
+  }
+  // Samples every cycle whose position is known.
+  void run(bool final) {
+    const double cycle = machine.cycle;
+    for (;;) {
+      if (advanced) {
+        if (!walker.settle(final)) return;
+        advanced = false;
+      }
+      if (!walker.active()) return;
+      lastTag = walker.tag(machine.rapidVelocity * 60.0);
+      push(walker.position(), lastTag);
+      walker.advance(cycle);
+      advanced = true;
+      if (progress && (rawIndex & 0x3FFFF) == 0) progress(std::min(1.0, rawIndex * cycle / progressTotal));
+    }
+  }
 
-  while (!walker.done()) {
-    const PlannedSegment& seg = walker.segment();
-    const Move& move = program.moves[seg.move];
-    lastTag = SampleTag{move.line, seg.move,
-                        move.kind == MoveKind::Rapid ? machine.rapidVelocity * 60.0 : static_cast<double>(move.feed)};
-    push(walker.position(), lastTag);
-    walker.advance(cycle);
-    if (progress && (rawIndex & 0x3FFFF) == 0) progress(std::min(1.0, rawIndex * cycle / totalTime));
-  }
+  static constexpr std::size_t kBatch = 4096;
+  const Machine& machine;
+  SampleSink& sink;
+  const Vec3 start;
+  ProfileWalker walker;
+  const double holdBefore;
+  MovingAverage3 jerkFilter, cornerFilter;
+  const int delay;
+  std::vector<SampleTag> tags;
+  std::array<AxisServo, 3> servos;
+  std::vector<SimSample> batch;
+  std::uint64_t rawIndex = 0, samples = 0;
+  SampleTag lastTag{0, 0, 0};
+  bool advanced = false;  // time has advanced since the walker last caught up
+  ProgressCallback progress;
+  double progressTotal = 1;
+};
+
+StreamingInterpolator::StreamingInterpolator(const Machine& machine, const Vec3& start, double holdBefore,
+                                             double filterTime1, double filterTime2, SampleSink& sink)
+    : impl_(std::make_unique<Impl>(machine, start, holdBefore, filterTime1, filterTime2, sink)) {}
+
+StreamingInterpolator::~StreamingInterpolator() = default;
+
+void StreamingInterpolator::reportProgress(ProgressCallback progress, double totalSeconds) {
+  impl_->progress = std::move(progress);
+  impl_->progressTotal = std::max(totalSeconds, impl_->machine.cycle);
+}
+
+void StreamingInterpolator::add(const PlannedSegment& segment, const Move& move, const Vec3& start) {
+  impl_->walker.add(QueuedSegment{segment, move, start});
+  impl_->run(false);
+}
+
+InterpolationSummary StreamingInterpolator::finish() {
+  Impl& d = *impl_;
+  d.run(true);
   // A program of dwells alone still takes their time.
-  if (plan.segments.empty())
-    for (double t = 0; t < plan.holdBefore; t += cycle) push(start, lastTag);
+  if (!d.walker.started())
+    for (double t = 0; t < d.holdBefore; t += d.machine.cycle) d.push(d.start, d.lastTag);
   // The final point at rest, until the filters hold nothing else.
-  const Vec3 finalPosition = walker.position();
-  for (int i = 0; i <= 2 * delay; ++i) push(finalPosition, lastTag);
-  if (!batch.empty()) {
-    sink.consume(batch.data(), batch.size());
-    summary.samples += batch.size();
-  }
-  summary.duration = summary.samples > 0 ? (summary.samples - 1) * cycle : 0;
-  if (progress) progress(1.0);
+  const Vec3 finalPosition = d.walker.position();
+  for (int i = 0; i <= 2 * d.delay; ++i) d.push(finalPosition, d.lastTag);
+  d.flush();
+  InterpolationSummary summary;
+  summary.samples = d.samples;
+  summary.duration = d.samples > 0 ? (d.samples - 1) * d.machine.cycle : 0;
+  if (d.progress) d.progress(1.0);
   return summary;
+}
+
+InterpolationSummary interpolate(const Program& program, const Machine& machine, const FeedPlan& plan,
+                                 SampleSink& sink, const ProgressCallback& progress) {
+  StreamingInterpolator interpolator(machine, program.start, plan.holdBefore, plan.filterTime1, plan.filterTime2,
+                                     sink);
+  if (progress) interpolator.reportProgress(progress, plan.profileDuration());
+  for (const PlannedSegment& segment : plan.segments)
+    interpolator.add(segment, program.moves[segment.move], program.startOf(segment.move));
+  return interpolator.finish();
 }
 
 }  // namespace isurface

@@ -3,9 +3,12 @@
 namespace isurface {
 
 PathSegment PathSegment::from(const Program& program, std::size_t moveIndex) {
-  const Move& move = program.moves[moveIndex];
+  return from(program.startOf(moveIndex), program.moves[moveIndex]);
+}
+
+PathSegment PathSegment::from(const Vec3& start, const Move& move) {
   PathSegment seg;
-  seg.start = program.startOf(moveIndex);
+  seg.start = start;
   seg.end = move.end;
   if (move.isArc()) {
     seg.arc = true;

@@ -188,7 +188,9 @@ int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) 
     const double viaB = j < stepsB ? d2(va, nextB) : std::numeric_limits<double>::infinity();
     std::array<std::uint32_t, 3> t;
     double other;
-    if (viaA <= viaB) {
+    // The pass with steps left is taken when the other has none: comparing the distances alone
+    // would not end when both are infinite (coordinates near the double's limit) or NaN.
+    if (j >= stepsB || (i < stepsA && viaA <= viaB)) {
       t = {va, nextA, vb};
       other = viaA;
       va = nextA;

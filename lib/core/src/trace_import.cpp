@@ -81,6 +81,9 @@ struct Binding {
 // Collects the mapped cells of each row into a Trajectory's channels.
 class TrajectoryBuilder {
  public:
+  // What a dump has room for beside its own channels (line x y z t fb_x fb_y fb_z feed).
+  static constexpr std::size_t kMaxExtraChannels = kBiipMaxChannels - 9;
+
   explicit TrajectoryBuilder(const std::string& file) : file_(file) { t_.source = file; }
 
   void bind(const std::string& role, std::size_t column, const std::string& label) {
@@ -93,8 +96,17 @@ class TrajectoryBuilder {
         bindings_.push_back({target, column, label});
         return;
       }
-    const std::string name = uniqueExtraName(sanitiseChannelName(role));
-    t_.extra.emplace_back(name, std::vector<double>{});
+    bindExtra(role, column, label);
+  }
+
+  // A column kept as a channel of its own, whatever its name: a header named like a role
+  // ("x", "line") must not feed that role a second value per row.
+  void bindExtra(const std::string& name, std::size_t column, const std::string& label) {
+    if (t_.extra.size() == kMaxExtraChannels)
+      fail(file_, 0, 0,
+           "more than " + std::to_string(kMaxExtraChannels) + " extra channels (column " + label +
+               "): a Biip dump holds " + std::to_string(kBiipMaxChannels) + " channels in all");
+    t_.extra.emplace_back(uniqueExtraName(sanitiseChannelName(name)), std::vector<double>{});
     bindings_.push_back({Target::Extra, column, label, t_.extra.size() - 1});
   }
 
@@ -305,7 +317,7 @@ Trajectory importCsv(const std::string& path, const TraceImportOptions& options)
       double v = 0;
       for (std::size_t k = 0; k < header.size() && k < cells.size(); ++k)
         if (!header[k].empty() && !builder.bound(k) && parseNumber(cells[k].text, v))
-          builder.bind(header[k], k, "'" + header[k] + "'");
+          builder.bindExtra(header[k], k, "'" + header[k] + "'");
     }
     firstRow = false;
     builder.addRow(cells, lineNumber);

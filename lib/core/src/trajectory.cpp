@@ -61,7 +61,8 @@ double rapidFeedFromMetadata(const std::string& metadataJson) {
   return std::isfinite(value) && value > 0 ? value : 0;
 }
 
-Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress) {
+Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress,
+                          const TrajectoryChannels& channels) {
   const BiipHeader& header = reader.header();
   const std::size_t n = reader.recordCount();
   Trajectory out;
@@ -89,14 +90,14 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   add("y", out.y);
   add("z", out.z);
   if (t.valid()) add("t", out.time);
-  if (feedbackComplete) {
+  if (feedbackComplete && channels.feedback) {
     add("fb_x", out.fbX);
     add("fb_y", out.fbY);
     add("fb_z", out.fbZ);
   }
   if (reader.hasChannel("feed")) add("feed", out.feed);
   for (const BiipChannel& c : header.channels) {
-    if (isKnownChannel(c.name, feedbackComplete)) continue;
+    if (!channels.extra || isKnownChannel(c.name, feedbackComplete)) continue;
     out.extra.emplace_back(c.name, std::vector<double>());
   }
   // Resized only now: `extra` must not grow after pointers into it are taken.

@@ -14,6 +14,8 @@
 //     within the machine's chord tolerance.
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <string>
 #include <vector>
 
 #include "isurface/core/machine.h"
@@ -69,6 +71,48 @@ using ProgressCallback = std::function<void(double)>;
 
 FeedPlan planFeed(const Program& program, const Machine& machine, const LimitBudget& budget = {},
                   const ProgressCallback& progress = {});
+
+// The same plan made with a bounded look-ahead window, for programs that are not held whole:
+// moves go in one by one, and out come the segments whose profile later moves can no longer
+// change, bit for bit those of planFeed. A segment is final once the window ahead of it reaches
+// a junction where the speed is set by what lies behind (a corner, a stop, a cap), not by a stop
+// assumed at the window's end; so the window spans about one braking distance from the highest
+// speed reached (at most V^2 / 2a, 107 mm at 24 m/min and 750 mm/s^2) plus commitEvery
+// segments. A window that would hold more than maxHeld segments (a braking distance over that
+// many tiny segments) commits all but maxHeld / 2 of them as if the machine stopped at its end:
+// slower there than planFeed, never beyond a limit, and counted by forcedCommits(). Memory: about 120 bytes per
+// segment held. The machine must outlive the planner.
+class StreamingFeedPlanner {
+ public:
+  struct Window {
+    std::size_t commitEvery = 4096;         // segments between attempts to commit
+    std::size_t maxHeld = std::size_t{1} << 17;
+  };
+
+  StreamingFeedPlanner(const Machine& machine, const LimitBudget& budget, std::string source, const Window& window);
+  ~StreamingFeedPlanner();
+  StreamingFeedPlanner(const StreamingFeedPlanner&) = delete;
+  StreamingFeedPlanner& operator=(const StreamingFeedPlanner&) = delete;
+
+  // Move `index` of the program, which starts at `start` (the end of the move before it). Throws
+  // InputError for a dwell longer than a day, and (here or in take()) for a move that would be.
+  void add(std::uint32_t index, const Move& move, const Vec3& start);
+  // No more moves: the machine comes to rest after the last one.
+  void finish();
+  // Appends the segments whose profile is final, in order (after finish(), all that are left).
+  void take(std::vector<PlannedSegment>& out);
+
+  double holdBefore() const;  // s of dwell before the first motion; final once a segment is out
+  double filterTime1() const;
+  double filterTime2() const;
+  std::size_t held() const;         // segments in the window now
+  std::size_t largestHeld() const;  // the most it held
+  std::size_t forcedCommits() const;
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 // Radius of the circle through three points (equation 1 of the constant speed interval
 // paper), mm; +infinity for collinear or coincident points.

@@ -3,6 +3,7 @@
 // smooths the axis commands with the plan's filters and runs each axis through its servo.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 
 #include "isurface/core/feed_plan.h"
 
@@ -32,5 +33,30 @@ struct InterpolationSummary {
 
 InterpolationSummary interpolate(const Program& program, const Machine& machine, const FeedPlan& plan,
                                  SampleSink& sink, const ProgressCallback& progress = {});
+
+// The interpolator fed one planned segment at a time (interpolate() is this over a whole plan):
+// each add() samples every cycle that no later segment can change, so that it holds only the
+// segment being walked and the filters' few cycles. The machine and the sink must outlive it.
+class StreamingInterpolator {
+ public:
+  // `start`: the position before the first move, mm; `holdBefore`: s of dwell before the first
+  // motion; the filter times are the plan's.
+  StreamingInterpolator(const Machine& machine, const Vec3& start, double holdBefore, double filterTime1,
+                        double filterTime2, SampleSink& sink);
+  ~StreamingInterpolator();
+  StreamingInterpolator(const StreamingInterpolator&) = delete;
+  StreamingInterpolator& operator=(const StreamingInterpolator&) = delete;
+
+  // Reports the fraction of `totalSeconds` of profile sampled so far.
+  void reportProgress(ProgressCallback progress, double totalSeconds);
+  // The next segment of the plan and its move, which starts at `start`.
+  void add(const PlannedSegment& segment, const Move& move, const Vec3& start);
+  // No more segments: samples the rest, then the standstill until the filters have settled.
+  InterpolationSummary finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace isurface

@@ -14,6 +14,8 @@ struct PathSegment {
   double length = 0;              // mm
 
   static PathSegment from(const Program& program, std::size_t moveIndex);
+  // The same for a move that starts at `start`.
+  static PathSegment from(const Vec3& start, const Move& move);
 
   // Point at arc length s (mm) from the start; s is clamped to [0, length].
   Vec3 at(double s) const;

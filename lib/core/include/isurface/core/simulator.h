@@ -1,10 +1,15 @@
 #pragma once
 // G-code program + machine -> interpolation samples: feed planning, interpolation and servo.
 #include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "isurface/core/biip.h"
+#include "isurface/core/diagnostic.h"
+#include "isurface/core/gcode_stream.h"
 #include "isurface/core/interpolator.h"
 
 namespace isurface {
@@ -28,6 +33,59 @@ std::vector<BiipChannel> simulationChannels();
 // Simulates into a Biip file written atomically (nothing is left at `path` on failure).
 SimulationReport simulateToBiip(const Program& program, const Machine& machine, const std::string& path,
                                 const ProgressCallback& progress = {});
+
+// Simulates a program handed over move by move, as interpretGcodeStream delivers it: planned
+// with StreamingFeedPlanner's window and interpolated as segments become final. The samples are
+// simulate()'s on the whole program, bit for bit (unless the planner had to force a commit,
+// see feed_plan.h). Memory: the planner's window, the moves it spans (64 bytes each) and the
+// interpolator's few cycles, whatever the program's length.
+class StreamingSimulation : public MoveSink {
+ public:
+  // `start`: the position before the first move (InterpreterOptions::startPosition); `source`
+  // names the program in planning errors. The machine and the sink must outlive it.
+  StreamingSimulation(const Machine& machine, const Vec3& start, const std::string& source, SampleSink& sink,
+                      const StreamingFeedPlanner::Window& window = {});
+  ~StreamingSimulation() override;
+
+  // An InputError of planning (or of the sink: a full disk) is kept, not thrown, so that the
+  // interpreter can go on to report the program's own errors first; later moves are ignored.
+  void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override;
+  // After the last move: the rest of the samples. Throws the error kept by consume(), if any.
+  SimulationReport finish();
+
+  const StreamingFeedPlanner& planner() const { return planner_; }
+
+ private:
+  void interpolateFinalSegments();
+
+  const Machine& machine_;
+  SampleSink& sink_;
+  StreamingFeedPlanner planner_;
+  std::string source_;
+  std::unique_ptr<StreamingInterpolator> interpolator_;  // once the dwell before the first motion is known
+  Vec3 start_;
+  Vec3 moveStart_;                 // where the next move handed over starts
+  std::deque<Move> moves_;         // from the move of the segment being interpolated on
+  std::uint64_t firstMove_ = 0;    // index of moves_.front()
+  Vec3 firstMoveStart_;            // where moves_.front() starts
+  std::vector<PlannedSegment> final_;
+  SimulationReport report_;
+  std::optional<InputError> simulationError_;
+};
+
+struct StreamedSimulation {
+  StreamedInterpretation interpretation;  // when it has errors, nothing was written
+  SimulationReport report;
+  std::size_t largestWindow = 0;          // segments the planner held at most
+  std::size_t forcedCommits = 0;
+};
+
+// Interprets and simulates a G-code file in bounded memory (interpretGcodeFileStream into a
+// StreamingSimulation) into a Biip file written atomically: nothing is left at `biipPath` when
+// the program has errors (returned, not thrown) or planning fails (InputError). Progress: the
+// fraction of the G-code read.
+StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const Machine& machine,
+                                           const std::string& biipPath, const InterpreterOptions& options = {});
 
 // A sink that keeps every sample in memory (tests, small programs).
 class SampleBuffer : public SampleSink {

@@ -41,9 +41,17 @@ struct Trajectory {
 
 using TrajectoryProgress = std::function<void(double)>;
 
-// Copies every channel of a dump (progress 0..1 about every million records). Samples whose
+// Which channels loadTrajectory copies besides time, line, block, x y z and feed (48 bytes a
+// sample as doubles and u32).
+struct TrajectoryChannels {
+  bool feedback = true;  // fb_x fb_y fb_z: 24 bytes a sample
+  bool extra = true;     // every other channel of the dump: 8 bytes a sample each
+};
+
+// Copies the channels of a dump (progress 0..1 about every million records). Samples whose
 // position is not finite are kept; geometry skips them.
-Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress = {});
+Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress = {},
+                          const TrajectoryChannels& channels = {});
 // rapidFeed is left 0: set it from the machine when the caller knows it.
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source);
 
