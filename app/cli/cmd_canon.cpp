@@ -233,7 +233,7 @@ std::function<int()> setup(CLI::App& sub) {
       progress.finish();
       if (error != 0) {
         std::fprintf(stderr, "error: cannot write the output: %s\n", std::strerror(error));
-        code = kExitFailure;
+        code = kExitInputError;  // as every command that cannot write where it was told to
       }
     } else {
       std::string writeError;
@@ -242,7 +242,7 @@ std::function<int()> setup(CLI::App& sub) {
       // Without --keep-going a program with errors is not written at all.
       if (!writeError.empty() && (result.ok() || args->keepGoing)) {
         std::fprintf(stderr, "error: %s\n", writeError.c_str());
-        code = kExitFailure;
+        code = kExitInputError;
       }
     }
     if (!result.ok()) code = kExitInputError;

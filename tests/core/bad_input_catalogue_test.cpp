@@ -398,13 +398,13 @@ const std::vector<Row>& catalogue() {
        {"wide.csv", "more than 247 extra channels", "'c247'"}, "wide.biip"},
 
       // Outputs that cannot be written (canon documents exit code 1 for these)
-      {"output_missing_dir_canon", "canon {in}/good.nc -o {out}/no_dir/a.txt", 1,
+      {"output_missing_dir_canon", "canon {in}/good.nc -o {out}/no_dir/a.txt", 2,
        {"no_dir/a.txt", "cannot write"}, "no_dir/a.txt"},
       {"output_missing_dir_simulate", "simulate {in}/good.nc -o {out}/no_dir/a.biip", 2,
        {"no_dir/a.biip", "cannot write"}, "no_dir/a.biip"},
       {"output_missing_dir_export", "export {in}/ts.biip --vtp {out}/no_dir/a.vtp", 2,
        {"no_dir/a.vtp", "cannot write"}, "no_dir/a.vtp"},
-      {"output_dev_full_canon", "canon {in}/good.nc -o /dev/full", 1,
+      {"output_dev_full_canon", "canon {in}/good.nc -o /dev/full", 2,
        {"/dev/full", "No space left on device"}, "/dev/full"},
       {"output_dev_full_simulate", "simulate {in}/good.nc -o /dev/full", 2,
        {"/dev/full", "No space left on device"}, "/dev/full"},

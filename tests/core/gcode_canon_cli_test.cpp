@@ -104,13 +104,13 @@ TEST(gcodeCanonCli, FailedOutputLeavesNoFile) {
   const std::string path = writeScratch("fail-prog.ngc", kProgram);
   // A full device.
   test::CommandResult r = test::runCli("canon " + path + " -o /dev/full");
-  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("error:"), std::string::npos);
   EXPECT_NE(r.err.find("/dev/full"), std::string::npos) << r.err;
   // A folder that does not exist.
   const auto missing = test::scratchDir() / "no-such-dir" / "x.canon";
   r = test::runCli("canon " + path + " -o " + missing.string());
-  EXPECT_EQ(r.exitCode, 1);
+  EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("cannot write"), std::string::npos) << r.err;
   EXPECT_FALSE(std::filesystem::exists(missing.parent_path()));
 
