@@ -172,6 +172,7 @@ void writeInputs() {
   writeBytes("m_array.json", "[1, 2]\n");
   writeBytes("m_neg_acc.json", machineJson("0.001", axisJson("-5")));
   writeBytes("m_cycle0.json", machineJson("0"));
+  writeBytes("m_cycle_tiny.json", machineJson("1e-12"));
   writeBytes("m_cycle_text.json", machineJson("\"fast\""));
   writeBytes("m_cycle_huge.json", machineJson("1e300"));
   writeBytes("m_gain.json", machineJson("0.001", axisJson(), axisJson("2000", "100000")));
@@ -184,6 +185,7 @@ void writeInputs() {
   writeBytes("m_overflow.json", machineJson("0.001", axisJson("1e400")));
   // Machine traces
   writeBytes("trace.csv", "x,y,z,ax\n0,0,0,0\n1,0,0,1\n2,0,0,2\n");
+  writeBytes("trace_time_inf.csv", "x,y,z,t\n0,0,0,0\n1,0,0,inf\n");
   {  // the umich preset keeps every numeric column: 250 more than its own are too many channels
     std::string header = "X1_CommandPosition,Y1_CommandPosition,Z1_CommandPosition,X1_ActualPosition,"
                          "Y1_ActualPosition,Z1_ActualPosition,M1_CURRENT_FEEDRATE";
@@ -323,6 +325,9 @@ const std::vector<Row>& catalogue() {
       {"machine_cycle_zero",
        "simulate {in}/good.nc --machine {in}/m_cycle0.json -o {out}/m_cycle0.biip", 2,
        {"m_cycle0.json", "cycle_s must be greater than 0"}, "m_cycle0.biip"},
+      {"machine_cycle_tiny",
+       "simulate {in}/good.nc --machine {in}/m_cycle_tiny.json -o {out}/m_cycle_tiny.biip", 2,
+       {"m_cycle_tiny.json", "cycle_s must be at least 1e-05 s"}, "m_cycle_tiny.biip"},
       {"machine_cycle_not_a_number",
        "simulate {in}/good.nc --machine {in}/m_cycle_text.json -o {out}/m_cycle_text.biip", 2,
        {"m_cycle_text.json", "cycle_s must be a number"}, "m_cycle_text.biip"},
@@ -394,6 +399,8 @@ const std::vector<Row>& catalogue() {
       // Machine traces
       {"trace_partial_feedback", "import csv {in}/trace.csv --map x=x,y=y,z=z,fb_x=ax -o {out}/partial_fb.biip", 2,
        {"trace.csv", "fb_x, fb_y and fb_z together"}, "partial_fb.biip"},
+      {"trace_time_not_finite", "import csv {in}/trace_time_inf.csv --map x=x,y=y,z=z,t=t -o {out}/t_inf.biip", 2,
+       {"trace_time_inf.csv:3:", "time 'inf' is not finite"}, "t_inf.biip"},
       {"trace_too_many_columns", "import csv {in}/wide.csv --preset umich -o {out}/wide.biip", 2,
        {"wide.csv", "more than 247 extra channels", "'c247'"}, "wide.biip"},
 

@@ -67,6 +67,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   m.cycle = number(root, "cycle_s", m.cycle, source, "");
   requirePositive(m.cycle, source, "cycle_s");
   if (m.cycle > 0.1) fail(source, "cycle_s must be at most 0.1 s");
+  // NC interpolation cycles run from about 0.1 to 10 ms; a far shorter one only multiplies the
+  // samples of every simulation (1e-12 s would take hours for a few millimetres).
+  if (m.cycle < 1e-5) fail(source, "cycle_s must be at least 1e-05 s (10 us)");
   // Checked as written (mm/min), then kept in mm/s.
   const double rapid = number(root, "rapid_mm_min", m.rapidVelocity * 60, source, "");
   requirePositive(rapid, source, "rapid_mm_min");

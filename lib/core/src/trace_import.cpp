@@ -124,6 +124,10 @@ class TrajectoryBuilder {
       if (!parseNumber(cell.text, v))
         fail(file_, lineNumber, cell.column,
              "column " + b.label + ": '" + std::string(cell.text.substr(0, 40)) + "' is not a number");
+      // Positions may be NaN (geometry skips such samples) but a time cannot: every rate is
+      // divided by time differences.
+      if (b.target == Target::Time && !std::isfinite(v))
+        fail(file_, lineNumber, cell.column, "column " + b.label + ": time '" + std::string(cell.text.substr(0, 40)) + "' is not finite");
       target(b).push_back(v);
     }
     ++rows_;
@@ -140,8 +144,10 @@ class TrajectoryBuilder {
     t.cycle = cycle;
     if (!time_.empty()) {
       // A recorded time column: its mean step is the nominal cycle unless one was given.
-      if (!cycleGiven && rows_ > 1 && time_.back() > time_.front())
-        t.cycle = (time_.back() - time_.front()) / double(rows_ - 1);
+      if (!cycleGiven && rows_ > 1 && time_.back() > time_.front()) {
+        const double mean = (time_.back() - time_.front()) / double(rows_ - 1);
+        if (std::isfinite(mean)) t.cycle = mean;  // times nearly 1e308 apart overflow it
+      }
       t.time = std::move(time_);
       t.irregularTime = timeIsIrregular(t.time.data(), t.time.size(), t.cycle);
     } else {
