@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "isurface/core/biip.h"
-#include "isurface/core/kinematics.h"
+#include "isurface/io/biip.h"
+#include "isurface/analysis/kinematics.h"
 
 namespace {
 

@@ -11,7 +11,7 @@
 #include <fstream>
 #include <string>
 
-#include "isurface/core/gcode_interpreter.h"
+#include "isurface/gcode/gcode_interpreter.h"
 
 namespace {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "isurface/core/simulator.h"
+#include "isurface/nc/simulator.h"
 
 using namespace isurface;
 

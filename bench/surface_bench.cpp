@@ -14,12 +14,12 @@
 #include <filesystem>
 #include <string>
 
-#include "isurface/core/biip.h"
-#include "isurface/core/gcode_interpreter.h"
-#include "isurface/core/passes.h"
-#include "isurface/core/quantities.h"
-#include "isurface/core/simulator.h"
-#include "isurface/core/surface_mesh.h"
+#include "isurface/io/biip.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/surface/passes.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/nc/simulator.h"
+#include "isurface/surface/surface_mesh.h"
 
 using namespace isurface;
 

@@ -8,7 +8,7 @@
 #include <fstream>
 #include <memory>
 
-#include "headless_ui.h"
+#include "isurface/panels/headless_ui.h"
 
 using namespace isurface;
 
@@ -32,9 +32,9 @@ std::string writeRaster() {
   return path;
 }
 
-cli::HeadlessUi& app() {
-  static std::unique_ptr<cli::HeadlessUi> ui = [] {
-    auto made = std::make_unique<cli::HeadlessUi>(kWidth, kHeight, ui::Settings{});
+panels::HeadlessUi& app() {
+  static std::unique_ptr<panels::HeadlessUi> ui = [] {
+    auto made = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
     made->inspector().open(writeRaster());
     made->inspector().waitUntilIdle();
     std::printf("%s\n", made->inspector().statusText().c_str());
@@ -48,7 +48,7 @@ cli::HeadlessUi& app() {
 constexpr float kViewX = kWidth * 0.44f, kViewY = kHeight * 0.35f;
 
 void BM_FrameAtRest(benchmark::State& state) {
-  cli::HeadlessUi& ui = app();
+  panels::HeadlessUi& ui = app();
   ui.mouse(5, kHeight - 5, false);
   for (auto _ : state) ui.frame();
   state.counters["fps"] = benchmark::Counter(static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
@@ -56,7 +56,7 @@ void BM_FrameAtRest(benchmark::State& state) {
 BENCHMARK(BM_FrameAtRest)->Unit(benchmark::kMillisecond)->UseRealTime()->MinTime(3);
 
 void BM_FrameWhileRotating(benchmark::State& state) {
-  cli::HeadlessUi& ui = app();
+  panels::HeadlessUi& ui = app();
   ui.mouse(kViewX, kViewY, false);
   ui.frame();
   ui.mouse(kViewX, kViewY, true);
@@ -76,7 +76,7 @@ BENCHMARK(BM_FrameWhileRotating)->Unit(benchmark::kMillisecond)->UseRealTime()->
 // Press and release without moving: the pick happens on release, and that frame shows the new
 // selection in every panel (the 3D scene's glow of the line follows in the next frame).
 void BM_PickUpdatesEveryPanel(benchmark::State& state) {
-  cli::HeadlessUi& ui = app();
+  panels::HeadlessUi& ui = app();
   float offset = 0;
   for (auto _ : state) {
     state.PauseTiming();

@@ -7,10 +7,10 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/quality_regions.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/analysis/quality_regions.h"
 #include "isurface/vis/quality_map.h"
-#include "offscreen_render.h"
+#include "isurface/vis/offscreen_render.h"
 #include "progress.h"
 #include "trajectory_input.h"
 
@@ -88,7 +88,7 @@ int runAnalyze(const AnalyzeOptions& o) {
         if (samples.line[i] == line) map.data.highlight.push_back(samples.commanded(i));
     }
     vis::QualityScene scene(map.data, map.style);
-    renderSceneToPng(scene, 1600, 1000, o.png);
+    vis::renderSceneToPng(scene, 1600, 1000, o.png);
   }
   std::printf("%s: %zu regions beyond the thresholds (%zu of %zu vertices)", o.output.c_str(), report.regions.size(),
               report.flaggedVertices, report.vertices);

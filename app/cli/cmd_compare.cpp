@@ -9,12 +9,12 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/line_mapping.h"
-#include "isurface/core/run_comparison.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/analysis/line_mapping.h"
+#include "isurface/analysis/run_comparison.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/difference_map.h"
-#include "offscreen_render.h"
+#include "isurface/vis/offscreen_render.h"
 #include "progress.h"
 #include "trajectory_input.h"
 
@@ -161,7 +161,7 @@ int runCompare(const CompareOptions& o) {
   std::printf("-> %s\n", o.output.c_str());
   if (map) {
     vis::QualityScene scene(map->data, map->style);
-    renderSceneToPng(scene, 1600, 1000, o.png);
+    vis::renderSceneToPng(scene, 1600, 1000, o.png);
     std::printf("-> %s: %s [%s] %.4g .. %.4g\n", o.png.c_str(), map->style.quantityLabel.c_str(),
                 map->style.unit.c_str(), map->style.range.lo, map->style.range.hi);
   }

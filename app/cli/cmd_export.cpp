@@ -7,8 +7,8 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/quantities.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/analysis/quantities.h"
 #include "isurface/vis/quality_scene.h"
 #include "progress.h"
 #include "trajectory_input.h"

@@ -8,8 +8,8 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/akima_spline.h"
-#include "isurface/core/constant_speed_intervals.h"
+#include "isurface/fitting/akima_spline.h"
+#include "isurface/fitting/constant_speed_intervals.h"
 
 namespace isurface::cli {
 namespace {

@@ -4,9 +4,9 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/line_mapping.h"
-#include "isurface/core/trace_import.h"
-#include "trajectory_output.h"
+#include "isurface/analysis/line_mapping.h"
+#include "isurface/io/trace_import.h"
+#include "isurface/io/trajectory_writing.h"
 
 namespace isurface::cli {
 namespace {

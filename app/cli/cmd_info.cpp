@@ -6,9 +6,9 @@
 #include <string>
 
 #include "command.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/biip.h"
-#include "isurface/core/kinematics.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/io/biip.h"
+#include "isurface/analysis/kinematics.h"
 #include "progress.h"
 
 namespace isurface::cli {

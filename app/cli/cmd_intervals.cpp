@@ -8,8 +8,8 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/constant_speed_intervals.h"
-#include "isurface/core/interval_speed_plan.h"
+#include "isurface/fitting/constant_speed_intervals.h"
+#include "isurface/fitting/interval_speed_plan.h"
 
 namespace isurface::cli {
 namespace {

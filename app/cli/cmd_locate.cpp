@@ -10,8 +10,8 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/biip.h"
-#include "isurface/core/locate.h"
+#include "isurface/io/biip.h"
+#include "isurface/analysis/locate.h"
 
 namespace isurface::cli {
 

@@ -11,14 +11,14 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/gcode_interpreter.h"
-#include "isurface/core/optimized_run_comparison.h"
-#include "isurface/core/quality_regions.h"
-#include "isurface/core/region_optimizer.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/optimise/optimized_run_comparison.h"
+#include "isurface/analysis/quality_regions.h"
+#include "isurface/optimise/region_optimizer.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_map.h"
-#include "offscreen_render.h"
+#include "isurface/vis/offscreen_render.h"
 #include "trajectory_input.h"
 
 namespace isurface::cli {
@@ -72,7 +72,7 @@ void renderTop(const Run& run, const Program& program, vis::QualityMapRequest re
   request.caption = caption;
   const vis::QualityMap map = vis::buildQualityMap(run.samples, &program, request);
   vis::QualityScene scene(map.data, map.style);
-  renderSceneToPng(scene, 1200, 800, path);
+  vis::renderSceneToPng(scene, 1200, 800, path);
 }
 
 void renderSpeed(const Run& run, const Program& program, const std::string& caption, const ValueRange& range,

@@ -7,12 +7,12 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/biip.h"
-#include "isurface/core/quantities.h"
-#include "isurface/core/simulator.h"
+#include "isurface/io/biip.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/nc/simulator.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_map.h"
-#include "offscreen_render.h"
+#include "isurface/vis/offscreen_render.h"
 #include "progress.h"
 #include "trajectory_input.h"
 
@@ -110,7 +110,7 @@ int runRender(const RenderOptions& o) {
   map.style.fontSize = vis::fontSizeForHeight(height);
   building.finish();
   vis::QualityScene scene(map.data, map.style);
-  const double renderSeconds = renderSceneToPng(scene, width, height, o.output);
+  const double renderSeconds = vis::renderSceneToPng(scene, width, height, o.output);
   const double total = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   std::printf("%s: %s [%s] %.4g .. %.4g, %zu samples, %zu passes (%s), %zu triangles, render %.2f s, total %.2f s\n",
               o.output.c_str(), map.style.quantityLabel.c_str(), map.style.unit.c_str(),

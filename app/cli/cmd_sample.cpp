@@ -2,9 +2,9 @@
 #include <cstdio>
 
 #include "command.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/diagnostic.h"
-#include "isurface/core/sample_parts.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/gcode/sample_parts.h"
 
 namespace isurface::cli {
 namespace {

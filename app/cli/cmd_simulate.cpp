@@ -4,7 +4,7 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/simulator.h"
+#include "isurface/nc/simulator.h"
 #include "progress.h"
 
 namespace isurface::cli {

@@ -6,13 +6,13 @@
 #include <memory>
 
 #include "command.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/diagnostic.h"
-#include "isurface/core/sts_report.h"
-#include "isurface/core/sts_samples.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/sts/sts_report.h"
+#include "isurface/sts/sts_samples.h"
 #include "isurface/vis/quality_map.h"
-#include "offscreen_render.h"
-#include "trajectory_output.h"
+#include "isurface/vis/offscreen_render.h"
+#include "isurface/io/trajectory_writing.h"
 
 namespace isurface::cli {
 namespace {
@@ -82,7 +82,7 @@ int runSts(const StsOptions& o) {
       request.caption = surface->name() + ": " + o.discretise + " discretisation, " + o.nodes + " " + o.interp;
       vis::QualityMap map = vis::buildQualityMap(samples, nullptr, request);
       vis::QualityScene scene(map.data, map.style);
-      renderSceneToPng(scene, 1600, 1000, o.png);
+      vis::renderSceneToPng(scene, 1600, 1000, o.png);
     }
   }
   if (!o.report.empty()) writeFileAtomically(o.report, stsReportJson(*surface, p, job, r).dump(2) + "\n");

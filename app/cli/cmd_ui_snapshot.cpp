@@ -10,11 +10,11 @@
 #include <memory>
 
 #include "command.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/constant_speed_intervals.h"
-#include "isurface/core/diagnostic.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/fitting/constant_speed_intervals.h"
+#include "isurface/base/diagnostic.h"
 #include "isurface/panels/inspector.h"
-#include "headless_ui.h"
+#include "isurface/panels/headless_ui.h"
 
 namespace isurface::cli {
 namespace {
@@ -55,7 +55,7 @@ int runSnapshot(const SnapshotOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "give --pick-line or --pick-sample, not both"});
   int status = kExitOk;
   // Snapshots do not read or change the user's settings: the same inputs give the same picture.
-  HeadlessUi ui(width, height, ui::Settings{});
+  HeadlessUi ui(width, height, app_model::Settings{});
   panels::Inspector& inspector = ui.inspector();
   for (const std::string& file : o.files) {
     inspector.open(file);

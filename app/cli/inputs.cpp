@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "command.h"
-#include "isurface/core/gcode_interpreter.h"
+#include "isurface/gcode/gcode_interpreter.h"
 #include "progress.h"
 
 namespace isurface::cli {

@@ -2,8 +2,8 @@
 // Loading what commands share: a G-code program (with its diagnostics printed) and a machine.
 #include <string>
 
-#include "isurface/core/machine.h"
-#include "isurface/core/program.h"
+#include "isurface/machine/machine.h"
+#include "isurface/gcode/program.h"
 
 namespace isurface::cli {
 

@@ -6,7 +6,7 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/core/diagnostic.h"
+#include "isurface/base/diagnostic.h"
 
 namespace isurface::cli {
 

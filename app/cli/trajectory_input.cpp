@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "isurface/core/biip.h"
-#include "isurface/core/simulator.h"
+#include "isurface/io/biip.h"
+#include "isurface/nc/simulator.h"
 #include "progress.h"
 
 namespace isurface::cli {

@@ -3,9 +3,9 @@
 // progress line on the terminal.
 #include <string>
 
-#include "isurface/core/machine.h"
-#include "isurface/core/program.h"
-#include "isurface/core/trajectory.h"
+#include "isurface/machine/machine.h"
+#include "isurface/gcode/program.h"
+#include "isurface/base/trajectory.h"
 
 namespace isurface::cli {
 

@@ -18,7 +18,7 @@
 
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/ui_look.h"
-#include "isurface/ui/settings.h"
+#include "isurface/app_model/settings.h"
 
 namespace {
 
@@ -44,7 +44,7 @@ int run(int argc, char** argv) {
     std::fprintf(stderr, "isurface: cannot open a window (no display?); isurface-cli does the headless work\n");
     return 1;
   }
-  isurface::ui::Settings settings = isurface::ui::loadSettings();
+  isurface::app_model::Settings settings = isurface::app_model::loadSettings();
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 2);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
@@ -105,7 +105,7 @@ int run(int argc, char** argv) {
     settings.recentFiles = inspector.settings().recentFiles;
     settings.quantity = inspector.settings().quantity;
     settings.colorMap = inspector.settings().colorMap;
-    isurface::ui::saveSettings(settings);
+    isurface::app_model::saveSettings(settings);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

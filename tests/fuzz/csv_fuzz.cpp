@@ -6,7 +6,7 @@
 #include <cstdint>
 
 #include "fuzz_support.h"
-#include "isurface/core/trace_import.h"
+#include "isurface/io/trace_import.h"
 
 namespace {
 

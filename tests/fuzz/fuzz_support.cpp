@@ -5,11 +5,11 @@
 #include <cstdio>
 #include <cstdlib>
 
-#include "isurface/core/biip.h"
-#include "isurface/core/passes.h"
-#include "isurface/core/quantities.h"
-#include "isurface/core/surface_mesh.h"
-#include "trajectory_output.h"
+#include "isurface/io/biip.h"
+#include "isurface/surface/passes.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/surface/surface_mesh.h"
+#include "isurface/io/trajectory_writing.h"
 
 namespace isurface::fuzz {
 namespace {
@@ -56,7 +56,7 @@ void exerciseSamples(const Trajectory& samples) {
 
 void roundTripThroughBiip(const Trajectory& samples) {
   const std::string path = scratchBase() + ".out.biip";
-  cli::writeTrajectoryBiip(samples, path);
+  writeTrajectoryBiip(samples, path);
   const BiipReader reader(path);
   loadTrajectory(reader);
 }

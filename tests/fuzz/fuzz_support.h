@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <string>
 
-#include "isurface/core/diagnostic.h"
-#include "isurface/core/trajectory.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/base/trajectory.h"
 
 namespace isurface::fuzz {
 

@@ -4,7 +4,7 @@
 #include <cstdint>
 
 #include "fuzz_support.h"
-#include "isurface/core/trace_import.h"
+#include "isurface/io/trace_import.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string& path = isurface::fuzz::writeScratch(data, size, ".txt");

@@ -9,9 +9,9 @@
 #include <string>
 
 #include "fuzz_support.h"
-#include "isurface/core/gcode_interpreter.h"
-#include "isurface/core/machine.h"
-#include "isurface/core/simulator.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/machine/machine.h"
+#include "isurface/nc/simulator.h"
 
 namespace {
 

@@ -6,10 +6,10 @@
 #include <filesystem>
 #include <fstream>
 
-#include "isurface/core/diagnostic.h"
+#include "isurface/base/diagnostic.h"
 #include "isurface/panels/inspector.h"
 #include "test_support.h"
-#include "vis/image_compare.h"
+#include "image_compare.h"
 
 using namespace isurface;
 using namespace isurface::test;
@@ -23,12 +23,12 @@ panels::GlHooks noContext() {
 }  // namespace
 
 TEST(inspector, PickedLineSelectsItsFirstSampleAndBack) {
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.open(sourcePath("samples/wuzhishan.nc"));
   inspector.waitUntilIdle();
   ASSERT_NE(inspector.statusText().find("samples"), std::string::npos) << inspector.statusText();
   ASSERT_TRUE(inspector.selectLine(2316));
-  const ui::Selection first = inspector.selection();
+  const app_model::Selection first = inspector.selection();
   ASSERT_TRUE(first.sample.has_value());
   EXPECT_EQ(*first.line, 2316u);
   // The sample's own line is the same line, and it is the first such sample.
@@ -44,7 +44,7 @@ TEST(inspector, PickedLineSelectsItsFirstSampleAndBack) {
 }
 
 TEST(inspector, ADumpJoinsItsProgramAndBadFilesReportErrors) {
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   const std::string dump = (scratchDir() / "wz.biip").string();
   ASSERT_EQ(runCli("simulate " + sourcePath("samples/wuzhishan.nc") + " -o " + dump).exitCode, 0);
   inspector.open(sourcePath("samples/wuzhishan.nc"));
@@ -99,7 +99,7 @@ TEST(window, StartsDrawsAndQuitsUnderXvfb) {
 }
 
 TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.open(sourcePath("samples/transition-surface.nc"));
   inspector.waitUntilIdle();
   inspector.optimise(105, 400);
@@ -115,7 +115,7 @@ TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
 TEST(inspector, SlowToolServoPathColouredByItsError) {
   const std::string dump = (scratchDir() / "sts.biip").string();
   ASSERT_EQ(runCli("sts --surface sinusoid --interp hermite --biip " + dump).exitCode, 0);
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.open(dump);
   inspector.waitUntilIdle();
   ASSERT_NE(inspector.statusText().find("samples"), std::string::npos) << inspector.statusText();

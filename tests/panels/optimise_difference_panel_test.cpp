@@ -6,7 +6,7 @@
 
 #include "isurface/panels/inspector.h"
 #include "test_support.h"
-#include "vis/image_compare.h"
+#include "image_compare.h"
 
 using namespace isurface;
 using namespace isurface::test;
@@ -30,7 +30,7 @@ double meanDifferenceIn(const Image& a, const Image& b, int x0, int y0, int x1, 
 }  // namespace
 
 TEST(optimiseDifferencePanel, TheRegionsPassesAreComparedWithTheirReplacements) {
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.open(sourcePath("samples/transition-surface.nc"));
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.optimisedDifference(), nullptr);

@@ -37,7 +37,7 @@ std::string simulated(const std::string& program, const std::string& name) {
 
 TEST(runComparisonPanel, aSecondRunStandsBesideTheDocumentWithItsDifferences) {
   const std::string program = writeRaster("raster.nc", 2000);
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   EXPECT_EQ(inspector.runComparison(), nullptr);
   inspector.open(program);
   inspector.waitUntilIdle();
@@ -76,7 +76,7 @@ TEST(runComparisonPanel, aSecondRunStandsBesideTheDocumentWithItsDifferences) {
 }
 
 TEST(runComparisonPanel, comparingWithoutADocumentSaysWhatIsMissing) {
-  panels::Inspector inspector(noContext(), ui::Settings{});
+  panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.compareWith("/nonexistent/run.biip");
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.runComparison(), nullptr);

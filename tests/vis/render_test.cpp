@@ -8,7 +8,7 @@
 #include <filesystem>
 
 #include "test_support.h"
-#include "vis/image_compare.h"
+#include "image_compare.h"
 
 using namespace isurface::test;
 

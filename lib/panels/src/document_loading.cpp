@@ -3,9 +3,9 @@
 #include <filesystem>
 
 #include "inspector_state.h"
-#include "isurface/core/biip.h"
-#include "isurface/core/gcode_interpreter.h"
-#include "isurface/core/simulator.h"
+#include "isurface/io/biip.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/nc/simulator.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
@@ -14,7 +14,7 @@ namespace {
 
 // Maps a part of the job's progress to one stage.
 struct Stage {
-  ui::JobControl& control;
+  app_model::JobControl& control;
   double from, to;
   void operator()(double f) const { control.progress(from + (to - from) * f); }
 };
@@ -22,19 +22,19 @@ struct Stage {
 Curve curveOf(Quantity q, const Trajectory& samples) {
   const QuantityInfo& info = quantityInfo(q);
   const std::vector<double> values = sampleQuantity(q, samples);
-  return Curve{info.label, info.unit, ui::SignalPyramid(std::vector<float>(values.begin(), values.end()))};
+  return Curve{info.label, info.unit, app_model::SignalPyramid(std::vector<float>(values.begin(), values.end()))};
 }
 
 }  // namespace
 
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
-                                       const vis::QualityMapRequest& request, ui::JobControl& control) {
+                                       const vis::QualityMapRequest& request, app_model::JobControl& control) {
   auto doc = std::make_unique<Document>();
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
   doc->name = std::filesystem::path(programPath.empty() ? dumpPath : programPath).filename().string();
   if (!programPath.empty()) {
-    doc->text = std::make_unique<ui::TextLines>(programPath);
+    doc->text = std::make_unique<app_model::TextLines>(programPath);
     InterpreterOptions options;
     options.progress = Stage{control, 0.0, 0.15};
     InterpretResult r = interpretGcodeFile(programPath, options);
@@ -60,7 +60,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   control.progress(0.85);
   for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) doc->curves.push_back(curveOf(q, *doc->samples));
   for (const auto& [name, values] : doc->samples->extra)
-    doc->curves.push_back(Curve{name, "", ui::SignalPyramid(std::vector<float>(values.begin(), values.end()))});
+    doc->curves.push_back(Curve{name, "", app_model::SignalPyramid(std::vector<float>(values.begin(), values.end()))});
   control.progress(1.0);
   return doc;
 }

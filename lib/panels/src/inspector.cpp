@@ -43,7 +43,7 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
   result->replaces = replaces;
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
-  job.start(label, [result, programPath, dumpPath, request](ui::JobControl& control) {
+  job.start(label, [result, programPath, dumpPath, request](app_model::JobControl& control) {
     result->document = loadDocument(programPath, dumpPath, request, control);
   });
   status = label;
@@ -58,7 +58,7 @@ void Inspector::State::startRecolour() {
   std::shared_ptr<const Trajectory> samples = doc->samples;
   std::shared_ptr<const Program> program = doc->program;
   job.start("colouring by " + std::string(quantityInfo(request.quantity).label),
-            [result, samples, program, request](ui::JobControl& control) {
+            [result, samples, program, request](app_model::JobControl& control) {
               control.progress(0.1);
               result->map = vis::buildQualityMap(*samples, program.get(), request);
               control.progress(0.7);
@@ -139,7 +139,7 @@ void Inspector::State::activate(std::size_t index) {
 
 void Inspector::State::syncHighlight() {
   Document* doc = activeDocument();
-  const ui::Selection& sel = selection.current();
+  const app_model::Selection& sel = selection.current();
   if (!doc || !doc->scene || !doc->samples || sel.generation == shownGeneration) return;
   // The frame after a selection shows it in every panel at once (a marker over the view);
   // the glow of its line in the 3D scene, which costs a full render, follows a frame later.
@@ -159,7 +159,7 @@ void Inspector::State::syncHighlight() {
   view.invalidate();
 }
 
-Inspector::Inspector(GlHooks hooks, ui::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {
+Inspector::Inspector(GlHooks hooks, app_model::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {
   state_->persistent = std::move(settings);
   if (const auto q = parseQuantity(state_->persistent.quantity)) state_->settings.quantity = *q;
   state_->settings.colorMap = state_->persistent.colorMap;
@@ -252,9 +252,9 @@ const RunComparison* Inspector::runComparison() const {
   return state_->runComparison ? &state_->runComparison->result : nullptr;
 }
 
-const ui::Selection& Inspector::selection() const { return state_->selection.current(); }
+const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }
 std::string Inspector::statusText() const { return state_->status; }
-ui::Settings& Inspector::settings() { return state_->persistent; }
+app_model::Settings& Inspector::settings() { return state_->persistent; }
 bool Inspector::quitRequested() const { return state_->quit; }
 
 }  // namespace isurface::panels

@@ -9,16 +9,16 @@
 #include <utility>
 #include <vector>
 
-#include "isurface/core/program.h"
-#include "isurface/core/quantities.h"
-#include "isurface/core/run_comparison.h"
-#include "isurface/core/trajectory.h"
+#include "isurface/gcode/program.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/analysis/run_comparison.h"
+#include "isurface/base/trajectory.h"
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/scene_view.h"
-#include "isurface/ui/background_job.h"
-#include "isurface/ui/box_selection.h"
-#include "isurface/ui/signal_pyramid.h"
-#include "isurface/ui/text_lines.h"
+#include "isurface/app_model/background_job.h"
+#include "isurface/app_model/box_selection.h"
+#include "isurface/app_model/signal_pyramid.h"
+#include "isurface/app_model/text_lines.h"
 #include "isurface/vis/quality_map.h"
 
 namespace isurface::panels {
@@ -26,14 +26,14 @@ namespace isurface::panels {
 // The signal curves under the 3D view.
 struct Curve {
   std::string label, unit;
-  ui::SignalPyramid values;
+  app_model::SignalPyramid values;
 };
 
 // One program and its interpolation samples (simulated or read from a dump).
 struct Document {
   std::string name;
   std::string programPath, dumpPath;
-  std::unique_ptr<ui::TextLines> text;
+  std::unique_ptr<app_model::TextLines> text;
   std::shared_ptr<const Program> program;
   std::shared_ptr<const Trajectory> samples;
   vis::QualityMap map;
@@ -107,17 +107,17 @@ struct Inspector::State {
   int optimiseFirst = 1, optimiseLast = 1;
   // The rectangle last dragged over the view to choose the region, and what it holds; shown
   // while the dialog is open, and the region's figures are taken inside it.
-  std::optional<ui::BoxSelection> optimiseBox;
-  ui::ScreenRectangle optimiseBoxOnView;
+  std::optional<app_model::BoxSelection> optimiseBox;
+  app_model::ScreenRectangle optimiseBoxOnView;
   char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
   std::size_t active = 0;
-  ui::SelectionModel selection;
+  app_model::SelectionModel selection;
   std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
   std::uint64_t glowDeferred = ~std::uint64_t(0);     // the selection whose glow comes next frame
   ViewSettings settings;
-  ui::Settings persistent;
-  ui::BackgroundJob job;
+  app_model::Settings persistent;
+  app_model::BackgroundJob job;
   std::shared_ptr<JobResult> pending;  // written by the job, taken on the UI thread
   std::string status = "Open a G-code program or a Biip dump (File > Open, or drop it on the window).";
   bool quit = false;
@@ -188,6 +188,6 @@ void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float
 
 // Loads a document on the job's thread.
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
-                                       const vis::QualityMapRequest& request, ui::JobControl& control);
+                                       const vis::QualityMapRequest& request, app_model::JobControl& control);
 
 }  // namespace isurface::panels

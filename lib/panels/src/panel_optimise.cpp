@@ -12,12 +12,12 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
-#include "isurface/core/atomic_file.h"
-#include "isurface/core/gcode_interpreter.h"
-#include "isurface/core/optimized_run_comparison.h"
-#include "isurface/core/quality_regions.h"
-#include "isurface/core/region_optimizer.h"
-#include "isurface/core/simulator.h"
+#include "isurface/io/atomic_file.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/optimise/optimized_run_comparison.h"
+#include "isurface/analysis/quality_regions.h"
+#include "isurface/optimise/region_optimizer.h"
+#include "isurface/nc/simulator.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
 
@@ -54,7 +54,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   std::shared_ptr<const Trajectory> before = doc->samples;
   const PassSet beforePasses = doc->map.passes;
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, before, beforePasses, request, first, last, measuredBox](ui::JobControl& control) {
+            [result, path, program, before, beforePasses, request, first, last, measuredBox](app_model::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
@@ -118,7 +118,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
                      s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
   if (boxed) {
-    const ui::BoxSelection& b = *s.optimiseBox;
+    const app_model::BoxSelection& b = *s.optimiseBox;
     ImGui::Text("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
   }
@@ -129,7 +129,7 @@ void drawOptimiseDialog(Inspector::State& s) {
       const LineRange lines = widenToWholePasses(*doc->samples, doc->map.passes, {worst->firstLine, worst->lastLine});
       s.optimiseFirst = static_cast<int>(lines.first);
       s.optimiseLast = static_cast<int>(lines.last);
-      s.optimiseBox = ui::BoxSelection{lines, worst->lower, worst->upper, worst->vertices};
+      s.optimiseBox = app_model::BoxSelection{lines, worst->lower, worst->upper, worst->vertices};
       s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
     } else {
       s.status = "no region beyond the quality thresholds away from the pass ends";

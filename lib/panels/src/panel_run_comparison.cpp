@@ -8,7 +8,7 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
-#include "isurface/core/biip.h"
+#include "isurface/io/biip.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
 
@@ -65,7 +65,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
   std::shared_ptr<const Trajectory> a = doc->samples;
   std::shared_ptr<const Program> program = doc->program;
   const bool difference = runComparison && runComparison->showDifference;
-  job.start("comparing with " + dumpPath, [result, a, program, request, dumpPath, difference](ui::JobControl& control) {
+  job.start("comparing with " + dumpPath, [result, a, program, request, dumpPath, difference](app_model::JobControl& control) {
     auto view = std::make_shared<RunComparisonView>();
     view->path = dumpPath;
     view->showDifference = difference;

@@ -14,7 +14,7 @@ namespace {
 
 // The span a curve is drawn over: the 0.5-99.5 % percentiles of an even subsample of the shown
 // samples, so that a few rapids at 20 m/min do not flatten the cutting speed into a line.
-std::pair<float, float> displayRange(const ui::SignalPyramid& values, std::size_t first, std::size_t last) {
+std::pair<float, float> displayRange(const app_model::SignalPyramid& values, std::size_t first, std::size_t last) {
   std::vector<float> picked;
   const std::size_t step = std::max<std::size_t>(1, (last - first) / 4096);
   for (std::size_t i = first; i < last; i += step)
@@ -35,7 +35,7 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
   const int columns = std::max(1, static_cast<int>(size.x));
   const std::size_t first = s.curveFirst, last = std::max(s.curveLast, s.curveFirst + 1);
-  const ui::Envelope envelope = curve.values.envelope(first, last, columns);
+  const app_model::Envelope envelope = curve.values.envelope(first, last, columns);
   const auto [lo, hi] = displayRange(curve.values, first, last);
   const float span = (std::isfinite(lo) && std::isfinite(hi) && hi > lo) ? hi - lo : 1.0f;
   auto toY = [&](float v) { return end.y - 2 - (v - (std::isfinite(lo) ? lo : 0)) / span * (size.y - 4); };
@@ -51,7 +51,7 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
   char label[160];
   std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), curve.unit.c_str(), lo, hi);
   draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
-  const ui::Selection& sel = s.selection.current();
+  const app_model::Selection& sel = s.selection.current();
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, end.y), IM_COL32(255, 210, 40, 255), 1.5f);
@@ -63,7 +63,7 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
   const ImGuiIO& io = ImGui::GetIO();
   if (ImGui::IsItemHovered()) {
     const double column = io.MousePos.x - origin.x;
-    if (ImGui::IsMouseClicked(0)) s.selection.selectSample(ui::sampleAtColumn(first, last, columns, column));
+    if (ImGui::IsMouseClicked(0)) s.selection.selectSample(app_model::sampleAtColumn(first, last, columns, column));
     if (io.MouseWheel != 0) {
       // Zoom in time around the mouse, within the samples.
       const double centre = first + column / columns * (last - first);
@@ -88,7 +88,7 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
   }
   if (ImGui::Button("Whole time")) s.curveFirst = 0, s.curveLast = doc->samples->size();
   ImGui::SameLine();
-  const ui::Selection& sel = s.selection.current();
+  const app_model::Selection& sel = s.selection.current();
   if (ImGui::Button("Around selection") && sel.sample) {
     const std::size_t half = 2000;
     s.curveFirst = *sel.sample > half ? *sel.sample - half : 0;

@@ -29,7 +29,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
     ImGui::End();
     return;
   }
-  const ui::Selection& sel = s.selection.current();
+  const app_model::Selection& sel = s.selection.current();
   ImGui::BeginChild("lines", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
   const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
   if (sel.line && sel.generation != s.gcodeScrolledFor) {
@@ -69,7 +69,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   const Trajectory& t = *doc->samples;
   const bool feedback = t.hasFeedback();
   const int columns = feedback ? 12 : 9;
-  const ui::Selection& sel = s.selection.current();
+  const app_model::Selection& sel = s.selection.current();
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
                                 ImGuiTableFlags_BordersV | ImGuiTableFlags_SizingFixedFit;
   if (ImGui::BeginTable("samples", columns, flags)) {

@@ -15,10 +15,10 @@ namespace {
 
 // The lines of the surface's samples inside a rectangle dragged over the view (pixels from its
 // top-left corner) go into the Optimise dialog, which opens.
-void chooseRegion(Inspector::State& s, const ui::ScreenRectangle& rectangle) {
+void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectangle) {
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || !doc->map.mesh) return;
-  const auto chosen = ui::selectInRectangle(*doc->samples, doc->map.mesh->vertexSample, s.view.projection(), rectangle);
+  const auto chosen = app_model::selectInRectangle(*doc->samples, doc->map.mesh->vertexSample, s.view.projection(), rectangle);
   if (!chosen) {
     s.status = "no cutting sample of the surface inside the box";
     return;
@@ -49,7 +49,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     drawViewFrame(texture, size);
     ImDrawList* draw = ImGui::GetWindowDrawList();
     // The picked sample's values, as the paper's window shows them (line, point, speed).
-    const ui::Selection& sel = s.selection.current();
+    const app_model::Selection& sel = s.selection.current();
     Document* doc = s.activeDocument();
     if (doc && doc->samples && sel.sample && *sel.sample < doc->samples->size() && doc->curves.size() >= 3) {
       const std::size_t k = *sel.sample;
@@ -70,7 +70,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
     }
     // The box that chose the region, while the dialog it filled is open.
-    const ui::ScreenRectangle& r = s.optimiseBoxOnView;
+    const app_model::ScreenRectangle& r = s.optimiseBoxOnView;
     if (s.optimiseBox && s.optimiseDialogOpen && r.x0 != r.x1 && r.y0 != r.y1) {
       draw->AddRect(ImVec2(origin.x + float(r.x0), origin.y + float(r.y0)), ImVec2(origin.x + float(r.x1), origin.y + float(r.y1)),
                     IM_COL32(255, 200, 40, 255), 0, 0, 2.0f);
@@ -108,7 +108,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
         s.view.zoomToRectangle(pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my);
         s.rectangleZoom = false;
       } else if (s.boxSelect && button == 0) {
-        if (moved >= 3) chooseRegion(s, ui::ScreenRectangle{pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my});
+        if (moved >= 3) chooseRegion(s, app_model::ScreenRectangle{pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my});
         s.boxSelect = false;
       } else {
         s.view.mouseButton(button, false, mx, my);

@@ -148,8 +148,8 @@ std::optional<std::pair<double, double>> SceneView::project(const Vec3& point) c
   return projection()(point);
 }
 
-ui::ScreenProjection SceneView::projection() const {
-  ui::ScreenProjection p;
+app_model::ScreenProjection SceneView::projection() const {
+  app_model::ScreenProjection p;
   if (!scene_ || impl_->height <= 0) return p;
   // What vtkRenderer::WorldToDisplay does per point, once: the renderer fills the whole view.
   vtkRenderer* renderer = scene_->renderer();

@@ -6,7 +6,7 @@
 #include <array>
 #include <nlohmann/json.hpp>
 
-#include "isurface/core/diagnostic.h"
+#include "isurface/base/diagnostic.h"
 #include "isurface/vis/resources.h"
 
 namespace isurface::vis {

@@ -5,8 +5,8 @@
 
 #include <fmt/format.h>
 
-#include "isurface/core/diagnostic.h"
-#include "isurface/core/path_segment.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/gcode/path_segment.h"
 
 namespace isurface::vis {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "isurface/core/geometry.h"
+#include "isurface/base/geometry.h"
 
 class vtkActor;
 class vtkActor2D;

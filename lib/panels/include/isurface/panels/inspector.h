@@ -9,10 +9,10 @@
 #include <string>
 #include <vector>
 
-#include "isurface/core/run_comparison.h"
+#include "isurface/analysis/run_comparison.h"
 #include "isurface/panels/scene_view.h"
-#include "isurface/ui/selection.h"
-#include "isurface/ui/settings.h"
+#include "isurface/app_model/selection.h"
+#include "isurface/app_model/settings.h"
 
 namespace isurface::panels {
 
@@ -20,7 +20,7 @@ struct Document;
 
 class Inspector {
  public:
-  Inspector(GlHooks hooks, ui::Settings settings);
+  Inspector(GlHooks hooks, app_model::Settings settings);
   ~Inspector();
 
   // Opens a G-code program or a Biip dump (told apart by its first bytes). A dump joins the
@@ -53,10 +53,10 @@ class Inspector {
   void showRunDifference(bool difference);
   // The comparison of the active document with a second run; nullptr when there is none.
   const RunComparison* runComparison() const;
-  const ui::Selection& selection() const;
+  const app_model::Selection& selection() const;
   std::string statusText() const;
 
-  ui::Settings& settings();
+  app_model::Settings& settings();
   bool quitRequested() const;
 
   struct State;  // shared by the panels' own sources

@@ -7,8 +7,8 @@
 #include <optional>
 #include <utility>
 
-#include "isurface/core/geometry.h"
-#include "isurface/ui/box_selection.h"
+#include "isurface/base/geometry.h"
+#include "isurface/app_model/box_selection.h"
 
 namespace isurface::vis {
 class QualityScene;
@@ -40,7 +40,7 @@ class SceneView {
   // Where a point (mm) appears in the view, in pixels from its top-left corner.
   std::optional<std::pair<double, double>> project(const Vec3& point) const;
   // The same mapping for many points at once, as the camera stands now (an empty view: 0 x 0).
-  ui::ScreenProjection projection() const;
+  app_model::ScreenProjection projection() const;
 
   // Mouse input in pixels from the view's top-left corner.
   void mouseMove(double x, double y);

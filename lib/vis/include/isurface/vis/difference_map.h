@@ -5,8 +5,8 @@
 #include <optional>
 #include <string>
 
-#include "isurface/core/constant_speed_intervals.h"
-#include "isurface/core/run_comparison.h"
+#include "isurface/fitting/constant_speed_intervals.h"
+#include "isurface/analysis/run_comparison.h"
 #include "isurface/vis/quality_map.h"
 
 namespace isurface::vis {

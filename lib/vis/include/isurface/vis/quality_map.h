@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "isurface/core/program.h"
-#include "isurface/core/quantities.h"
-#include "isurface/core/trajectory.h"
+#include "isurface/gcode/program.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/base/trajectory.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::vis {

@@ -8,8 +8,8 @@
 
 #include <vtkSmartPointer.h>
 
-#include "isurface/core/surface_mesh.h"
-#include "isurface/core/value_range.h"
+#include "isurface/surface/surface_mesh.h"
+#include "isurface/base/value_range.h"
 
 class vtkActor;
 class vtkPolyData;

@@ -1,0 +1,25 @@
+#pragma once
+// What the application remembers between runs: recent files, the last colour settings and the
+// window size, as JSON in $XDG_CONFIG_HOME/isurface/settings.json (~/.config/... by default).
+#include <string>
+#include <vector>
+
+namespace isurface::app_model {
+
+struct Settings {
+  std::vector<std::string> recentFiles;  // newest first, at most 10
+  std::string quantity = "speed";
+  std::string colorMap = "rainbow";
+  int windowWidth = 1600, windowHeight = 1000;
+
+  void addRecent(const std::string& path);
+};
+
+// "" when neither XDG_CONFIG_HOME nor HOME is set: then nothing is loaded or saved.
+std::string settingsPath();
+// Missing or unreadable settings give the defaults (a broken file is not an error to stop for).
+Settings loadSettings(const std::string& path = settingsPath());
+// Written atomically; returns false (and leaves the old file) when it cannot be written.
+bool saveSettings(const Settings& settings, const std::string& path = settingsPath());
+
+}  // namespace isurface::app_model

@@ -1,0 +1,102 @@
+// Settings as a small JSON object. Reading never fails (a missing, unreadable or hand-broken file
+// means defaults, value by value); writing goes through a temporary file so a crash mid-write
+// never leaves a truncated settings file.
+#include "isurface/app_model/settings.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "isurface/io/atomic_file.h"
+
+namespace isurface::app_model {
+
+namespace {
+
+constexpr std::size_t kMaxRecentFiles = 10;
+
+// Window sizes outside this are a damaged file or a vanished monitor: the default is safer.
+constexpr int kMinWindowSide = 200, kMaxWindowSide = 32768;
+
+void readString(const nlohmann::json& json, const char* key, std::string& target) {
+  const auto it = json.find(key);
+  if (it != json.end() && it->is_string()) target = it->get<std::string>();
+}
+
+void readWindowSide(const nlohmann::json& json, const char* key, int& target) {
+  const auto it = json.find(key);
+  if (it == json.end() || !it->is_number_integer()) return;
+  const auto value = it->get<long long>();
+  if (value >= kMinWindowSide && value <= kMaxWindowSide) target = static_cast<int>(value);
+}
+
+}  // namespace
+
+void Settings::addRecent(const std::string& path) {
+  if (path.empty()) return;
+  recentFiles.erase(std::remove(recentFiles.begin(), recentFiles.end(), path), recentFiles.end());
+  recentFiles.insert(recentFiles.begin(), path);
+  if (recentFiles.size() > kMaxRecentFiles) recentFiles.resize(kMaxRecentFiles);
+}
+
+std::string settingsPath() {
+  // The XDG base directory rules ignore an empty or relative XDG_CONFIG_HOME.
+  const char* config = std::getenv("XDG_CONFIG_HOME");
+  std::string folder;
+  if (config && config[0] == '/') {
+    folder = config;
+  } else {
+    const char* home = std::getenv("HOME");
+    if (!home || home[0] == '\0') return {};
+    folder = std::string(home) + "/.config";
+  }
+  return folder + "/isurface/settings.json";
+}
+
+Settings loadSettings(const std::string& path) {
+  Settings settings;
+  if (path.empty()) return settings;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return settings;
+  std::ostringstream text;
+  text << in.rdbuf();
+  const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+  if (!json.is_object()) return settings;
+
+  const auto recent = json.find("recent_files");
+  if (recent != json.end() && recent->is_array()) {
+    // Added oldest first so that the newest ends up in front, duplicates and the cap applied.
+    for (auto it = recent->rbegin(); it != recent->rend(); ++it)
+      if (it->is_string()) settings.addRecent(it->get<std::string>());
+  }
+  readString(json, "quantity", settings.quantity);
+  readString(json, "color_map", settings.colorMap);
+  readWindowSide(json, "window_width", settings.windowWidth);
+  readWindowSide(json, "window_height", settings.windowHeight);
+  return settings;
+}
+
+bool saveSettings(const Settings& settings, const std::string& path) {
+  if (path.empty()) return false;
+  const nlohmann::json json = {
+      {"recent_files", settings.recentFiles},
+      {"quantity", settings.quantity},
+      {"color_map", settings.colorMap},
+      {"window_width", settings.windowWidth},
+      {"window_height", settings.windowHeight},
+  };
+  try {
+    const std::filesystem::path parent = std::filesystem::path(path).parent_path();
+    if (!parent.empty()) std::filesystem::create_directories(parent);
+    // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
+    writeFileAtomically(path, json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    return true;
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+}  // namespace isurface::app_model

@@ -1,0 +1,267 @@
+// Quantities to colour a quality map by: per sample, and per vertex of the surface.
+#include "isurface/analysis/quantities.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/analysis/kinematics.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
+
+// Samples derived per call of deriveKinematics: bounds the memory for any number of samples.
+constexpr std::size_t kKinematicsChunk = std::size_t(1) << 16;
+// The stencils reach two samples either way; three more on each side give every sample of a
+// chunk exactly the values a derivation of the whole trajectory would.
+constexpr std::size_t kStencilMargin = 3;
+
+bool isKinematic(Quantity q) {
+  switch (q) {
+    case Quantity::Speed:
+    case Quantity::Acceleration:
+    case Quantity::AccelerationMagnitude:
+    case Quantity::Jerk:
+    case Quantity::VelocityX:
+    case Quantity::VelocityY:
+    case Quantity::VelocityZ:
+    case Quantity::AccelerationX:
+    case Quantity::AccelerationY:
+    case Quantity::AccelerationZ:
+    case Quantity::JerkX:
+    case Quantity::JerkY:
+    case Quantity::JerkZ: return true;
+    default: return false;
+  }
+}
+
+bool isPerAxis(Quantity q) { return isKinematic(q) && q >= Quantity::VelocityX; }
+
+double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
+  switch (q) {
+    case Quantity::Speed: return k.speed[i];
+    case Quantity::Acceleration: return k.accel[i];
+    case Quantity::AccelerationMagnitude: return k.accelMagnitude[i];
+    case Quantity::Jerk: return k.jerk[i];
+    case Quantity::VelocityX: return k.axisVel[0][i];
+    case Quantity::VelocityY: return k.axisVel[1][i];
+    case Quantity::VelocityZ: return k.axisVel[2][i];
+    case Quantity::AccelerationX: return k.axisAcc[0][i];
+    case Quantity::AccelerationY: return k.axisAcc[1][i];
+    case Quantity::AccelerationZ: return k.axisAcc[2][i];
+    case Quantity::JerkX: return k.axisJerk[0][i];
+    case Quantity::JerkY: return k.axisJerk[1][i];
+    case Quantity::JerkZ: return k.axisJerk[2][i];
+    default: return kNaN;
+  }
+}
+
+// Derives the samples [first, last) (with their stencil margins) and calls
+// take(sample, kinematics, index in kinematics) for each.
+template <class Take>
+void deriveRange(const Trajectory& s, Quantity q, std::size_t first, std::size_t last, Take&& take) {
+  const std::size_t n = s.size();
+  const std::size_t from = first >= kStencilMargin ? first - kStencilMargin : 0;
+  const std::size_t to = std::min(n, last + kStencilMargin);
+  const double* t = s.irregularTime ? s.time.data() + from : nullptr;
+  const Kinematics k = deriveKinematics(s.x.data() + from, s.y.data() + from, s.z.data() + from, t, to - from,
+                                        s.cycle, isPerAxis(q));
+  for (std::size_t i = first; i < last; ++i) take(i, k, i - from);
+}
+
+[[noreturn]] void missing(const Trajectory& s, const std::string& what) {
+  throw InputError(Diagnostic{s.source, 0, 0, what});
+}
+
+void requireFeedback(const Trajectory& s, Quantity q) {
+  if (!s.hasFeedback())
+    missing(s, std::string(quantityInfo(q).label) + " needs feedback positions (fb_x, fb_y, fb_z), which the samples do not have");
+}
+
+// A channel the writer stored for a derived quantity (docs/biip-format.md names them and their
+// units); used instead of deriving it again.
+const std::vector<double>* storedChannel(Quantity q, const Trajectory& s) {
+  static const std::pair<Quantity, const char*> names[] = {
+      {Quantity::Speed, "v"},          {Quantity::Acceleration, "acc"}, {Quantity::Jerk, "jerk"},
+      {Quantity::VelocityX, "vx"},     {Quantity::VelocityY, "vy"},     {Quantity::VelocityZ, "vz"},
+      {Quantity::AccelerationX, "ax"}, {Quantity::AccelerationY, "ay"}, {Quantity::AccelerationZ, "az"},
+      {Quantity::JerkX, "jx"},         {Quantity::JerkY, "jy"},         {Quantity::JerkZ, "jz"}};
+  for (const auto& [quantity, name] : names)
+    if (quantity == q) return s.extraChannel(name);
+  return nullptr;
+}
+
+// A quantity that is not derived: its value at sample i.
+double plainValue(Quantity q, const Trajectory& s, std::size_t i) {
+  if (const std::vector<double>* stored = storedChannel(q, s)) return (*stored)[i];
+  switch (q) {
+    case Quantity::FollowingError: return 1000.0 * (s.feedback(i) - s.commanded(i)).norm();
+    case Quantity::Line: return double(s.line[i]);
+    case Quantity::Time: return s.time[i];
+    case Quantity::Feed: return s.feed[i];
+    default: return kNaN;
+  }
+}
+
+void checkSampleQuantity(Quantity q, const Trajectory& s) {
+  if (quantityInfo(q).onSurface)
+    throw std::invalid_argument(std::string("'") + quantityInfo(q).name + "' is a surface quantity: it needs the mesh");
+  if (q == Quantity::FollowingError) requireFeedback(s, q);
+  if (q == Quantity::Feed && !s.hasFeed()) missing(s, "the samples have no programmed feed (no 'feed' channel)");
+}
+
+// Per-sample quantity gathered at the vertices' samples, in double.
+std::vector<double> perVertex(Quantity q, const Trajectory& s, const SurfaceMesh& mesh) {
+  checkSampleQuantity(q, s);
+  const std::vector<std::uint32_t>& at = mesh.vertexSample;
+  const std::size_t vertices = at.size();
+  std::vector<double> out(vertices, kNaN);
+  if (!isKinematic(q) || storedChannel(q, s)) {
+    for (std::size_t v = 0; v < vertices; ++v) out[v] = plainValue(q, s, at[v]);
+    return out;
+  }
+  if (!std::is_sorted(at.begin(), at.end())) {
+    const std::vector<double> all = sampleQuantity(q, s);
+    for (std::size_t v = 0; v < vertices; ++v) out[v] = all[at[v]];
+    return out;
+  }
+  // Vertices come in sample order: derive one chunk of samples after another, skipping the
+  // stretches no vertex uses (rapids, links, strides).
+  for (std::size_t v = 0; v < vertices;) {
+    const std::size_t first = at[v];
+    const std::size_t last = std::min(s.size(), first + kKinematicsChunk);
+    std::size_t w = v;
+    while (w < vertices && at[w] < last) ++w;
+    const std::size_t end = std::size_t(at[w - 1]) + 1;
+    std::size_t next = v;
+    deriveRange(s, q, first, end, [&](std::size_t i, const Kinematics& k, std::size_t local) {
+      while (next < w && at[next] == i) out[next++] = kinematicValue(q, k, local);
+    });
+    v = w;
+  }
+  return out;
+}
+
+// The larger difference to the matched vertices on the neighbouring passes.
+std::vector<double> inconsistency(const std::vector<double>& value, const SurfaceMesh& mesh) {
+  std::vector<double> out(value.size(), 0.0);
+  for (std::size_t v = 0; v < value.size(); ++v) {
+    if (!std::isfinite(value[v])) {
+      out[v] = kNaN;
+      continue;
+    }
+    double worst = 0;
+    for (const std::uint32_t n : {mesh.previousPassNeighbour[v], mesh.nextPassNeighbour[v]}) {
+      if (n == kNoVertex || !std::isfinite(value[n])) continue;
+      worst = std::max(worst, std::fabs(value[v] - value[n]));
+    }
+    out[v] = worst;
+  }
+  return out;
+}
+
+// um, along the commanded surface's normal (signed, + on the side the normal points to).
+std::vector<double> deviation(const Trajectory& s, const SurfaceMesh& mesh) {
+  requireFeedback(s, Quantity::Deviation);
+  const std::vector<Vec3> positions = meshPositions(s, mesh, false);
+  const std::vector<Vec3> normals = vertexNormals(positions, mesh);
+  std::vector<double> out(positions.size(), kNaN);
+  for (std::size_t v = 0; v < positions.size(); ++v) {
+    if (normals[v].squaredNorm() == 0) continue;
+    out[v] = 1000.0 * (s.feedback(mesh.vertexSample[v]) - positions[v]).dot(normals[v]);
+  }
+  return out;
+}
+
+std::vector<float> toFloat(const std::vector<double>& values) {
+  return std::vector<float>(values.begin(), values.end());
+}
+
+std::string lowercase(std::string s) {
+  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return s;
+}
+
+}  // namespace
+
+const std::vector<QuantityInfo>& quantityInfos() {
+  static const std::vector<QuantityInfo> infos = {
+      {Quantity::Speed, "speed", "Path speed", "mm/min", false, false},
+      {Quantity::Acceleration, "accel", "Tangential acceleration", "mm/s^2", false, false},
+      {Quantity::AccelerationMagnitude, "accel_mag", "Acceleration magnitude", "mm/s^2", false, false},
+      {Quantity::Jerk, "jerk", "Path jerk", "mm/s^3", false, false},
+      {Quantity::VelocityX, "vx", "X velocity", "mm/min", false, false},
+      {Quantity::VelocityY, "vy", "Y velocity", "mm/min", false, false},
+      {Quantity::VelocityZ, "vz", "Z velocity", "mm/min", false, false},
+      {Quantity::AccelerationX, "ax", "X acceleration", "mm/s^2", false, false},
+      {Quantity::AccelerationY, "ay", "Y acceleration", "mm/s^2", false, false},
+      {Quantity::AccelerationZ, "az", "Z acceleration", "mm/s^2", false, false},
+      {Quantity::JerkX, "jx", "X jerk", "mm/s^3", false, false},
+      {Quantity::JerkY, "jy", "Y jerk", "mm/s^3", false, false},
+      {Quantity::JerkZ, "jz", "Z jerk", "mm/s^3", false, false},
+      {Quantity::FollowingError, "following_error", "Following error", "um", true, false},
+      {Quantity::Line, "line", "G-code line", "", false, false},
+      {Quantity::Time, "time", "Time", "s", false, false},
+      {Quantity::Feed, "feed", "Programmed feed", "mm/min", false, false},
+      {Quantity::SpeedInconsistency, "speed_inconsistency", "Speed inconsistency between passes", "mm/min", false, true},
+      {Quantity::AccelerationInconsistency, "accel_inconsistency", "Acceleration inconsistency between passes",
+       "mm/s^2", false, true},
+      {Quantity::Deviation, "deviation", "Deviation of the feedback surface", "um", true, true},
+  };
+  return infos;
+}
+
+const QuantityInfo& quantityInfo(Quantity q) {
+  for (const QuantityInfo& info : quantityInfos())
+    if (info.quantity == q) return info;
+  throw std::invalid_argument("unknown quantity");
+}
+
+std::optional<Quantity> parseQuantity(const std::string& name) {
+  const std::string wanted = lowercase(name);
+  for (const QuantityInfo& info : quantityInfos())
+    if (wanted == info.name) return info.quantity;
+  return std::nullopt;
+}
+
+std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples) {
+  checkSampleQuantity(q, samples);
+  const std::size_t n = samples.size();
+  std::vector<double> out(n);
+  if (!isKinematic(q) || storedChannel(q, samples)) {
+    for (std::size_t i = 0; i < n; ++i) out[i] = plainValue(q, samples, i);
+    return out;
+  }
+  for (std::size_t first = 0; first < n; first += kKinematicsChunk) {
+    deriveRange(samples, q, first, std::min(n, first + kKinematicsChunk),
+                [&](std::size_t i, const Kinematics& k, std::size_t local) { out[i] = kinematicValue(q, k, local); });
+  }
+  return out;
+}
+
+std::vector<float> vertexQuantity(Quantity q, const Trajectory& samples, const SurfaceMesh& mesh) {
+  switch (q) {
+    case Quantity::SpeedInconsistency: return toFloat(inconsistency(perVertex(Quantity::Speed, samples, mesh), mesh));
+    case Quantity::AccelerationInconsistency:
+      return toFloat(inconsistency(perVertex(Quantity::Acceleration, samples, mesh), mesh));
+    case Quantity::Deviation: return toFloat(deviation(samples, mesh));
+    default: return toFloat(perVertex(q, samples, mesh));
+  }
+}
+
+std::optional<std::vector<float>> vertexExtraChannel(const Trajectory& samples, const SurfaceMesh& mesh,
+                                                     const std::string& name) {
+  const std::vector<double>* channel = samples.extraChannel(name);
+  if (channel == nullptr) return std::nullopt;
+  std::vector<float> out(mesh.vertexSample.size());
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = static_cast<float>((*channel)[mesh.vertexSample[v]]);
+  return out;
+}
+
+}  // namespace isurface

@@ -1,0 +1,257 @@
+// Aligning run B to run A per G-code line by arc length, and the per-sample and per-line
+// differences. Grouping lines into ranges and ranking them is in run_comparison_ranges.cpp.
+#include "isurface/analysis/run_comparison.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/analysis/quantities.h"
+#include "run_comparison_figures.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
+// How far along B's path (mm of arc length either side of the aligned point) the nearest
+// point of B's path is looked for, on top of the difference between the runs' lengths of the
+// line (a blend cutting a corner shortens a line by up to a few mm): more than the line
+// handover of blending controllers (LinuxCNC's is under a millimetre at ordinary feeds), less
+// than a typical pass.
+constexpr double kPathSearchRadius = 2.0;
+
+// The samples of every line of a run, grouped by line (CSR layout), and the run's own timing.
+struct LineIndex {
+  std::vector<std::size_t> offsets;  // per line number, plus the end
+  std::vector<std::size_t> samples;  // sample indices, by line then in time order
+  std::vector<std::uint32_t> order;  // lines in the order of their first sample
+  double firstTime = 0, lastTime = 0;
+
+  std::size_t count(std::uint32_t line) const {
+    return line + 1 < offsets.size() ? offsets[line + 1] - offsets[line] : 0;
+  }
+  const std::size_t* begin(std::uint32_t line) const { return samples.data() + offsets[line]; }
+};
+
+// `keys`: the key each line is indexed under (see RunComparisonOptions::lineKeyA); the index
+// then speaks of keys where it says lines.
+LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys) {
+  const auto keyOf = [&](std::uint32_t line) { return line != 0 && line < keys.size() ? keys[line] : line; };
+  LineIndex index;
+  std::uint32_t maxLine = 0;
+  for (std::uint32_t line : t.line) maxLine = std::max(maxLine, keyOf(line));
+  index.offsets.assign(std::size_t(maxLine) + 2, 0);
+  bool started = false;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const std::uint32_t line = keyOf(t.line[i]);
+    if (line == 0) continue;
+    if (index.offsets[line + 1]++ == 0) index.order.push_back(line);
+    if (!started) index.firstTime = t.time[i], started = true;
+    index.lastTime = t.time[i];
+  }
+  for (std::size_t k = 1; k < index.offsets.size(); ++k) index.offsets[k] += index.offsets[k - 1];
+  std::vector<std::size_t> fill(index.offsets.begin(), index.offsets.end() - 1);
+  index.samples.resize(index.offsets.back());
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (const std::uint32_t line = keyOf(t.line[i]); line != 0) index.samples[fill[line]++] = i;
+  return index;
+}
+
+// The time sample i stands for: up to the next sample (the last one: one cycle).
+double sampleDuration(const Trajectory& t, std::size_t i) {
+  const double dt = i + 1 < t.size() ? t.time[i + 1] - t.time[i] : t.cycle;
+  return std::isfinite(dt) && dt > 0 ? dt : 0.0;
+}
+
+double stepLength(const Trajectory& t, std::size_t from, std::size_t to) {
+  const double d = (t.commanded(to) - t.commanded(from)).norm();
+  return std::isfinite(d) ? d : 0.0;
+}
+
+// Arc length (mm) from the line's first sample; only steps between consecutive samples count,
+// so that a line visited twice does not count the jump between its visits.
+std::vector<double> lineArcLength(const Trajectory& t, const std::size_t* samples, std::size_t n) {
+  std::vector<double> s(n, 0.0);
+  for (std::size_t k = 1; k < n; ++k)
+    s[k] = s[k - 1] + (samples[k] == samples[k - 1] + 1 ? stepLength(t, samples[k - 1], samples[k]) : 0.0);
+  return s;
+}
+
+std::vector<double> cumulativeArcLength(const Trajectory& t) {
+  std::vector<double> s(t.size(), 0.0);
+  for (std::size_t i = 1; i < t.size(); ++i) s[i] = s[i - 1] + stepLength(t, i - 1, i);
+  return s;
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double f = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - (a + f * ab)).norm();
+}
+
+// Where B is at an arc length of a line: between two of its samples, by a fraction.
+struct Aligned {
+  std::size_t from = 0, to = 0;
+  double fraction = 0;
+  template <class F>
+  double at(F value) const { return value(from) + fraction * (value(to) - value(from)); }
+};
+
+// B at arc length s of its line. Where B stands still at s (several samples share it), the
+// sample as far through that stand as A's sample is through its own: `stand` is A's sample's
+// position in A's stand at s, 0 to 1.
+Aligned alignAt(const std::vector<double>& arc, const std::size_t* samples, double s, double stand) {
+  const std::size_t n = arc.size();
+  const auto first = std::lower_bound(arc.begin(), arc.end(), s);
+  const std::size_t k = std::size_t(first - arc.begin());
+  // Beyond the end of B's line (A travelled further on it): B's last sample of the line.
+  if (k >= n) return {samples[n - 1], samples[n - 1], 0.0};
+  if (arc[k] == s || k == 0) {
+    const std::size_t last = std::size_t(std::upper_bound(first, arc.end(), arc[k]) - arc.begin()) - 1;
+    const std::size_t at = k + std::size_t(std::lround(stand * double(last - k)));
+    return {samples[at], samples[at], 0.0};
+  }
+  const double span = arc[k] - arc[k - 1];
+  return {samples[k - 1], samples[k], span > 0 ? std::clamp((s - arc[k - 1]) / span, 0.0, 1.0) : 1.0};
+}
+
+// For each sample of a line, how far through a stand (samples sharing its arc length) it is.
+std::vector<double> standFractions(const std::vector<double>& arc) {
+  std::vector<double> out(arc.size(), 0.0);
+  for (std::size_t begin = 0; begin < arc.size();) {
+    std::size_t end = begin + 1;
+    while (end < arc.size() && arc[end] == arc[begin]) ++end;
+    for (std::size_t k = begin; k < end; ++k) out[k] = end - begin > 1 ? double(k - begin) / double(end - begin - 1) : 0.0;
+    begin = end;
+  }
+  return out;
+}
+
+class Aligner {
+ public:
+  Aligner(const Trajectory& a, const Trajectory& b, RunComparison& out)
+      : a_(a), b_(b), out_(out), speedA_(sampleQuantity(Quantity::Speed, a)),
+        speedB_(sampleQuantity(Quantity::Speed, b)), pathB_(cumulativeArcLength(b)) {}
+
+  LineDifference compareLine(std::uint32_t line, const LineIndex& ia, const LineIndex& ib) {
+    const std::size_t* sa = ia.begin(line);
+    const std::size_t* sb = ib.begin(line);
+    const std::size_t na = ia.count(line), nb = ib.count(line);
+    const std::vector<double> arcA = lineArcLength(a_, sa, na), arcB = lineArcLength(b_, sb, nb);
+    const std::vector<double> standA = standFractions(arcA);
+    searchRadius_ = kPathSearchRadius + std::abs(arcA.back() - arcB.back());
+    FigureAccumulator acc;
+    for (std::size_t k = 0; k < na; ++k) acc.addTime(sampleDuration(a_, sa[k]), 0.0);
+    for (std::size_t k = 0; k < nb; ++k) acc.addTime(0.0, sampleDuration(b_, sb[k]));
+    acc.setLengths(arcA.back(), arcB.back(), na, nb);
+    for (std::size_t k = 0; k < na; ++k) {
+      const std::size_t i = sa[k];
+      const Aligned at = alignAt(arcB, sb, arcA[k], standA[k]);
+      const Vec3 pb(at.at([&](std::size_t j) { return b_.x[j]; }), at.at([&](std::size_t j) { return b_.y[j]; }),
+                    at.at([&](std::size_t j) { return b_.z[j]; }));
+      const double speed = at.at([&](std::size_t j) { return speedB_[j]; }) - speedA_[i];
+      const double position = (pb - a_.commanded(i)).norm();
+      const double timeB = at.at([&](std::size_t j) { return b_.time[j]; }) - ib.firstTime;
+      const double time = timeB - (a_.time[i] - ia.firstTime);
+      out_.speedDifference[i] = std::isfinite(speed) ? float(speed) : kNoValue;
+      out_.positionDistance[i] = std::isfinite(position) ? float(position) : kNoValue;
+      out_.timeDifference[i] = std::isfinite(time) ? float(time) : kNoValue;
+      acc.addSample(speed, position, pathDistance(a_.commanded(i), at));
+      if (out_.feedbackCompared) {
+        const Vec3 fb(at.at([&](std::size_t j) { return b_.fbX[j]; }), at.at([&](std::size_t j) { return b_.fbY[j]; }),
+                      at.at([&](std::size_t j) { return b_.fbZ[j]; }));
+        acc.addFeedbackDistance((fb - a_.feedback(i)).norm());
+      }
+    }
+    return LineDifference{line, acc.figures(out_.feedbackCompared)};
+  }
+
+ private:
+  // Distance from A's point to B's commanded path within searchRadius_ of arc length of the
+  // aligned point: how far the paths themselves differ, whatever the timing along them.
+  double pathDistance(const Vec3& p, const Aligned& at) const {
+    if (!p.allFinite()) return std::numeric_limits<double>::quiet_NaN();
+    const double s = at.at([&](std::size_t j) { return pathB_[j]; });
+    std::size_t j = std::size_t(std::lower_bound(pathB_.begin(), pathB_.end(), s - searchRadius_) - pathB_.begin());
+    if (j > 0) --j;
+    double best = (p - b_.commanded(at.from)).norm();
+    for (; j + 1 < b_.size() && pathB_[j] <= s + searchRadius_; ++j) {
+      if (pathB_[j + 1] == pathB_[j]) continue;  // B stood still: no segment
+      best = std::min(best, distanceToSegment(p, b_.commanded(j), b_.commanded(j + 1)));
+    }
+    return best;
+  }
+
+  const Trajectory& a_;
+  const Trajectory& b_;
+  RunComparison& out_;
+  std::vector<double> speedA_, speedB_, pathB_;
+  double searchRadius_ = kPathSearchRadius;  // mm, for the line being compared
+};
+
+void requireLines(const Trajectory& t) {
+  bool any = false;
+  for (std::uint32_t line : t.line) any = any || line != 0;
+  if (!t.hasLine || !any)
+    throw InputError(Diagnostic{t.source, 0, 0,
+                                "no G-code line channel to align by (import the trace with --gcode to map its samples to lines)"});
+}
+
+std::size_t linesSamples(const LineIndex& index, const std::vector<std::uint32_t>& lines) {
+  std::size_t n = 0;
+  for (std::uint32_t line : lines) n += index.count(line);
+  return n;
+}
+
+UnmatchedLine unmatched(const Trajectory& t, const LineIndex& index, std::uint32_t line) {
+  UnmatchedLine u{line, index.count(line), 0.0};
+  for (std::size_t k = 0; k < u.samples; ++k) u.time += sampleDuration(t, index.begin(line)[k]);
+  return u;
+}
+
+}  // namespace
+
+RunComparison compareRuns(const Trajectory& a, const Trajectory& b, const RunComparisonOptions& options) {
+  requireLines(a);
+  requireLines(b);
+  const LineIndex ia = indexLines(a, options.lineKeyA), ib = indexLines(b, options.lineKeyB);
+  RunComparison out;
+  out.cycleA = a.cycle;
+  out.durationA = ia.lastTime - ia.firstTime;
+  out.durationB = ib.lastTime - ib.firstTime;
+  out.feedbackCompared = a.hasFeedback() && b.hasFeedback();
+  out.speedDifference.assign(a.size(), kNoValue);
+  out.positionDistance.assign(a.size(), kNoValue);
+  out.timeDifference.assign(a.size(), kNoValue);
+
+  std::vector<std::uint32_t> common;
+  // Where a line only A has stands between two common lines: a range must not span it.
+  std::vector<bool> breakBefore;
+  bool gap = false;
+  for (std::uint32_t line : ia.order) {
+    if (ib.count(line) == 0) {
+      out.onlyInA.push_back(unmatched(a, ia, line));
+      gap = true;
+      continue;
+    }
+    common.push_back(line);
+    breakBefore.push_back(gap);
+    gap = false;
+  }
+  for (std::uint32_t line : ib.order)
+    if (ia.count(line) == 0) out.onlyInB.push_back(unmatched(b, ib, line));
+  if (common.empty())
+    throw InputError(Diagnostic{b.source, 0, 0, "shares no G-code line with " + a.source + ": nothing to compare"});
+
+  Aligner aligner(a, b, out);
+  for (std::uint32_t line : common) out.lines.push_back(aligner.compareLine(line, ia, ib));
+  out.coverageA = double(linesSamples(ia, common)) / double(std::max<std::size_t>(1, ia.samples.size()));
+  out.coverageB = double(linesSamples(ib, common)) / double(std::max<std::size_t>(1, ib.samples.size()));
+  groupRanges(out, breakBefore, options);
+  return out;
+}
+
+}  // namespace isurface

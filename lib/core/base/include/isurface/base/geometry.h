@@ -1,0 +1,35 @@
+#pragma once
+// Basic geometric vocabulary shared by every core module. All lengths are millimetres.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
+
+namespace isurface {
+
+using Vec3 = Eigen::Vector3d;
+
+// Active arc plane, named by the G-code that selects it. The plane's first and second axes
+// (u, v) and its normal axis (w) are chosen so that counter-clockwise (G3) is a positive
+// rotation about +w: G17 (u=X, v=Y, w=Z), G18 (u=Z, v=X, w=Y), G19 (u=Y, v=Z, w=X).
+enum class Plane : unsigned char { XY = 17, ZX = 18, YZ = 19 };
+
+struct PlaneAxes {
+  int u, v, w;
+};
+
+inline PlaneAxes planeAxes(Plane plane) {
+  switch (plane) {
+    case Plane::ZX: return {2, 0, 1};
+    case Plane::YZ: return {1, 2, 0};
+    case Plane::XY:
+    default: return {0, 1, 2};
+  }
+}
+
+// Radius of the circle through three points (equation 1 of the constant speed interval
+// paper), mm; +infinity for collinear or coincident points.
+double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& next);
+
+}  // namespace isurface

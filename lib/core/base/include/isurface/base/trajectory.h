@@ -1,0 +1,42 @@
+#pragma once
+// Interpolation samples in memory, one array per channel: what analysis and the surface work on.
+// Loaded from a Biip dump (a simulation's or a machine trace's) or taken from a simulation.
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "isurface/base/geometry.h"
+
+namespace isurface {
+
+struct Trajectory {
+  std::string source;                // file the samples came from
+  double cycle = 0.001;              // s, nominal sample period
+  std::vector<double> time;          // s, per sample
+  std::vector<std::uint32_t> line;   // 1-based G-code line, 0 unknown (all 0 when absent)
+  std::vector<std::uint32_t> block;  // move index, when the dump has one (else empty)
+  std::vector<double> x, y, z;       // commanded position, mm
+  std::vector<double> fbX, fbY, fbZ; // feedback position, mm (empty when absent)
+  std::vector<double> feed;          // programmed feed, mm/min (empty when absent)
+  // Any other numeric channel of the dump, kept to colour by.
+  std::vector<std::pair<std::string, std::vector<double>>> extra;
+  bool hasLine = false;              // the dump had a `line` channel
+  // The time channel departs from a regular cycle: derivatives then use divided differences.
+  bool irregularTime = false;
+  double rapidFeed = 0;              // mm/min, the machine's rapid rate when the dump names it (0 unknown)
+
+  std::size_t size() const { return x.size(); }
+  bool hasFeedback() const { return !fbX.empty(); }
+  bool hasFeed() const { return !feed.empty(); }
+  // The `extra` channel of that name, nullptr when absent.
+  const std::vector<double>* extraChannel(const std::string& name) const;
+  Vec3 commanded(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
+  Vec3 feedback(std::size_t i) const { return Vec3(fbX[i], fbY[i], fbZ[i]); }
+};
+
+// True when a gap between consecutive times departs from the cycle by more than a thousandth
+// of it (or a time is not finite).
+bool timeIsIrregular(const double* time, std::size_t n, double cycle);
+
+}  // namespace isurface

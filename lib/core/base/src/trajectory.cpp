@@ -1,0 +1,25 @@
+// Interpolation samples in memory, one array per channel.
+#include "isurface/base/trajectory.h"
+
+#include <cmath>
+
+namespace isurface {
+
+const std::vector<double>* Trajectory::extraChannel(const std::string& name) const {
+  for (const auto& [channelName, values] : extra)
+    if (channelName == name) return &values;
+  return nullptr;
+}
+
+bool timeIsIrregular(const double* time, std::size_t n, double cycle) {
+  if (time == nullptr || n < 2) return false;
+  const double tolerance = 1e-3 * cycle;
+  for (std::size_t i = 1; i < n; ++i) {
+    const double gap = time[i] - time[i - 1];
+    // A non-finite time is irregular too (the comparison is false for NaN).
+    if (!(std::fabs(gap - cycle) <= tolerance)) return true;
+  }
+  return false;
+}
+
+}  // namespace isurface

@@ -1,0 +1,49 @@
+#pragma once
+// RS274/NGC interpreter for real CAM output: turns G-code text into a Program of exact moves.
+#include <functional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "isurface/gcode/program.h"
+
+namespace isurface {
+
+struct InterpreterOptions {
+  // Skip a bad block, record its error and go on (the caller still exits non-zero).
+  bool keepGoing = false;
+  // Reference positions of G28 and G30, machine = workpiece coordinates here, mm.
+  Vec3 g28Position = Vec3::Zero();
+  Vec3 g30Position = Vec3::Zero();
+  // Position before the first move, mm.
+  Vec3 startPosition = Vec3::Zero();
+  // Centre-format arcs (LinuxCNC's rule): an arc whose end radius differs from its start radius
+  // by more than arcRadiusTolerance AND by more than arcRadiusRelativeTolerance of the larger
+  // radius is an error, and so is any difference over 100 times arcRadiusTolerance. LinuxCNC's
+  // values: 0.0283 mm in G21 programs, 0.002828 inch (0.0718 mm) in G20 programs. mm.
+  double arcRadiusTolerance = 0.0283;
+  double arcRadiusToleranceInch = 0.0718;  // used instead of the above while G20 is in effect
+  // The relative part of that rule: a fraction of the larger radius.
+  double arcRadiusRelativeTolerance = 0.001;
+  // R-format arcs: a radius short of half the chord by at most this is taken as a semicircle;
+  // centre-format arcs: a start or end radius under this is a zero-radius error. mm (LinuxCNC's
+  // RADIUS_TOLERANCE, 0.00005 inch).
+  double arcReachTolerance = 0.00127;
+  // Called now and then with the fraction of the input read, 0..1.
+  std::function<void(double)> progress;
+};
+
+struct InterpretResult {
+  Program program;
+  std::vector<Diagnostic> errors;  // empty on success; with keepGoing, every bad block
+  bool ok() const { return errors.empty(); }
+};
+
+// Interprets text held in memory. `sourceName` is used in diagnostics.
+InterpretResult interpretGcode(std::string_view text, const std::string& sourceName,
+                               const InterpreterOptions& options = {});
+
+// Maps and interprets a file. A file that cannot be read is reported as an error diagnostic.
+InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options = {});
+
+}  // namespace isurface

@@ -1,0 +1,52 @@
+#pragma once
+// The interpreted program: a flat list of moves in absolute workpiece millimetres, each tied to
+// the physical source line that produced it. Arcs stay exact (centre, plane, turns).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/base/geometry.h"
+
+namespace isurface {
+
+enum class MoveKind : std::uint8_t {
+  Rapid,   // G0: at the machine's rapid rate
+  Linear,  // G1
+  ArcCW,   // G2
+  ArcCCW,  // G3
+  Dwell,   // G4: no motion, `dwellSeconds()` of standstill
+};
+
+enum MoveFlags : std::uint8_t {
+  kExactStop = 1,  // G61 in effect: the move ends at standstill
+  kStopAfter = 2,  // a program stop, tool change or spindle change follows: end at standstill
+};
+
+// 64 bytes. The start of a move is the end of the previous one (Program::start for the first).
+struct Move {
+  Vec3 end = Vec3::Zero();     // mm
+  Vec3 centre = Vec3::Zero();  // arcs: axis point, with the start's coordinate along the plane normal
+  std::uint32_t line = 0;      // 1-based physical source line
+  float feed = 0;              // mm/min programmed feed (0 for rapids); seconds for a dwell
+  MoveKind kind = MoveKind::Linear;
+  Plane plane = Plane::XY;
+  std::uint8_t flags = 0;
+  std::uint16_t turns = 1;     // arcs: 1 for an ordinary arc (or a full circle), more adds turns
+
+  bool isArc() const { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }
+  bool isMotion() const { return kind != MoveKind::Dwell; }
+  double dwellSeconds() const { return kind == MoveKind::Dwell ? feed : 0.0; }
+};
+
+struct Program {
+  std::string source;               // file name as given
+  Vec3 start = Vec3::Zero();        // position before the first move, mm
+  std::vector<Move> moves;
+  std::vector<Diagnostic> warnings; // non-fatal notes (e.g. cutter compensation ignored)
+  std::uint32_t lineCount = 0;      // physical lines in the source
+
+  const Vec3& startOf(std::size_t i) const { return i == 0 ? start : moves[i - 1].end; }
+};
+
+}  // namespace isurface

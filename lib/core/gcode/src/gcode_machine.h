@@ -1,0 +1,146 @@
+#pragma once
+// The RS274/NGC machine model behind interpretGcode: modal state, one block's execution, moves
+// out. Private to the core library; split over gcode_interpreter.cpp (blocks and modal codes),
+// gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp (canned cycles).
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "gcode_lexer.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/gcode/gcode_stream.h"
+
+namespace isurface::gcode {
+
+constexpr double kMmPerInch = 25.4;
+
+// G codes in tenths.
+enum GCode : int {
+  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG10 = 100,
+  kG17 = 170, kG18 = 180, kG19 = 190, kG20 = 200, kG21 = 210,
+  kG28 = 280, kG28_1 = 281, kG30 = 300, kG30_1 = 301,
+  kG40 = 400, kG41 = 410, kG41_1 = 411, kG42 = 420, kG42_1 = 421,
+  kG43 = 430, kG43_1 = 431, kG49 = 490, kG53 = 530,
+  kG61 = 610, kG61_1 = 611, kG64 = 640,
+  kG73 = 730, kG80 = 800, kG81 = 810, kG82 = 820, kG83 = 830,
+  kG90 = 900, kG90_1 = 901, kG91 = 910, kG91_1 = 911,
+  kG93 = 930, kG94 = 940, kG96 = 960, kG97 = 970, kG98 = 980, kG99 = 990,
+};
+
+// Modal groups of the G codes understood here.
+enum Group : int {
+  kGroupNonModal = 0,  // G4 G10 G28 G28.1 G30 G30.1 G53
+  kGroupMotion,        // G0 G1 G2 G3 G73 G80 G81 G82 G83
+  kGroupPlane,         // G17 G18 G19
+  kGroupDistance,      // G90 G91
+  kGroupArcDistance,   // G90.1 G91.1
+  kGroupFeedMode,      // G93 G94
+  kGroupUnits,         // G20 G21
+  kGroupCutterComp,    // G40 G41 G42 G41.1 G42.1
+  kGroupToolLength,    // G43 G43.1 G49
+  kGroupRetract,       // G98 G99
+  kGroupCoordSystem,   // G54 .. G59.3
+  kGroupPathControl,   // G61 G61.1 G64
+  kGroupSpindleMode,   // G96 G97
+  kGroupCount
+};
+
+inline bool isCycle(int motion) {
+  return motion == kG73 || motion == kG81 || motion == kG82 || motion == kG83;
+}
+
+// Everything that persists from block to block. Small, so a block can be undone by copying.
+struct ModalState {
+  Vec3 position = Vec3::Zero();  // mm
+  int motion = kG80;
+  Plane plane = Plane::XY;
+  bool inch = false;
+  bool incremental = false;     // G91
+  bool arcAbsolute = false;     // G90.1
+  bool inverseTime = false;     // G93
+  bool exactStop = false;       // G61 / G61.1
+  bool retractToR = false;      // G99 (default G98: back to the initial level)
+  int cutterComp = kG40;
+  int toolLength = kG49;
+  int coordSystem = 540;
+  double feed = 0;              // mm/min (G94) or 1/min (G93)
+  // Canned cycle words kept from block to block, mm and seconds.
+  double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
+  Vec3 g28 = Vec3::Zero(), g30 = Vec3::Zero();
+};
+
+// One block's G codes sorted by modal group.
+struct GroupedCodes {
+  int code[kGroupCount];
+  std::uint32_t column[kGroupCount];
+  bool has(Group g) const { return code[g] >= 0; }
+};
+
+class Machine {
+ public:
+  Machine(const InterpreterOptions& options, InterpretResult& result, std::string source);
+
+  // Hands the moves to `sink` in chunks of about `chunkMoves` between blocks instead of keeping
+  // them all; `released(p)` is told now and then that the text before p is no longer needed.
+  void streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released);
+
+  // Interprets the whole text.
+  void run(std::string_view text);
+
+  std::uint64_t movesMade() const { return delivered_ + moves_.size(); }
+
+ private:
+  // gcode_interpreter.cpp
+  void runLine(const char* begin, const char* end);
+  // Streaming: hands over every move but the last, which a later block may still mark as
+  // ending at rest (M0, M6, a spindle change); all of them when `all`.
+  void deliverMoves(bool all);
+  bool executeBlock(const Block& block);
+  bool groupCodes(const Block& block, GroupedCodes& groups);
+  void applyModalCodes(const GroupedCodes& groups);
+  void warnOnce(bool& done, std::uint32_t column, std::string message);
+
+  // gcode_motion.cpp
+  double length(double programValue) const {
+    return state_.inch ? programValue * kMmPerInch : programValue;
+  }
+  Vec3 targetOf(const Block& block) const;  // axis words applied to the current position
+  bool hasAxisWords(const Block& block) const;
+  bool straight(const Block& block, int motion, std::uint32_t column);
+  bool arc(const Block& block, int motion, std::uint32_t column);
+  bool dwell(const Block& block, std::uint32_t column);
+  bool homeMove(const Block& block, int code);
+  void emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags = 0);
+  void emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns, float feed);
+
+  // gcode_cycles.cpp
+  bool cycle(const Block& block, int motion, std::uint32_t column);
+
+  bool fail(std::uint32_t column, std::string message);
+
+  const InterpreterOptions& options_;
+  InterpretResult& result_;
+  std::vector<Move>& moves_;
+  std::string source_;
+  ModalState state_;
+  std::uint32_t line_ = 0;        // current physical line, 1-based
+  bool ended_ = false;            // M2 / M30 / closing '%'
+  bool percentOpened_ = false;    // the first line with words was '%'
+  bool seenWords_ = false;
+  bool warnedCutterComp_ = false, warnedRotary_ = false, warnedOWord_ = false;
+  bool warnedSpindleMode_ = false;
+  // The error of the block being executed.
+  std::uint32_t errorColumn_ = 0;
+  std::string errorMessage_;
+  Block block_;
+  // Streaming (null sink_: every move stays in the program).
+  MoveSink* sink_ = nullptr;
+  std::size_t chunkMoves_ = 0;
+  std::uint64_t delivered_ = 0;
+  std::function<void(const char*)> released_;
+};
+
+// Formats a length for messages: 4 decimals.
+std::string fmtLength(double v);
+
+}  // namespace isurface::gcode

@@ -1,0 +1,19 @@
+#pragma once
+// A G-code program interpreted into its canonical move listing (docs/canon-format.md), one
+// line per move, streamed: memory stays the same whatever the size of the file.
+#include <string>
+
+#include "isurface/gcode/gcode_stream.h"
+
+namespace isurface {
+
+// Writes to standard output; `error` gets the errno of the first failed write.
+StreamedInterpretation interpretToStdout(const std::string& input, const InterpreterOptions& options, int& error);
+
+// Writes through a temporary file renamed into place when the program has no error or
+// options.keepGoing: a failed run leaves no partial file. `writeError` gets the message of a
+// failed write; the program is still interpreted, so that its own errors are reported.
+StreamedInterpretation interpretToPath(const std::string& input, const InterpreterOptions& options,
+                                       const std::string& path, std::string& writeError);
+
+}  // namespace isurface

@@ -1,0 +1,29 @@
+#pragma once
+// A Biip dump's samples copied into a Trajectory (one array per channel).
+#include <functional>
+#include <string>
+
+#include "isurface/base/trajectory.h"
+
+namespace isurface {
+
+class BiipReader;
+
+using TrajectoryProgress = std::function<void(double)>;
+
+// Which channels loadTrajectory copies besides time, line, block, x y z and feed (48 bytes a
+// sample as doubles and u32).
+struct TrajectoryChannels {
+  bool feedback = true;  // fb_x fb_y fb_z: 24 bytes a sample
+  bool extra = true;     // every other channel of the dump: 8 bytes a sample each
+};
+
+// Copies the channels of a dump (progress 0..1 about every million records). Samples whose
+// position is not finite are kept; geometry skips them.
+Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress = {},
+                          const TrajectoryChannels& channels = {});
+
+// The machine's rapid rate named in a dump's metadata (machine.rapid_mm_min), 0 when absent.
+double rapidFeedFromMetadata(const std::string& metadataJson);
+
+}  // namespace isurface

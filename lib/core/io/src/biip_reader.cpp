@@ -1,0 +1,266 @@
+// Biip reader: maps the file read-only and validates it against format version 1.
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <system_error>
+#include <unordered_set>
+
+#include "isurface/io/biip.h"
+#include "isurface/base/diagnostic.h"
+
+namespace isurface {
+
+namespace {
+
+template <class T>
+T load(const unsigned char* p) {
+  T v;
+  std::memcpy(&v, p, sizeof v);
+  return v;
+}
+
+std::string inQuotes(const std::string& s) { return "'" + s + "'"; }
+
+// A channel name as stored: up to 24 bytes, NUL-padded. Non-printable bytes are shown as \xNN.
+std::string printableName(const unsigned char* p, std::size_t n) {
+  std::string out;
+  for (std::size_t i = 0; i < n && p[i] != 0; ++i) {
+    if (p[i] >= 0x20 && p[i] < 0x7f) {
+      out += static_cast<char>(p[i]);
+    } else {
+      static const char* hex = "0123456789abcdef";
+      out += "\\x";
+      out += hex[p[i] >> 4];
+      out += hex[p[i] & 15];
+    }
+  }
+  return out;
+}
+
+std::size_t countNonFinite(const BiipChannelView& x, const BiipChannelView& y, const BiipChannelView& z,
+                           std::size_t n) {
+  std::size_t bad = 0;
+  // v - v is 0 for a finite v and NaN for NaN or an infinity: no branch per sample.
+  for (std::size_t i = 0; i < n; ++i) {
+    const double a = x[i], b = y[i], c = z[i];
+    const double s = (a - a) + (b - b) + (c - c);
+    bad += static_cast<std::size_t>(s != s);
+  }
+  return bad;
+}
+
+}  // namespace
+
+BiipReader::BiipReader(const std::string& path) : path_(path) {
+  try {
+    parse();
+  } catch (...) {
+    unmap();
+    throw;
+  }
+}
+
+BiipReader::~BiipReader() { unmap(); }
+
+void BiipReader::unmap() noexcept {
+  if (data_ != nullptr && size_ > 0) ::munmap(const_cast<unsigned char*>(data_), size_);
+  data_ = nullptr;
+}
+
+void BiipReader::refuse(const std::string& problem) const {
+  throw InputError(Diagnostic{path_, 0, 0, problem});
+}
+
+void BiipReader::parse() {
+  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  if (fd < 0) refuse("cannot read: " + std::error_code(errno, std::generic_category()).message());
+  struct stat st {};
+  if (::fstat(fd, &st) != 0) {
+    const int error = errno;
+    ::close(fd);
+    refuse("cannot read: " + std::error_code(error, std::generic_category()).message());
+  }
+  if (!S_ISREG(st.st_mode)) {
+    ::close(fd);
+    refuse(S_ISDIR(st.st_mode) ? "is a folder, not a Biip file" : "is not a regular file (Biip files are mapped)");
+  }
+  const std::size_t size = static_cast<std::size_t>(st.st_size);
+  if (size == 0) {
+    ::close(fd);
+    refuse("empty file (0 bytes), not a Biip file");
+  }
+  void* map = ::mmap(nullptr, size, PROT_READ, MAP_PRIVATE, fd, 0);
+  const int mapError = errno;
+  ::close(fd);
+  if (map == MAP_FAILED) refuse("cannot map: " + std::error_code(mapError, std::generic_category()).message());
+  data_ = static_cast<const unsigned char*>(map);
+  size_ = size;
+  ::madvise(map, size, MADV_SEQUENTIAL);
+
+  const unsigned char* d = data_;
+  const auto tooShort = [&] {
+    refuse("file too short for the Biip header (" + std::to_string(size_) + " bytes, the fixed header alone is 64)");
+  };
+  if (size_ < 4) tooShort();
+  if (std::memcmp(d, "BIIP", 4) != 0) refuse("not a Biip file (wrong magic: expected \"BIIP\")");
+  if (size_ < kBiipFixedHeaderBytes) tooShort();
+  BiipHeader& h = header_;
+  h.versionMajor = load<std::uint16_t>(d + 4);
+  h.versionMinor = load<std::uint16_t>(d + 6);
+  h.headerBytes = load<std::uint32_t>(d + 8);
+  const std::uint32_t channelCount = load<std::uint32_t>(d + 12);
+  h.recordBytes = load<std::uint32_t>(d + 16);
+  h.flags = load<std::uint32_t>(d + 20);
+  h.cycleSeconds = load<double>(d + 24);
+  h.recordCount = load<std::uint64_t>(d + 32);
+  h.t0Seconds = load<double>(d + 40);
+  const std::uint32_t metadataBytes = load<std::uint32_t>(d + 48);
+
+  if (h.versionMajor != kBiipVersionMajor) {
+    refuse("unsupported Biip major version " + std::to_string(h.versionMajor) + "." + std::to_string(h.versionMinor) +
+           " (this reader knows version 1)");
+  }
+  if (channelCount == 0 || channelCount > kBiipMaxChannels) {
+    refuse("channel_count " + std::to_string(channelCount) + " is outside 1..256");
+  }
+  if (h.recordBytes == 0 || h.recordBytes > kBiipMaxRecordBytes) {
+    refuse("record_bytes " + std::to_string(h.recordBytes) + " is outside 1..4096");
+  }
+  if (!std::isfinite(h.cycleSeconds) || h.cycleSeconds <= 0) {
+    refuse("cycle_s " + std::to_string(h.cycleSeconds) + " is not a finite number > 0");
+  }
+  const std::uint64_t tableEnd = kBiipFixedHeaderBytes + std::uint64_t(kBiipChannelEntryBytes) * channelCount;
+  const std::uint64_t minimumHeader = tableEnd + metadataBytes;
+  if (h.headerBytes < minimumHeader) {
+    refuse("header_bytes " + std::to_string(h.headerBytes) + " is smaller than 64 + 32 x " +
+           std::to_string(channelCount) + " channels + " + std::to_string(metadataBytes) + " metadata bytes = " +
+           std::to_string(minimumHeader));
+  }
+  if (h.headerBytes > size_) {
+    refuse("header runs past the end of the file (header_bytes " + std::to_string(h.headerBytes) + ", file " +
+           std::to_string(size_) + " bytes)");
+  }
+
+  // Channel table.
+  std::unordered_set<std::string> names;
+  h.channels.reserve(channelCount);
+  for (std::uint32_t c = 0; c < channelCount; ++c) {
+    const unsigned char* e = d + kBiipFixedHeaderBytes + std::size_t(kBiipChannelEntryBytes) * c;
+    std::size_t length = 0;
+    while (length < kBiipMaxNameLength && e[length] != 0) ++length;
+    BiipChannel channel;
+    channel.name.assign(reinterpret_cast<const char*>(e), length);
+    const std::string label = "channel " + std::to_string(c + 1);
+    if (length == 0) refuse(label + " has an empty name");
+    if (!biipValidChannelName(channel.name)) {
+      refuse(label + " name " + inQuotes(printableName(e, length)) + " is not made of [a-z0-9_]");
+    }
+    const std::uint8_t type = e[24];
+    if (!biipTypeKnown(type)) {
+      refuse("channel " + inQuotes(channel.name) + " has unknown type " + std::to_string(type) +
+             " (1..6 are f64 f32 i32 u32 i64 u64)");
+    }
+    channel.type = static_cast<BiipType>(type);
+    channel.offset = load<std::uint32_t>(e + 28);
+    const std::uint64_t end = std::uint64_t(channel.offset) + biipTypeSize(channel.type);
+    if (end > h.recordBytes) {
+      refuse("channel " + inQuotes(channel.name) + " (" + biipTypeName(channel.type) + " at offset " +
+             std::to_string(channel.offset) + ") lies outside the " + std::to_string(h.recordBytes) +
+             "-byte record");
+    }
+    if (!names.insert(channel.name).second) refuse("two channels are named " + inQuotes(channel.name));
+    h.channels.push_back(std::move(channel));
+  }
+  for (const char* required : {"x", "y", "z"}) {
+    if (names.count(required) == 0) {
+      refuse(std::string("no '") + required + "' channel (x, y and z are required)");
+    }
+  }
+
+  // Metadata: a JSON object. Unusable metadata is ignored with a warning, never fatal.
+  if (metadataBytes > 0) {
+    std::string_view text(reinterpret_cast<const char*>(d + tableEnd), metadataBytes);
+    while (!text.empty() && (text.back() == '\0' || text.back() == ' ' || text.back() == '\n' ||
+                             text.back() == '\r' || text.back() == '\t')) {
+      text.remove_suffix(1);
+    }
+    if (!text.empty()) {
+      const auto parsed = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+      if (parsed.is_discarded()) {
+        warnings_.push_back("metadata is not valid UTF-8 JSON; ignored");
+      } else if (!parsed.is_object()) {
+        warnings_.push_back("metadata is JSON but not an object; ignored");
+      } else {
+        h.metadataJson.assign(text.data(), text.size());
+      }
+    }
+  }
+  if (!std::isfinite(h.t0Seconds)) {
+    warnings_.push_back("t0_s is not finite; 0 is used instead");
+    h.t0Seconds = 0;
+  }
+
+  // Records.
+  const std::size_t body = size_ - h.headerBytes;
+  const std::size_t whole = body / h.recordBytes;
+  const std::size_t partial = body % h.recordBytes;
+  if (h.recordCount == 0) {
+    records_ = whole;
+    if (partial != 0) {
+      warnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
+                          std::to_string(h.recordBytes) + " bytes): dropped");
+    }
+  } else if (h.recordCount > whole) {
+    records_ = whole;
+    warnings_.push_back("record_count says " + std::to_string(h.recordCount) + " records but the file holds " +
+                        std::to_string(whole) + (partial != 0 ? " whole ones" : "") + "; loaded " +
+                        std::to_string(whole));
+    if (partial != 0) {
+      warnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
+                          std::to_string(h.recordBytes) + " bytes): dropped");
+    }
+  } else {
+    records_ = static_cast<std::size_t>(h.recordCount);  // trailing bytes, if any, are ignored
+  }
+
+  t_ = channel("t");
+  nonFinite_ = countNonFinite(channel("x"), channel("y"), channel("z"), records_);
+  if (nonFinite_ > 0) {
+    warnings_.push_back(std::to_string(nonFinite_) + (nonFinite_ == 1 ? " sample" : " samples") +
+                        " with non-finite x/y/z " + (nonFinite_ == 1 ? "is" : "are") + " kept out of geometry");
+  }
+}
+
+const BiipChannel* BiipReader::findChannel(const std::string& name) const {
+  for (const auto& c : header_.channels)
+    if (c.name == name) return &c;
+  return nullptr;
+}
+
+bool BiipReader::hasChannel(const std::string& name) const { return findChannel(name) != nullptr; }
+
+BiipChannelView BiipReader::channel(const std::string& name) const {
+  const BiipChannel* c = findChannel(name);
+  if (c == nullptr || data_ == nullptr) return {};
+  return BiipChannelView(data_ + header_.headerBytes + c->offset, header_.recordBytes, c->type, records_);
+}
+
+bool BiipReader::copyChannel(const std::string& name, double* out, std::size_t begin, std::size_t count) const {
+  const BiipChannelView view = channel(name);
+  if (!view.valid()) return false;
+  view.copyTo(out, begin, count);
+  return true;
+}
+
+double BiipReader::timeAt(std::size_t i) const {
+  if (t_.valid()) return t_[i];
+  return header_.t0Seconds + static_cast<double>(i) * header_.cycleSeconds;
+}
+
+}  // namespace isurface

@@ -1,0 +1,112 @@
+// Loading a dump's samples into one array per channel.
+#include "isurface/io/trajectory_loading.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <nlohmann/json.hpp>
+
+#include "isurface/io/biip.h"
+
+namespace isurface {
+
+namespace {
+
+// Channels with a member of their own; every other channel goes to `extra`.
+bool isKnownChannel(const std::string& name, bool feedbackComplete) {
+  static const char* const own[] = {"t", "line", "block", "x", "y", "z", "feed"};
+  for (const char* n : own)
+    if (name == n) return true;
+  return feedbackComplete && (name == "fb_x" || name == "fb_y" || name == "fb_z");
+}
+
+// Records copied per step: small enough that a step's records stay in the cache while each
+// channel is picked out of them.
+constexpr std::size_t kChunkRecords = std::size_t(1) << 16;
+constexpr std::size_t kProgressRecords = std::size_t(1) << 20;
+
+std::uint32_t clampToU32(std::uint64_t v) {
+  return static_cast<std::uint32_t>(std::min<std::uint64_t>(v, std::numeric_limits<std::uint32_t>::max()));
+}
+
+}  // namespace
+
+double rapidFeedFromMetadata(const std::string& metadataJson) {
+  if (metadataJson.empty()) return 0;
+  const nlohmann::json meta = nlohmann::json::parse(metadataJson, nullptr, false);
+  if (!meta.is_object()) return 0;
+  const auto machine = meta.find("machine");
+  if (machine == meta.end() || !machine->is_object()) return 0;
+  const auto rapid = machine->find("rapid_mm_min");
+  if (rapid == machine->end() || !rapid->is_number()) return 0;
+  const double value = rapid->get<double>();
+  return std::isfinite(value) && value > 0 ? value : 0;
+}
+
+Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress,
+                          const TrajectoryChannels& channels) {
+  const BiipHeader& header = reader.header();
+  const std::size_t n = reader.recordCount();
+  Trajectory out;
+  out.source = reader.path();
+  out.cycle = header.cycleSeconds;
+  out.rapidFeed = rapidFeedFromMetadata(header.metadataJson);
+
+  const BiipChannelView t = reader.channel("t");
+  const BiipChannelView line = reader.channel("line");
+  const BiipChannelView block = reader.channel("block");
+  const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
+  out.hasLine = line.valid();
+
+  // Destination of each floating channel copied in chunks.
+  struct Copy {
+    BiipChannelView view;
+    std::vector<double>* to;
+  };
+  std::vector<Copy> copies;
+  const auto add = [&](const std::string& name, std::vector<double>& to) {
+    to.resize(n);
+    copies.push_back({reader.channel(name), &to});
+  };
+  add("x", out.x);
+  add("y", out.y);
+  add("z", out.z);
+  if (t.valid()) add("t", out.time);
+  if (feedbackComplete && channels.feedback) {
+    add("fb_x", out.fbX);
+    add("fb_y", out.fbY);
+    add("fb_z", out.fbZ);
+  }
+  if (reader.hasChannel("feed")) add("feed", out.feed);
+  for (const BiipChannel& c : header.channels) {
+    if (!channels.extra || isKnownChannel(c.name, feedbackComplete)) continue;
+    out.extra.emplace_back(c.name, std::vector<double>());
+  }
+  // Resized only now: `extra` must not grow after pointers into it are taken.
+  for (auto& [name, values] : out.extra) add(name, values);
+
+  out.line.assign(n, 0);
+  if (block.valid()) out.block.resize(n);
+  if (!t.valid()) out.time.resize(n);
+
+  std::size_t nextReport = kProgressRecords;
+  for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
+    const std::size_t count = std::min(kChunkRecords, n - begin);
+    for (const Copy& c : copies) c.view.copyTo(c.to->data() + begin, begin, count);
+    if (line.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.line[i] = clampToU32(line.integer(i));
+    if (block.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.block[i] = clampToU32(block.integer(i));
+    if (!t.valid())
+      for (std::size_t i = begin; i < begin + count; ++i) out.time[i] = header.t0Seconds + double(i) * header.cycleSeconds;
+    if (progress && begin + count >= nextReport) {
+      progress(double(begin + count) / double(n));
+      nextReport += kProgressRecords;
+    }
+  }
+  if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
+  if (progress) progress(1.0);
+  return out;
+}
+
+}  // namespace isurface

@@ -1,0 +1,43 @@
+#pragma once
+// The machine description a simulation runs against: interpolation cycle, per-axis limits and
+// servo gains, path tolerance. Read from JSON (resources/machines/default.json documents it).
+#include <array>
+#include <string>
+
+#include "isurface/base/geometry.h"
+
+namespace isurface {
+
+struct AxisLimits {
+  double maxVelocity = 400;       // mm/s
+  double maxAcceleration = 2000;  // mm/s^2
+  double maxJerk = 100000;        // mm/s^3; 0 = not limited
+  double positionGain = 40;       // 1/s, proportional position loop
+  double velocityFeedForward = 0.95;       // 0..1
+  double velocityLoopTimeConstant = 0.002; // s, first-order lag of the velocity loop
+};
+
+struct Machine {
+  std::string name;
+  double cycle = 0.001;           // s, interpolation period
+  double rapidVelocity = 400;     // mm/s
+  double chordTolerance = 0.01;   // mm, largest distance of a commanded sample from the program
+  std::array<AxisLimits, 3> axes; // X, Y, Z
+  Vec3 g28Position = Vec3::Zero();
+  Vec3 g30Position = Vec3::Zero();
+
+  bool jerkLimited() const { return axes[0].maxJerk > 0 && axes[1].maxJerk > 0 && axes[2].maxJerk > 0; }
+};
+
+// Parses a machine description. Units in the file are mm, s and mm/min for velocities (as on a
+// control panel); every missing key takes the default's value. Throws InputError naming the
+// file and the offending key for malformed JSON and impossible values (non-positive cycle,
+// limits <= 0, gains out of range).
+Machine parseMachine(const std::string& jsonText, const std::string& sourceName);
+Machine loadMachine(const std::string& path);
+
+// The built-in default (the text of resources/machines/default.json, compiled in).
+Machine defaultMachine();
+const std::string& defaultMachineJson();
+
+}  // namespace isurface

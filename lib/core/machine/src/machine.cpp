@@ -1,0 +1,149 @@
+#include "isurface/machine/machine.h"
+
+#include <cmath>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "isurface/base/diagnostic.h"
+
+namespace isurface {
+
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void fail(const std::string& source, const std::string& message) {
+  throw InputError(Diagnostic{source, 0, 0, message});
+}
+
+double number(const json& object, const char* key, double fallback, const std::string& source,
+              const std::string& where) {
+  if (!object.contains(key)) return fallback;
+  const json& value = object.at(key);
+  if (!value.is_number()) fail(source, where + key + " must be a number");
+  const double v = value.get<double>();
+  if (!std::isfinite(v)) fail(source, where + key + " must be finite");
+  return v;
+}
+
+void requirePositive(double value, const std::string& source, const std::string& key) {
+  if (!(value > 0)) fail(source, key + " must be greater than 0 (got " + std::to_string(value) + ")");
+}
+
+Vec3 position(const json& object, const char* key, const Vec3& fallback, const std::string& source) {
+  if (!object.contains(key)) return fallback;
+  const json& value = object.at(key);
+  if (!value.is_array() || value.size() != 3)
+    fail(source, std::string("reference_positions_mm.") + key + " must be an array of 3 numbers");
+  Vec3 p;
+  for (int i = 0; i < 3; ++i) {
+    if (!value[i].is_number()) fail(source, std::string("reference_positions_mm.") + key + " must hold numbers");
+    p[i] = value[i].get<double>();
+    if (!std::isfinite(p[i])) fail(source, std::string("reference_positions_mm.") + key + " must be finite");
+  }
+  return p;
+}
+
+Machine builtInFallback() {
+  Machine m;
+  m.name = "built-in";
+  return m;
+}
+
+Machine parseOnto(const Machine& base, const std::string& text, const std::string& source) {
+  json root;
+  try {
+    root = json::parse(text);
+  } catch (const json::exception& e) {  // malformed text, or a number beyond a double
+    fail(source, std::string("not valid JSON: ") + e.what());
+  }
+  if (!root.is_object()) fail(source, "a machine description must be a JSON object");
+  Machine m = base;
+  if (root.contains("name")) {
+    if (!root["name"].is_string()) fail(source, "name must be a string");
+    m.name = root["name"].get<std::string>();
+  }
+  m.cycle = number(root, "cycle_s", m.cycle, source, "");
+  requirePositive(m.cycle, source, "cycle_s");
+  if (m.cycle > 0.1) fail(source, "cycle_s must be at most 0.1 s");
+  // NC interpolation cycles run from about 0.1 to 10 ms; a far shorter one only multiplies the
+  // samples of every simulation (1e-12 s would take hours for a few millimetres).
+  if (m.cycle < 1e-5) fail(source, "cycle_s must be at least 1e-05 s (10 us)");
+  // Checked as written (mm/min), then kept in mm/s.
+  const double rapid = number(root, "rapid_mm_min", m.rapidVelocity * 60, source, "");
+  requirePositive(rapid, source, "rapid_mm_min");
+  m.rapidVelocity = rapid / 60.0;
+  m.chordTolerance = number(root, "chord_tolerance_mm", m.chordTolerance, source, "");
+  requirePositive(m.chordTolerance, source, "chord_tolerance_mm");
+
+  if (root.contains("axes")) {
+    const json& axes = root["axes"];
+    if (!axes.is_object()) fail(source, "axes must be an object with x, y, z");
+    static const char* names[3] = {"x", "y", "z"};
+    for (const auto& [key, value] : axes.items())
+      if (key != "x" && key != "y" && key != "z")
+        fail(source, "axes." + key + ": unknown axis (this machine model has x, y, z)");
+    for (int i = 0; i < 3; ++i) {
+      if (!axes.contains(names[i])) continue;
+      const json& a = axes[names[i]];
+      const std::string where = std::string("axes.") + names[i] + ".";
+      if (!a.is_object()) fail(source, where.substr(0, where.size() - 1) + " must be an object");
+      AxisLimits& limits = m.axes[i];
+      const double velocity = number(a, "max_velocity_mm_min", limits.maxVelocity * 60, source, where);
+      requirePositive(velocity, source, where + "max_velocity_mm_min");
+      limits.maxVelocity = velocity / 60.0;
+      limits.maxAcceleration = number(a, "max_acceleration_mm_s2", limits.maxAcceleration, source, where);
+      requirePositive(limits.maxAcceleration, source, where + "max_acceleration_mm_s2");
+      if (a.contains("max_jerk_mm_s3") && a["max_jerk_mm_s3"].is_null()) {
+        limits.maxJerk = 0;
+      } else {
+        limits.maxJerk = number(a, "max_jerk_mm_s3", limits.maxJerk, source, where);
+        if (limits.maxJerk < 0) fail(source, where + "max_jerk_mm_s3 must be >= 0 (0 or null: not limited)");
+        // The jerk filter lasts about twice acceleration / jerk: beyond a second it is no machine.
+        if (limits.maxJerk > 0 && limits.maxJerk < limits.maxAcceleration)
+          fail(source, where + "max_jerk_mm_s3 must be 0 (not limited) or at least max_acceleration_mm_s2 per second (got " +
+                           std::to_string(limits.maxJerk) + ")");
+      }
+      limits.positionGain = number(a, "position_gain_1_s", limits.positionGain, source, where);
+      requirePositive(limits.positionGain, source, where + "position_gain_1_s");
+      if (limits.positionGain * m.cycle > 0.5)
+        fail(source, where + "position_gain_1_s is too high for cycle_s (gain x cycle must be <= 0.5)");
+      limits.velocityFeedForward = number(a, "velocity_feed_forward", limits.velocityFeedForward, source, where);
+      if (limits.velocityFeedForward < 0 || limits.velocityFeedForward > 1)
+        fail(source, where + "velocity_feed_forward must be between 0 and 1");
+      limits.velocityLoopTimeConstant =
+          number(a, "velocity_loop_time_constant_s", limits.velocityLoopTimeConstant, source, where);
+      if (limits.velocityLoopTimeConstant < 0)
+        fail(source, where + "velocity_loop_time_constant_s must be >= 0");
+    }
+  }
+  if (root.contains("reference_positions_mm")) {
+    const json& refs = root["reference_positions_mm"];
+    if (!refs.is_object()) fail(source, "reference_positions_mm must be an object");
+    m.g28Position = position(refs, "g28", m.g28Position, source);
+    m.g30Position = position(refs, "g30", m.g30Position, source);
+  }
+  return m;
+}
+
+}  // namespace
+
+Machine defaultMachine() {
+  static const Machine machine = parseOnto(builtInFallback(), defaultMachineJson(), "default machine");
+  return machine;
+}
+
+Machine parseMachine(const std::string& jsonText, const std::string& sourceName) {
+  return parseOnto(defaultMachine(), jsonText, sourceName);
+}
+
+Machine loadMachine(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open machine description"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseMachine(text.str(), path);
+}
+
+}  // namespace isurface

@@ -1,0 +1,62 @@
+#pragma once
+// The NC interpolator: samples a feed plan at the machine's cycle along the exact geometry,
+// smooths the axis commands with the plan's filters and runs each axis through its servo.
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+
+#include "isurface/nc/feed_plan.h"
+
+namespace isurface {
+
+// One interpolation cycle. Laid out like a Biip record with channels line, block, x y z,
+// fb_x fb_y fb_z and feed, so that it can be written as it is.
+struct SimSample {
+  std::uint32_t line;   // 1-based source line, 0 outside the program
+  std::uint32_t block;  // index of the move in Program::moves
+  double x, y, z;       // commanded position, mm
+  double fbX, fbY, fbZ; // encoder feedback position, mm
+  double feed;          // programmed feed in effect, mm/min
+};
+static_assert(sizeof(SimSample) == 64, "SimSample must match the Biip record layout");
+
+class SampleSink {
+ public:
+  virtual ~SampleSink() = default;
+  virtual void consume(const SimSample* samples, std::size_t count) = 0;
+};
+
+struct InterpolationSummary {
+  std::uint64_t samples = 0;
+  double duration = 0;  // s, from the first sample to the last
+};
+
+InterpolationSummary interpolate(const Program& program, const Machine& machine, const FeedPlan& plan,
+                                 SampleSink& sink, const ProgressCallback& progress = {});
+
+// The interpolator fed one planned segment at a time (interpolate() is this over a whole plan):
+// each add() samples every cycle that no later segment can change, so that it holds only the
+// segment being walked and the filters' few cycles. The machine and the sink must outlive it.
+class StreamingInterpolator {
+ public:
+  // `start`: the position before the first move, mm; `holdBefore`: s of dwell before the first
+  // motion; the filter times are the plan's.
+  StreamingInterpolator(const Machine& machine, const Vec3& start, double holdBefore, double filterTime1,
+                        double filterTime2, SampleSink& sink);
+  ~StreamingInterpolator();
+  StreamingInterpolator(const StreamingInterpolator&) = delete;
+  StreamingInterpolator& operator=(const StreamingInterpolator&) = delete;
+
+  // Reports the fraction of `totalSeconds` of profile sampled so far.
+  void reportProgress(ProgressCallback progress, double totalSeconds);
+  // The next segment of the plan and its move, which starts at `start`.
+  void add(const PlannedSegment& segment, const Move& move, const Vec3& start);
+  // No more segments: samples the rest, then the standstill until the filters have settled.
+  InterpolationSummary finish();
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace isurface

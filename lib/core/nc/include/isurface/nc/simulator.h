@@ -1,0 +1,77 @@
+#pragma once
+// G-code program + machine -> interpolation samples: feed planning, interpolation and servo.
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/gcode/gcode_stream.h"
+#include "isurface/nc/interpolator.h"
+
+namespace isurface {
+
+struct SimulationReport {
+  std::uint64_t samples = 0;
+  double machiningTime = 0;  // s, first to last sample
+  double pathLength = 0;     // mm, programmed
+  std::size_t segments = 0;  // moves with motion
+  double filterTime1 = 0;    // s
+  double filterTime2 = 0;    // s
+};
+
+// Progress is reported as planning (0..0.1) then interpolation (0.1..1).
+SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
+                          const ProgressCallback& progress = {});
+
+// Simulates a program handed over move by move, as interpretGcodeStream delivers it: planned
+// with StreamingFeedPlanner's window and interpolated as segments become final. The samples are
+// simulate()'s on the whole program, bit for bit (unless the planner had to force a commit,
+// see feed_plan.h). Memory: the planner's window, the moves it spans (64 bytes each) and the
+// interpolator's few cycles, whatever the program's length.
+class StreamingSimulation : public MoveSink {
+ public:
+  // `start`: the position before the first move (InterpreterOptions::startPosition); `source`
+  // names the program in planning errors. The machine and the sink must outlive it.
+  StreamingSimulation(const Machine& machine, const Vec3& start, const std::string& source, SampleSink& sink,
+                      const StreamingFeedPlanner::Window& window = {});
+  ~StreamingSimulation() override;
+
+  // An InputError of planning (or of the sink: a full disk) is kept, not thrown, so that the
+  // interpreter can go on to report the program's own errors first; later moves are ignored.
+  void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override;
+  // After the last move: the rest of the samples. Throws the error kept by consume(), if any.
+  SimulationReport finish();
+
+  const StreamingFeedPlanner& planner() const { return planner_; }
+
+ private:
+  void interpolateFinalSegments();
+
+  const Machine& machine_;
+  SampleSink& sink_;
+  StreamingFeedPlanner planner_;
+  std::string source_;
+  std::unique_ptr<StreamingInterpolator> interpolator_;  // once the dwell before the first motion is known
+  Vec3 start_;
+  Vec3 moveStart_;                 // where the next move handed over starts
+  std::deque<Move> moves_;         // from the move of the segment being interpolated on
+  std::uint64_t firstMove_ = 0;    // index of moves_.front()
+  Vec3 firstMoveStart_;            // where moves_.front() starts
+  std::vector<PlannedSegment> final_;
+  SimulationReport report_;
+  std::optional<InputError> simulationError_;
+};
+
+// A sink that keeps every sample in memory (tests, small programs).
+class SampleBuffer : public SampleSink {
+ public:
+  void consume(const SimSample* samples, std::size_t count) override {
+    data.insert(data.end(), samples, samples + count);
+  }
+  std::vector<SimSample> data;
+};
+
+}  // namespace isurface

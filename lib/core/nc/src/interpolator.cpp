@@ -1,0 +1,269 @@
+#include "isurface/nc/interpolator.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <memory>
+#include <limits>
+#include <vector>
+
+#include "isurface/gcode/path_segment.h"
+#include "isurface/nc/servo.h"
+
+namespace isurface {
+
+namespace {
+
+// A moving average over an odd number of samples, started as if the input had always been
+// `initial`. Its output lags its input by (taps - 1) / 2 samples.
+class MovingAverage3 {
+ public:
+  MovingAverage3(int taps, const Vec3& initial) : ring_(taps, initial), sum_(initial * taps), taps_(taps) {}
+
+  Vec3 push(const Vec3& value) {
+    if (taps_ == 1) return value;
+    // At rest the output is the position itself, not a running sum's rounding of it.
+    repeats_ = value == last_ ? repeats_ + 1 : 1;
+    last_ = value;
+    sum_ += value - ring_[next_];
+    ring_[next_] = value;
+    if (++next_ == ring_.size()) next_ = 0;
+    // Re-add the window now and then so rounding in the running sum cannot build up.
+    if (++pushesSinceResum_ == (1u << 20)) {
+      pushesSinceResum_ = 0;
+      sum_.setZero();
+      for (const Vec3& v : ring_) sum_ += v;
+    }
+    return repeats_ >= taps_ ? value : Vec3(sum_ / taps_);
+  }
+  int lag() const { return (taps_ - 1) / 2; }
+
+ private:
+  std::vector<Vec3> ring_;
+  Vec3 sum_;
+  int taps_;
+  int repeats_ = 0;
+  Vec3 last_ = Vec3::Constant(std::numeric_limits<double>::quiet_NaN());
+  std::size_t next_ = 0;
+  unsigned pushesSinceResum_ = 0;
+};
+
+int taps(double time, double cycle) {
+  return time > 0 ? 2 * static_cast<int>(std::lround((time / cycle - 1.0) / 2.0)) + 1 : 1;
+}
+
+struct SampleTag {
+  std::uint32_t line, block;
+  double feed;
+};
+
+// A segment of the plan with what walking it needs.
+struct QueuedSegment {
+  PlannedSegment planned;
+  Move move;
+  Vec3 start;
+};
+
+// Walks the unfiltered profile one cycle at a time, over segments handed to it as they come.
+class ProfileWalker {
+ public:
+  ProfileWalker(const Vec3& start, double holdBefore) : tau_(-holdBefore), last_(start) {}
+
+  void add(const QueuedSegment& segment) {
+    queue_.push_back(segment);
+    if (!active_ && !ended_) enter();
+  }
+  bool started() const { return active_ || ended_; }
+  bool active() const { return active_; }
+
+  // Catches up with the time advanced: moves on over the segments whose time has run out.
+  // False when that needs a segment not handed over yet (and `final` is not set).
+  bool settle(bool final) {
+    while (active_ && tau_ >= total_) {
+      if (queue_.size() < 2 && !final) return false;
+      tau_ -= total_;
+      last_ = geometry_.end;
+      queue_.pop_front();
+      if (queue_.empty()) {
+        active_ = false;
+        ended_ = true;
+      } else {
+        enter();
+      }
+    }
+    return true;
+  }
+
+  // Position at the current time; then `advance(cycle)`.
+  Vec3 position() const { return active_ ? geometry_.at(distance()) : last_; }
+  SampleTag tag(double rapidFeed) const {
+    const QueuedSegment& q = queue_.front();
+    return SampleTag{q.move.line, q.planned.move,
+                     q.move.kind == MoveKind::Rapid ? rapidFeed : static_cast<double>(q.move.feed)};
+  }
+  void advance(double dt) { tau_ += dt; }
+
+ private:
+  void enter() {
+    const PlannedSegment& s = queue_.front().planned;
+    geometry_ = PathSegment::from(queue_.front().start, queue_.front().move);
+    tAccel_ = s.accelTime();
+    tCruise_ = s.cruiseTime();
+    tDecel_ = s.decelTime();
+    total_ = tAccel_ + tCruise_ + tDecel_ + s.holdAfter;
+    dAccel_ = s.accelDistance();
+    last_ = geometry_.end;
+    active_ = true;
+  }
+
+  double distance() const {
+    const PlannedSegment& s = queue_.front().planned;
+    double t = tau_;
+    if (t <= 0) return 0;
+    if (t < tAccel_) return s.entrySpeed * t + 0.5 * s.accel * t * t;
+    t -= tAccel_;
+    if (t < tCruise_) return dAccel_ + s.peakSpeed * t;
+    t -= tCruise_;
+    if (t < tDecel_) {
+      const double d = dAccel_ + s.peakSpeed * tCruise_ + s.peakSpeed * t - 0.5 * s.accel * t * t;
+      return std::min(d, s.length);
+    }
+    return s.length;
+  }
+
+  std::deque<QueuedSegment> queue_;  // the front is the segment being walked
+  bool active_ = false, ended_ = false;
+  PathSegment geometry_;
+  double tau_ = 0, total_ = 0;
+  double tAccel_ = 0, tCruise_ = 0, tDecel_ = 0, dAccel_ = 0;
+  Vec3 last_;
+};
+
+}  // namespace
+
+struct StreamingInterpolator::Impl {
+  Impl(const Machine& m, const Vec3& startPosition, double holdBefore, double filterTime1, double filterTime2,
+       SampleSink& s)
+      : machine(m),
+        sink(s),
+        start(startPosition),
+        walker(startPosition, holdBefore),
+        holdBefore(holdBefore),
+        jerkFilter(taps(filterTime1, m.cycle), startPosition),
+        cornerFilter(taps(filterTime2, m.cycle), startPosition),
+        delay(jerkFilter.lag() + cornerFilter.lag()),
+        tags(delay + 1),
+        servos{AxisServo(m.axes[0], m.cycle, startPosition[0]), AxisServo(m.axes[1], m.cycle, startPosition[1]),
+               AxisServo(m.axes[2], m.cycle, startPosition[2])} {
+    batch.reserve(kBatch);
+  }
+
+  void emit(const Vec3& commanded, const SampleTag& tag) {
+    SimSample s;
+    s.line = tag.line;
+    s.block = tag.block;
+    s.x = commanded[0];
+    s.y = commanded[1];
+    s.z = commanded[2];
+    s.fbX = servos[0].step(commanded[0]);
+    s.fbY = servos[1].step(commanded[1]);
+    s.fbZ = servos[2].step(commanded[2]);
+    s.feed = tag.feed;
+    batch.push_back(s);
+    if (batch.size() == kBatch) flush();
+  }
+  void flush() {
+    if (batch.empty()) return;
+    sink.consume(batch.data(), batch.size());
+    samples += batch.size();
+    batch.clear();
+  }
+  void push(const Vec3& raw, const SampleTag& tag) {
+    const std::size_t slot = rawIndex % tags.size();
+    tags[slot] = tag;
+    const Vec3 smoothed = cornerFilter.push(jerkFilter.push(raw));
+    // The filters start moving `delay` cycles before the profile does: those samples belong
+    // to the first move too.
+    emit(smoothed, rawIndex >= static_cast<std::uint64_t>(delay) ? tags[(rawIndex + 1) % tags.size()] : tags[0]);
+    ++rawIndex;
+  }
+  // Samples every cycle whose position is known.
+  void run(bool final) {
+    const double cycle = machine.cycle;
+    for (;;) {
+      if (advanced) {
+        if (!walker.settle(final)) return;
+        advanced = false;
+      }
+      if (!walker.active()) return;
+      lastTag = walker.tag(machine.rapidVelocity * 60.0);
+      push(walker.position(), lastTag);
+      walker.advance(cycle);
+      advanced = true;
+      if (progress && (rawIndex & 0x3FFFF) == 0) progress(std::min(1.0, rawIndex * cycle / progressTotal));
+    }
+  }
+
+  static constexpr std::size_t kBatch = 4096;
+  const Machine& machine;
+  SampleSink& sink;
+  const Vec3 start;
+  ProfileWalker walker;
+  const double holdBefore;
+  MovingAverage3 jerkFilter, cornerFilter;
+  const int delay;
+  std::vector<SampleTag> tags;
+  std::array<AxisServo, 3> servos;
+  std::vector<SimSample> batch;
+  std::uint64_t rawIndex = 0, samples = 0;
+  SampleTag lastTag{0, 0, 0};
+  bool advanced = false;  // time has advanced since the walker last caught up
+  ProgressCallback progress;
+  double progressTotal = 1;
+};
+
+StreamingInterpolator::StreamingInterpolator(const Machine& machine, const Vec3& start, double holdBefore,
+                                             double filterTime1, double filterTime2, SampleSink& sink)
+    : impl_(std::make_unique<Impl>(machine, start, holdBefore, filterTime1, filterTime2, sink)) {}
+
+StreamingInterpolator::~StreamingInterpolator() = default;
+
+void StreamingInterpolator::reportProgress(ProgressCallback progress, double totalSeconds) {
+  impl_->progress = std::move(progress);
+  impl_->progressTotal = std::max(totalSeconds, impl_->machine.cycle);
+}
+
+void StreamingInterpolator::add(const PlannedSegment& segment, const Move& move, const Vec3& start) {
+  impl_->walker.add(QueuedSegment{segment, move, start});
+  impl_->run(false);
+}
+
+InterpolationSummary StreamingInterpolator::finish() {
+  Impl& d = *impl_;
+  d.run(true);
+  // A program of dwells alone still takes their time.
+  if (!d.walker.started())
+    for (double t = 0; t < d.holdBefore; t += d.machine.cycle) d.push(d.start, d.lastTag);
+  // The final point at rest, until the filters hold nothing else.
+  const Vec3 finalPosition = d.walker.position();
+  for (int i = 0; i <= 2 * d.delay; ++i) d.push(finalPosition, d.lastTag);
+  d.flush();
+  InterpolationSummary summary;
+  summary.samples = d.samples;
+  summary.duration = d.samples > 0 ? (d.samples - 1) * d.machine.cycle : 0;
+  if (d.progress) d.progress(1.0);
+  return summary;
+}
+
+InterpolationSummary interpolate(const Program& program, const Machine& machine, const FeedPlan& plan,
+                                 SampleSink& sink, const ProgressCallback& progress) {
+  StreamingInterpolator interpolator(machine, program.start, plan.holdBefore, plan.filterTime1, plan.filterTime2,
+                                     sink);
+  if (progress) interpolator.reportProgress(progress, plan.profileDuration());
+  for (const PlannedSegment& segment : plan.segments)
+    interpolator.add(segment, program.moves[segment.move], program.startOf(segment.move));
+  return interpolator.finish();
+}
+
+}  // namespace isurface

@@ -1,0 +1,72 @@
+#pragma once
+// Region re-optimisation (the loop of the paper's Figure 6): the G1 moves of a line range are
+// split into passes, each pass is fitted by an Akima spline in arc length and resampled into
+// G1 moves within a chord tolerance, and every constant speed interval gets one feed. Every
+// line outside the changed passes is kept byte for byte; new blocks carry comments naming the
+// lines they replace.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "isurface/fitting/constant_speed_intervals.h"
+#include "isurface/machine/machine.h"
+#include "isurface/surface/passes.h"
+#include "isurface/gcode/program.h"
+#include "isurface/surface/surface_mesh.h"
+#include "isurface/base/trajectory.h"
+
+namespace isurface {
+
+struct OptimizeOptions {
+  IntervalThresholds thresholds;
+  double chordTolerance = 0.002;  // mm, resampling of the spline into G1 moves
+  double maximumDeviation = 0.008; // mm, a fit that strays further from the old path is not used
+  double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
+  std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
+};
+
+struct OptimizedPass {
+  std::uint32_t firstLine = 0, lastLine = 0;        // replaced source lines
+  std::uint32_t newFirstLine = 0, newLastLine = 0;  // where their replacement stands in the output
+  std::size_t oldMoves = 0, newMoves = 0;
+  std::vector<double> intervalFeeds;                // mm/min, one per constant speed interval
+};
+
+struct OptimizeResult {
+  std::string text;                    // the new program
+  std::vector<OptimizedPass> passes;
+  LineRange newRange;                  // the region's lines in the new program
+  // Where the path was re-fitted (the intervals with curvature, not the straight runs), mm:
+  // the part of the surface the comparison looks at.
+  Vec3 fittedLower = Vec3::Zero(), fittedUpper = Vec3::Zero();
+};
+
+// `text` is the program's source, `program` its interpretation. Throws InputError when the
+// range holds no run of plain G1 moves to optimise.
+OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange lines,
+                              const Machine& machine, const OptimizeOptions& options = {});
+
+// A region's lines widened to whole passes and one more pass on each side: optimising only
+// part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
+// unchanged neighbour) inside the region. Lines outside every pass are returned unchanged.
+LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passes, LineRange lines);
+
+// What changes in a region between two runs of a program.
+struct RegionMetrics {
+  std::size_t samples = 0;
+  double time = 0;                     // s spent on the region's lines
+  double speedFluctuation = 0;         // mm/min, RMS of speed about its 100 ms moving average
+  double maxSpeedInconsistency = 0;    // mm/min, largest difference to a neighbouring pass
+  double maxJerk = 0;                  // mm/s^3
+  double maxDeviation = 0;             // um, predicted (0 without feedback)
+};
+
+// Over the surface's samples on the given lines that lie inside the box (XY, mm).
+RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
+                            const Vec3& upper);
+
+// The largest distance from any point of `a`'s polyline vertices to `b`'s polyline, both ways
+// (a Hausdorff distance over vertices), mm.
+double polylineDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
+
+}  // namespace isurface

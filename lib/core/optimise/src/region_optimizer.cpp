@@ -1,0 +1,389 @@
+#include "isurface/optimise/region_optimizer.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <string_view>
+
+#include <fmt/format.h>
+
+#include "isurface/fitting/akima_spline.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/nc/feed_plan.h"
+#include "isurface/fitting/interval_speed_plan.h"
+#include "isurface/analysis/quantities.h"
+
+namespace isurface {
+
+namespace {
+
+// The program's physical lines, each with its own line end, so unchanged ones are copied
+// byte for byte.
+std::vector<std::string_view> splitLines(const std::string& text) {
+  std::vector<std::string_view> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    const std::size_t end = text.find('\n', start);
+    const std::size_t stop = end == std::string::npos ? text.size() : end + 1;
+    lines.emplace_back(text.data() + start, stop - start);
+    start = stop;
+  }
+  return lines;
+}
+
+// A line that holds nothing but a straight feed move (G1, coordinates, feed, block number,
+// comments): it can be replaced without losing anything else it says.
+bool plainFeedLine(std::string_view line) {
+  int depth = 0;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (c == ';') break;
+    if (c == '(') ++depth;
+    if (c == ')') --depth;
+    if (depth > 0 || c == ')') continue;
+    const char u = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+    if (std::isalpha(static_cast<unsigned char>(u))) {
+      if (u == 'G') {
+        std::size_t j = i + 1;
+        while (j < line.size() && line[j] == ' ') ++j;
+        std::string number;
+        while (j < line.size() && (std::isdigit(static_cast<unsigned char>(line[j])) || line[j] == '.')) number += line[j++];
+        if (number != "1" && number != "01") return false;
+      } else if (u != 'X' && u != 'Y' && u != 'Z' && u != 'F' && u != 'N') {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
+bool mentions(const std::string& text, const char* code) {
+  std::string upper(text.size(), ' ');
+  std::transform(text.begin(), text.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
+  std::size_t at = 0;
+  const std::size_t n = std::string_view(code).size();
+  while ((at = upper.find(code, at)) != std::string::npos) {
+    const char next = at + n < upper.size() ? upper[at + n] : ' ';
+    if (!std::isdigit(static_cast<unsigned char>(next)) && next != '.') return true;
+    at += n;
+  }
+  return false;
+}
+
+// Runs of consecutive plain G1 moves in the range, split where the path turns back in XY (the
+// end of a raster pass).
+std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std::vector<std::string_view>& lines,
+                                               LineRange range) {
+  std::vector<std::vector<std::size_t>> runs;
+  std::vector<std::size_t> run;
+  auto close = [&] {
+    if (!run.empty()) runs.push_back(run);
+    run.clear();
+  };
+  for (std::size_t i = 0; i < program.moves.size(); ++i) {
+    const Move& m = program.moves[i];
+    const bool sharesLine = (i > 0 && program.moves[i - 1].line == m.line) ||
+                            (i + 1 < program.moves.size() && program.moves[i + 1].line == m.line);
+    const bool usable = m.kind == MoveKind::Linear && m.line >= range.first && m.line <= range.last &&
+                        m.line <= lines.size() && !sharesLine && !(m.flags & (kExactStop | kStopAfter)) &&
+                        plainFeedLine(lines[m.line - 1]);
+    if (!usable) {
+      close();
+      continue;
+    }
+    if (!run.empty()) {
+      const Move& previous = program.moves[run.back()];
+      const Vec3 a = (previous.end - program.startOf(run.back())).normalized();
+      const Vec3 b = (m.end - program.startOf(i)).normalized();
+      const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
+      const bool consecutive = m.line == previous.line + 1;
+      // A sharp corner (a step-over) or a move against the pass's direction ends the pass.
+      const bool corner = a.dot(b) < 0.5;
+      const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
+      if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
+    }
+    run.push_back(i);
+  }
+  close();
+  return runs;
+}
+
+// The spline of one interval as G1 points: each of its segments (data point to data point) cut
+// into equal pieces, so that the points keep the data points and are evenly spaced. A piece
+// turns the path by at most `maxTurn` (rad) and strays at most `chordTolerance` (mm) from the
+// curve: the NC then sees the smooth curvature of the spline at every junction instead of
+// corners whose size depends on how the CAM system happened to space its points.
+std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chordTolerance, double maxTurn) {
+  constexpr double kShortestPiece = 0.02;  // mm; finer pieces only multiply lines
+  constexpr int kCurvatureChecks = 8;
+  std::vector<Vec3> out;
+  if (curve.empty()) return out;
+  out.push_back(curve.segments().front().position(0));
+  for (const CubicSegment& s : curve.segments()) {
+    double curvature = 0;
+    for (int k = 0; k <= kCurvatureChecks; ++k)
+      curvature = std::max(curvature, curve.curvature(s.start + s.length * k / kCurvatureChecks));
+    double piece = s.length;
+    if (curvature > kZeroCurvature) {
+      const double chordPiece = std::sqrt(8.0 * chordTolerance / curvature);  // sagitta of a chord
+      piece = std::max(kShortestPiece, std::min(maxTurn / curvature, chordPiece));
+    }
+    const int count = std::max(1, static_cast<int>(std::ceil(s.length / piece - 1e-9)));
+    for (int k = 1; k <= count; ++k) out.push_back(s.position(s.length * k / count));
+  }
+  return out;
+}
+
+// The new G1 points of one interval. An Akima spline across a jump in point spacing (a long
+// straight move met by short ones) swings away from the path, so the points are fitted in runs
+// of similar spacing (ratio of neighbouring chords within the distance-ratio threshold); a run
+// whose fit strays from its points by more than `maximumDeviation` keeps its points.
+std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options) {
+  std::vector<Vec3> out = {own.front()};
+  const double ratio = options.thresholds.distanceRatio;
+  std::size_t start = 0;
+  for (std::size_t i = 1; i < own.size(); ++i) {
+    const bool last = i + 1 == own.size();
+    bool jump = false;
+    if (!last) {
+      const double before = (own[i] - own[i - 1]).norm(), after = (own[i + 1] - own[i]).norm();
+      jump = after > ratio * before || before > ratio * after;
+    }
+    if (!jump && !last) continue;
+    const std::vector<Vec3> run(own.begin() + start, own.begin() + i + 1);
+    std::vector<Vec3> piece;
+    if (run.size() >= 3) piece = evenlySubdivided(fitAkimaSpline(run), options.chordTolerance, options.maxTurn);
+    if (piece.size() < 2 || polylineDistance(piece, run) > options.maximumDeviation) piece = run;
+    out.insert(out.end(), piece.begin() + 1, piece.end());
+    start = i;
+  }
+  return out;
+}
+
+// One feed per constant speed interval: the paper's planned speed from the interval's average
+// curvature (interval_speed_plan.h), but no more than the NC allows over most of the new
+// points (the median of its limits), so that the machine holds it rather than braking and
+// speeding up at every point.
+std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
+                                  const IntervalPartition& partition, double feed, const Machine& machine) {
+  Program probe;
+  probe.start = points.front();
+  for (std::size_t k = 1; k < points.size(); ++k) {
+    Move m;
+    m.kind = MoveKind::Linear;
+    m.end = points[k];
+    m.feed = static_cast<float>(feed);
+    m.line = static_cast<std::uint32_t>(k);
+    probe.moves.push_back(m);
+  }
+  const FeedPlan plan = planFeed(probe, machine);
+  // The limit at each new point and of each new segment, mm/s. The corners at an interval's
+  // ends belong to the planner (it slows there whatever the feed): only what lies inside an
+  // interval sets its feed.
+  std::vector<double> atPoint(points.size(), feed / 60.0), ofSegment(points.size(), feed / 60.0);
+  for (const PlannedSegment& s : plan.segments) {
+    ofSegment[s.move] = std::min(feed / 60.0, s.cap);  // segment k runs from point k to k + 1
+    if (s.move > 0) atPoint[s.move] = std::min(feed / 60.0, s.entryLimit);
+  }
+  const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
+  std::vector<double> feeds;
+  for (std::size_t k = 0; k < partition.intervals.size(); ++k) {
+    const ConstantSpeedInterval& interval = partition.intervals[k];
+    const std::size_t from = dataIndex[interval.first], to = dataIndex[interval.last];
+    std::vector<double> limits(ofSegment.begin() + from, ofSegment.begin() + to);
+    for (std::size_t k = from + 1; k < to; ++k) limits.push_back(atPoint[k]);
+    std::sort(limits.begin(), limits.end());
+    const double v = std::min(limits.empty() ? feed / 60.0 : limits[limits.size() / 2],
+                              planned[k].plannedFeedMmMin / 60.0);
+    feeds.push_back(std::clamp(std::floor(v * 60.0), 0.2 * feed, feed));
+  }
+  return feeds;
+}
+
+}  // namespace
+
+OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange range,
+                              const Machine& machine, const OptimizeOptions& options) {
+  if (mentions(text, "G91")) throw InputError(Diagnostic{program.source, 0, 0, "incremental programs (G91) are not re-optimised"});
+  if (mentions(text, "G20")) throw InputError(Diagnostic{program.source, 0, 0, "inch programs (G20) are not re-optimised"});
+  if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
+  const std::vector<std::string_view> lines = splitLines(text);
+  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range);
+  runs.erase(std::remove_if(runs.begin(), runs.end(), [&](const auto& r) { return r.size() < options.minimumMoves; }),
+             runs.end());
+  if (runs.empty())
+    throw InputError(Diagnostic{program.source, range.first, 0,
+                                fmt::format("lines {}-{} hold no run of {} or more plain G1 moves to re-optimise",
+                                            range.first, range.last, options.minimumMoves)});
+  OptimizeResult result;
+  bool haveBox = false;
+  std::uint32_t written = 0;  // lines of the output so far
+  std::size_t nextSource = 1; // next source line to copy
+  const char* lineEnd = text.find("\r\n") != std::string::npos ? "\r\n" : "\n";
+  auto copyUntil = [&](std::size_t lastLine) {
+    for (; nextSource <= lastLine && nextSource <= lines.size(); ++nextSource) {
+      result.text.append(lines[nextSource - 1]);
+      ++written;
+    }
+  };
+  for (const auto& run : runs) {
+    const Move& first = program.moves[run.front()];
+    const Move& last = program.moves[run.back()];
+    std::vector<Vec3> points = {program.startOf(run.front())};
+    for (std::size_t i : run) points.push_back(program.moves[i].end);
+    const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
+    // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
+    // interval): a spline across an interval's boundary, where spacing or curvature jumps,
+    // would swing away from the path. An interval whose fit strays from its points by more
+    // than half the tolerance of the check keeps its points.
+    std::vector<Vec3> fitted = {points.front()};
+    std::vector<std::size_t> dataIndex(points.size(), 0);
+    std::vector<std::size_t> intervalEnd;  // index in `fitted` of each interval's last point
+    for (const ConstantSpeedInterval& interval : partition.intervals) {
+      const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
+      const std::vector<Vec3> piece = refitInterval(own, options);
+      const std::size_t offset = fitted.size() - 1;
+      fitted.insert(fitted.end(), piece.begin() + 1, piece.end());
+      for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
+        while (j + 1 < piece.size() && (piece[j] - points[i]).norm() > 1e-9) ++j;
+        dataIndex[i] = offset + j;
+      }
+      intervalEnd.push_back(fitted.size() - 1);
+      // Dense, curved intervals are the transition the region is about, not its long straight runs.
+      if (own.size() >= 3 && interval.averageCurvature > 1e-3 && interval.length / (own.size() - 1) < 1.0) {
+        for (const Vec3& p : own) {
+          if (!haveBox) result.fittedLower = result.fittedUpper = p, haveBox = true;
+          result.fittedLower = result.fittedLower.cwiseMin(p);
+          result.fittedUpper = result.fittedUpper.cwiseMax(p);
+        }
+      }
+    }
+    const double feed = first.feed;
+    const std::vector<double> feeds = intervalFeeds(fitted, dataIndex, partition, feed, machine);
+    copyUntil(first.line - 1);
+    OptimizedPass pass;
+    pass.firstLine = first.line;
+    pass.lastLine = last.line;
+    pass.oldMoves = run.size();
+    pass.intervalFeeds = feeds;
+    std::string feedList;
+    for (double f : feeds) feedList += fmt::format(" F{:.0f}", f);
+    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: Akima spline in arc length, constant speed intervals{}){}",
+                               first.line, last.line, feedList, lineEnd);
+    pass.newFirstLine = ++written;
+    double current = -1;
+    std::size_t interval = 0;
+    for (std::size_t k = 1; k < fitted.size(); ++k) {
+      while (interval + 1 < intervalEnd.size() && k > intervalEnd[interval]) ++interval;
+      const double f = feeds.empty() ? feed : feeds[interval];
+      std::string block = fmt::format("G1 X{:.4f} Y{:.4f} Z{:.4f}", fitted[k].x(), fitted[k].y(), fitted[k].z());
+      if (f != current) block += fmt::format(" F{:.0f}", f), current = f;
+      result.text += block + lineEnd;
+      ++written;
+      ++pass.newMoves;
+    }
+    // The lines after keep the feed they had.
+    if (current != feed) {
+      result.text += fmt::format("F{:.0f}{}", feed, lineEnd);
+      ++written;
+    }
+    pass.newLastLine = written;
+    nextSource = last.line + 1;
+    result.passes.push_back(pass);
+  }
+  copyUntil(lines.size());
+  // Lines of the range before its first pass keep their numbers; those after its last pass
+  // moved by what the passes added.
+  const OptimizedPass& lastPass = result.passes.back();
+  result.newRange.first = std::min(range.first, result.passes.front().newFirstLine);
+  result.newRange.last = range.last > lastPass.lastLine
+                             ? static_cast<std::uint32_t>(range.last + (lastPass.newLastLine - lastPass.lastLine))
+                             : lastPass.newLastLine;
+  return result;
+}
+
+LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passSet, LineRange lines) {
+  const std::vector<Pass>& passes = passSet.passes;
+  auto lineRangeOf = [&](const Pass& p) {
+    LineRange r{UINT32_MAX, 0};
+    for (std::size_t i = p.begin; i < p.end; ++i)
+      if (samples.line[i] != 0) r.first = std::min(r.first, samples.line[i]), r.last = std::max(r.last, samples.line[i]);
+    return r;
+  };
+  std::size_t first = passes.size(), last = 0;
+  for (std::size_t k = 0; k < passes.size(); ++k) {
+    const LineRange r = lineRangeOf(passes[k]);
+    if (r.last < lines.first || r.first > lines.last) continue;
+    first = std::min(first, k), last = std::max(last, k);
+  }
+  if (first > last) return lines;
+  const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
+  const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
+  return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
+}
+
+RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
+                            const Vec3& upper) {
+  RegionMetrics m;
+  const std::vector<double> speed = sampleQuantity(Quantity::Speed, samples);
+  const std::vector<double> jerk = sampleQuantity(Quantity::Jerk, samples);
+  const std::size_t n = samples.size();
+  auto inRegion = [&](std::size_t i) {
+    return samples.line[i] >= lines.first && samples.line[i] <= lines.last && samples.x[i] >= lower.x() &&
+           samples.x[i] <= upper.x() && samples.y[i] >= lower.y() && samples.y[i] <= upper.y();
+  };
+  const std::size_t half = static_cast<std::size_t>(std::lround(0.05 / samples.cycle));  // 100 ms window
+  double sumSquares = 0;
+  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
+  std::vector<float> deviation;
+  if (samples.hasFeedback()) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
+  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
+    const std::size_t i = mesh.vertexSample[v];
+    if (!inRegion(i) || !std::isfinite(speed[i])) continue;
+    ++m.samples;
+    const std::size_t a = i > half ? i - half : 0, b = std::min(n - 1, i + half);
+    double mean = 0;
+    std::size_t count = 0;
+    for (std::size_t k = a; k <= b; ++k)
+      if (std::isfinite(speed[k])) mean += speed[k], ++count;
+    mean /= std::max<std::size_t>(count, 1);
+    sumSquares += (speed[i] - mean) * (speed[i] - mean);
+    if (std::isfinite(jerk[i])) m.maxJerk = std::max(m.maxJerk, jerk[i]);
+    if (std::isfinite(inconsistency[v])) m.maxSpeedInconsistency = std::max<double>(m.maxSpeedInconsistency, inconsistency[v]);
+    if (!deviation.empty() && std::isfinite(deviation[v])) m.maxDeviation = std::max<double>(m.maxDeviation, std::abs(deviation[v]));
+  }
+  m.time = m.samples * samples.cycle;
+  m.speedFluctuation = m.samples ? std::sqrt(sumSquares / m.samples) : 0;
+  return m;
+}
+
+double polylineDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
+  auto nearest = [](const Vec3& p, const std::vector<Vec3>& to, std::size_t lo, std::size_t hi, std::size_t& at) {
+    double best = INFINITY;
+    for (std::size_t k = lo; k + 1 < hi; ++k) {
+      const Vec3 d = to[k + 1] - to[k];
+      const double l2 = d.squaredNorm();
+      const double t = l2 > 0 ? std::clamp((p - to[k]).dot(d) / l2, 0.0, 1.0) : 0.0;
+      const double dist = (to[k] + t * d - p).norm();
+      if (dist < best) best = dist, at = k;
+    }
+    return to.size() == 1 ? (to[0] - p).norm() : best;
+  };
+  auto oneWay = [&](const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
+    double worst = 0;
+    std::size_t near = 0;  // both polylines run the same way: search around the last match first
+    for (const Vec3& p : from) {
+      std::size_t at = near;
+      double best = nearest(p, to, near > 50 ? near - 50 : 0, std::min(to.size(), near + 500), at);
+      if (best > 1e-3) best = nearest(p, to, 0, to.size(), at);  // lost the way: look everywhere
+      near = at;
+      worst = std::max(worst, best);
+    }
+    return worst;
+  };
+  if (a.empty() || b.empty()) return 0;
+  return std::max(oneWay(a, b), oneWay(b, a));
+}
+
+}  // namespace isurface

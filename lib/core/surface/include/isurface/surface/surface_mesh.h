@@ -1,0 +1,38 @@
+#pragma once
+// The cutter-location surface: triangles between each cutting pass and its neighbour, made by
+// a strip that walks both passes together. Vertices are samples (every `stride`-th one).
+#include <array>
+#include <cstdint>
+#include <limits>
+#include <vector>
+
+#include "isurface/surface/passes.h"
+
+namespace isurface {
+
+constexpr std::uint32_t kNoVertex = std::numeric_limits<std::uint32_t>::max();
+
+struct SurfaceMesh {
+  std::vector<std::uint32_t> vertexSample;              // sample index of each vertex
+  std::vector<std::uint32_t> vertexPass;                // pass index of each vertex
+  std::vector<std::array<std::uint32_t, 3>> triangles;  // vertex indices, counter-clockwise seen from +Z where possible
+  // Nearest vertex on the previous / next pass (the one the strip matched), kNoVertex if none.
+  std::vector<std::uint32_t> previousPassNeighbour, nextPassNeighbour;
+  std::vector<std::size_t> passFirstVertex;             // first vertex of each pass, plus the end
+};
+
+struct MeshOptions {
+  double gapLimit = 2.0;    // mm; a triangle with an edge between passes longer than this is not made
+  std::size_t stride = 1;   // use every stride-th sample of a pass (the last one always)
+  bool feedback = false;    // build on the feedback positions instead of the commanded ones
+};
+
+SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options = {});
+
+// Vertex positions of a mesh, commanded or feedback, mm.
+std::vector<Vec3> meshPositions(const Trajectory& samples, const SurfaceMesh& mesh, bool feedback = false);
+
+// Unit normals per vertex, area-weighted from the adjacent triangles (zero where none).
+std::vector<Vec3> vertexNormals(const std::vector<Vec3>& positions, const SurfaceMesh& mesh);
+
+}  // namespace isurface

@@ -1,0 +1,295 @@
+// The cutter-location surface: a triangle strip between each pass and the next.
+#include "isurface/surface/surface_mesh.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "isurface/base/diagnostic.h"
+
+namespace isurface {
+
+namespace {
+
+// Positions of one kind (commanded or feedback) read in place from the sample arrays.
+struct PositionSource {
+  const double *x, *y, *z;
+  Vec3 at(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
+  bool finiteAt(std::size_t i) const {
+    const double v = (x[i] - x[i]) + (y[i] - y[i]) + (z[i] - z[i]);
+    return v == 0;
+  }
+};
+
+PositionSource positionSource(const Trajectory& s, bool feedback) {
+  if (!feedback) return {s.x.data(), s.y.data(), s.z.data()};
+  if (!s.hasFeedback())
+    throw InputError(Diagnostic{s.source, 0, 0, "no feedback channels (fb_x, fb_y, fb_z) to build the feedback surface on"});
+  return {s.fbX.data(), s.fbY.data(), s.fbZ.data()};
+}
+
+// Two vertices closer than this are one point (mm).
+constexpr double kSamePoint = 1e-6;
+
+// Every stride-th finite sample of each pass and its last one; a sample on the point of the
+// vertex before it (standstill) adds nothing.
+void pickVertices(const PositionSource& p, const PassSet& passes, std::size_t stride, SurfaceMesh& mesh) {
+  std::size_t estimate = 0;
+  for (const Pass& pass : passes.passes) estimate += pass.size() / stride + 2;
+  mesh.vertexSample.reserve(estimate);
+  mesh.vertexPass.reserve(estimate);
+  mesh.passFirstVertex.reserve(passes.passes.size() + 1);
+  const double same2 = kSamePoint * kSamePoint;
+  for (std::size_t k = 0; k < passes.passes.size(); ++k) {
+    const Pass& pass = passes.passes[k];
+    const std::size_t first = mesh.vertexSample.size();
+    mesh.passFirstVertex.push_back(first);
+    const auto add = [&](std::size_t i, bool last) {
+      if (!p.finiteAt(i)) return;
+      if (mesh.vertexSample.size() > first) {
+        const std::uint32_t previous = mesh.vertexSample.back();
+        if ((p.at(i) - p.at(previous)).squaredNorm() <= same2) {
+          // The pass's last sample stands for a standstill at its end.
+          if (last && mesh.vertexSample.size() > first + 1) mesh.vertexSample.back() = static_cast<std::uint32_t>(i);
+          return;
+        }
+      }
+      mesh.vertexSample.push_back(static_cast<std::uint32_t>(i));
+      mesh.vertexPass.push_back(static_cast<std::uint32_t>(k));
+    };
+    if (pass.end <= pass.begin) continue;
+    std::size_t i = pass.begin;
+    for (; i + 1 < pass.end; i += stride) add(i, false);
+    // A loop that ends nearer its first vertex than the vertex before may end a fraction of a
+    // sample into the link to the next loop: its first vertex closes it instead.
+    const std::size_t last = pass.end - 1;
+    if (passes.pattern == PathPattern::ContourParallel && mesh.vertexSample.size() >= first + 3 && p.finiteAt(last)) {
+      const Vec3 end = p.at(last);
+      if ((end - p.at(mesh.vertexSample[first])).norm() < 0.5 * (end - p.at(mesh.vertexSample.back())).norm()) continue;
+    }
+    add(last, true);
+  }
+  mesh.passFirstVertex.push_back(mesh.vertexSample.size());
+}
+
+// Walk order over one pass's vertices: open (first to last, or last to first) or closed (a
+// cycle starting anywhere, either way round).
+struct PassWalk {
+  std::uint32_t first = 0;  // first vertex of the pass
+  std::size_t count = 0;    // vertices in the walk's cycle (closed) or line (open)
+  std::size_t offset = 0;   // closed: where the walk starts
+  bool reversed = false;
+  bool closed = false;
+  std::size_t steps() const { return closed ? count : count - 1; }
+  std::uint32_t vertex(std::size_t i) const {
+    std::size_t k = closed ? (offset + i) % count : i;
+    if (reversed) k = closed ? (count - k) % count : count - 1 - k;
+    return first + static_cast<std::uint32_t>(k);
+  }
+};
+
+class StripBuilder {
+ public:
+  StripBuilder(const PositionSource& p, const SurfaceMesh& mesh, double gapLimit, PathPattern pattern,
+               std::vector<float>& bestNext, std::vector<float>& bestPrevious)
+      : p_(p), mesh_(mesh), gap2_(gapLimit * gapLimit), gapLimit_(gapLimit), pattern_(pattern),
+        bestNext_(bestNext), bestPrevious_(bestPrevious) {}
+
+  // Triangles between pass k (A) and pass k + 1 (B), appended to `out`. Returns how pass k
+  // + 1's own edges ended up directed (+1 forward, -1 backward, 0 no triangles) for the next
+  // strip to follow on near-vertical walls; `previousDirection` is that of this strip's A.
+  int build(std::size_t k, int previousDirection, SurfaceMesh& out);
+
+ private:
+  Vec3 pos(std::uint32_t v) const { return p_.at(mesh_.vertexSample[v]); }
+  double d2(std::uint32_t a, std::uint32_t b) const { return (pos(a) - pos(b)).squaredNorm(); }
+  std::size_t nearest(std::uint32_t first, std::size_t count, const Vec3& to, double* distance2 = nullptr) const;
+  bool closedPass(std::uint32_t first, std::size_t count, std::uint32_t otherFirst, std::size_t otherCount) const;
+  void match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out);
+
+  const PositionSource& p_;
+  const SurfaceMesh& mesh_;
+  double gap2_, gapLimit_;
+  PathPattern pattern_;
+  std::vector<float>& bestNext_;
+  std::vector<float>& bestPrevious_;
+};
+
+std::size_t StripBuilder::nearest(std::uint32_t first, std::size_t count, const Vec3& to, double* distance2) const {
+  std::size_t best = 0;
+  double bestD = std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < count; ++i) {
+    const double d = (pos(first + static_cast<std::uint32_t>(i)) - to).squaredNorm();
+    if (d < bestD) bestD = d, best = i;
+  }
+  if (distance2 != nullptr) *distance2 = bestD;
+  return best;
+}
+
+// A pass is a closed loop for this strip when its ends meet much closer than the other pass
+// lies (a spiral's revolution ends one step-over from its start, a loop at its start).
+bool StripBuilder::closedPass(std::uint32_t first, std::size_t count, std::uint32_t otherFirst,
+                              std::size_t otherCount) const {
+  if (pattern_ != PathPattern::ContourParallel || count < 3) return false;
+  const double ends = (pos(first) - pos(first + static_cast<std::uint32_t>(count - 1))).norm();
+  double across2;
+  nearest(otherFirst, otherCount, pos(first), &across2);
+  return ends <= gapLimit_ && ends < 0.5 * std::sqrt(across2);
+}
+
+void StripBuilder::match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out) {
+  if (dist2 > gap2_) return;
+  const float d = static_cast<float>(dist2);
+  if (d < bestNext_[a]) bestNext_[a] = d, out.nextPassNeighbour[a] = b;
+  if (d < bestPrevious_[b]) bestPrevious_[b] = d, out.previousPassNeighbour[b] = a;
+}
+
+int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) {
+  const std::uint32_t firstA = static_cast<std::uint32_t>(mesh_.passFirstVertex[k]);
+  const std::uint32_t firstB = static_cast<std::uint32_t>(mesh_.passFirstVertex[k + 1]);
+  std::size_t countA = mesh_.passFirstVertex[k + 1] - firstA;
+  std::size_t countB = mesh_.passFirstVertex[k + 2] - firstB;
+  if (countA < 2 || countB < 2) return 0;
+
+  PassWalk a{firstA, countA}, b{firstB, countB};
+  if (closedPass(firstA, countA, firstB, countB) && closedPass(firstB, countB, firstA, countA)) {
+    // A loop's last vertex on its first point adds no edge to the cycle.
+    const auto cycleCount = [&](std::uint32_t first, std::size_t count) {
+      return d2(first, first + static_cast<std::uint32_t>(count - 1)) <= kSamePoint * kSamePoint ? count - 1 : count;
+    };
+    a.count = cycleCount(firstA, countA);
+    b.count = cycleCount(firstB, countB);
+    a.closed = b.closed = true;
+    // Start at A's first vertex and the nearest of B; B runs the same way round as A when A's
+    // vertex a quarter along is nearest a vertex shortly after that one.
+    const std::size_t start = nearest(firstB, b.count, pos(firstA));
+    const std::size_t quarter = nearest(firstB, b.count, pos(firstA + static_cast<std::uint32_t>(a.count / 4)));
+    const std::size_t ahead = (quarter + b.count - start) % b.count;
+    b.reversed = ahead > b.count / 2;
+    b.offset = b.reversed ? (b.count - start) % b.count : start;
+  } else {
+    const Vec3 a0 = pos(firstA), a1 = pos(firstA + static_cast<std::uint32_t>(countA - 1));
+    const Vec3 b0 = pos(firstB), b1 = pos(firstB + static_cast<std::uint32_t>(countB - 1));
+    b.reversed = (a0 - b1).norm() + (a1 - b0).norm() < (a0 - b0).norm() + (a1 - b1).norm();
+  }
+
+  const std::size_t triangleStart = out.triangles.size();
+  const std::size_t stepsA = a.steps(), stepsB = b.steps();
+  std::size_t i = 0, j = 0;
+  std::uint32_t va = a.vertex(0), vb = b.vertex(0);
+  double across = d2(va, vb);  // squared length of the current cross-pass edge
+  match(va, vb, across, out);
+  Vec3 normal = Vec3::Zero();
+  double areaSum = 0;
+  while (i < stepsA || j < stepsB) {
+    const std::uint32_t nextA = i < stepsA ? a.vertex(i + 1) : va;
+    const std::uint32_t nextB = j < stepsB ? b.vertex(j + 1) : vb;
+    const double viaA = i < stepsA ? d2(nextA, vb) : std::numeric_limits<double>::infinity();
+    const double viaB = j < stepsB ? d2(va, nextB) : std::numeric_limits<double>::infinity();
+    std::array<std::uint32_t, 3> t;
+    double other;
+    // The pass with steps left is taken when the other has none: comparing the distances alone
+    // would not end when both are infinite (coordinates near the double's limit) or NaN.
+    if (j >= stepsB || (i < stepsA && viaA <= viaB)) {
+      t = {va, nextA, vb};
+      other = viaA;
+      va = nextA;
+      ++i;
+    } else {
+      t = {va, nextB, vb};
+      other = viaB;
+      vb = nextB;
+      ++j;
+    }
+    match(va, vb, other, out);
+    if (across <= gap2_ && other <= gap2_) {
+      const Vec3 p0 = pos(t[0]), p1 = pos(t[1]), p2 = pos(t[2]);
+      const Vec3 n = (p1 - p0).cross(p2 - p0);
+      const double area2 = n.squaredNorm();
+      const double scale = std::max({(p1 - p0).squaredNorm(), (p2 - p0).squaredNorm(), (p2 - p1).squaredNorm()});
+      if (area2 > 1e-24 * scale * scale && area2 > 0) {
+        out.triangles.push_back(t);
+        normal += n;
+        areaSum += std::sqrt(area2);
+      }
+    }
+    across = other;
+  }
+  if (out.triangles.size() == triangleStart) return 0;
+
+  // Orientation: as made, A's edges run forward and B's against the walk. Face +Z; a strip
+  // that is mostly a wall follows the strip before it through their shared pass, or faces away
+  // from the loop it goes round.
+  bool flip;
+  if (std::fabs(normal.z()) >= 0.5 * areaSum || previousDirection == 0) {
+    if (std::fabs(normal.z()) >= 0.5 * areaSum) {
+      flip = normal.z() < 0;
+    } else {
+      // Away from the centroid of A's vertices.
+      Vec3 centre = Vec3::Zero();
+      for (std::size_t q = 0; q < countA; ++q) centre += pos(firstA + static_cast<std::uint32_t>(q));
+      centre /= double(countA);
+      double outward = 0;
+      for (std::size_t q = triangleStart; q < out.triangles.size(); ++q) {
+        const auto& tri = out.triangles[q];
+        const Vec3 p0 = pos(tri[0]), p1 = pos(tri[1]), p2 = pos(tri[2]);
+        const Vec3 c = (p0 + p1 + p2) / 3.0 - centre;
+        outward += (p1 - p0).cross(p2 - p0).dot(Vec3(c.x(), c.y(), 0));
+      }
+      flip = outward < 0;
+    }
+  } else {
+    // A's edges must run against the way the strip before ran them.
+    flip = previousDirection == +1;
+  }
+  if (flip)
+    for (std::size_t q = triangleStart; q < out.triangles.size(); ++q) std::swap(out.triangles[q][1], out.triangles[q][2]);
+  // B's own edges: against the walk as made; the walk runs B forward unless reversed.
+  int directionB = b.reversed ? +1 : -1;
+  if (flip) directionB = -directionB;
+  return directionB;
+}
+
+}  // namespace
+
+SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options) {
+  const PositionSource p = positionSource(samples, options.feedback);
+  SurfaceMesh mesh;
+  pickVertices(p, passes, std::max<std::size_t>(1, options.stride), mesh);
+  const std::size_t vertices = mesh.vertexSample.size();
+  mesh.previousPassNeighbour.assign(vertices, kNoVertex);
+  mesh.nextPassNeighbour.assign(vertices, kNoVertex);
+  mesh.triangles.reserve(2 * vertices);
+  std::vector<float> bestNext(vertices, std::numeric_limits<float>::infinity());
+  std::vector<float> bestPrevious(vertices, std::numeric_limits<float>::infinity());
+  StripBuilder strips(p, mesh, options.gapLimit, passes.pattern, bestNext, bestPrevious);
+  int direction = 0;
+  for (std::size_t k = 0; k + 1 < passes.passes.size(); ++k) direction = strips.build(k, direction, mesh);
+  return mesh;
+}
+
+std::vector<Vec3> meshPositions(const Trajectory& samples, const SurfaceMesh& mesh, bool feedback) {
+  const PositionSource p = positionSource(samples, feedback);
+  std::vector<Vec3> out(mesh.vertexSample.size());
+  for (std::size_t v = 0; v < out.size(); ++v) out[v] = p.at(mesh.vertexSample[v]);
+  return out;
+}
+
+std::vector<Vec3> vertexNormals(const std::vector<Vec3>& positions, const SurfaceMesh& mesh) {
+  std::vector<Vec3> normals(positions.size(), Vec3::Zero());
+  for (const auto& t : mesh.triangles) {
+    // The cross product's length is twice the area: summing it weights by area.
+    const Vec3 n = (positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]);
+    if (!std::isfinite(n.squaredNorm())) continue;
+    normals[t[0]] += n;
+    normals[t[1]] += n;
+    normals[t[2]] += n;
+  }
+  for (Vec3& n : normals) {
+    const double l = n.norm();
+    n = l > 0 ? Vec3(n / l) : Vec3(Vec3::Zero());
+  }
+  return normals;
+}
+
+}  // namespace isurface

@@ -1,0 +1,60 @@
+#include "isurface/vis/offscreen_render.h"
+
+#include <vtkCallbackCommand.h>
+#include <vtkGenericOpenGLRenderWindow.h>
+#include <vtkPNGWriter.h>
+#include <vtkUnsignedCharArray.h>
+#include <vtkWindowToImageFilter.h>
+
+#include <chrono>
+#include <string_view>
+
+#include "isurface/io/atomic_file.h"
+#include "isurface/vis/quality_scene.h"
+#include "isurface/vis/osmesa_context.h"
+
+namespace isurface::vis {
+
+double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int height, const std::string& path) {
+  const auto start = std::chrono::steady_clock::now();
+  OsMesaContext context(width, height);
+  auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
+  window->SetSize(width, height);
+  // Multisampling makes llvmpipe several times slower for little gain on a map.
+  window->SetMultiSamples(0);
+  window->SetOffScreenRendering(1);
+  auto makeCurrent = vtkSmartPointer<vtkCallbackCommand>::New();
+  makeCurrent->SetClientData(&context);
+  makeCurrent->SetCallback([](vtkObject*, unsigned long, void* client, void*) {
+    auto* c = static_cast<OsMesaContext*>(client);
+    if (!c->isCurrent()) c->makeCurrent();
+  });
+  auto isCurrent = vtkSmartPointer<vtkCallbackCommand>::New();
+  isCurrent->SetClientData(&context);
+  isCurrent->SetCallback([](vtkObject*, unsigned long, void* client, void* answer) {
+    *static_cast<bool*>(answer) = static_cast<OsMesaContext*>(client)->isCurrent();
+  });
+  window->AddObserver(vtkCommand::WindowMakeCurrentEvent, makeCurrent);
+  window->AddObserver(vtkCommand::WindowIsCurrentEvent, isCurrent);
+  window->InitializeFromCurrentContext();
+  scene.attachTo(window);
+  scene.syncAxes();
+  window->Render();
+
+  auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
+  grab->SetInput(window);
+  grab->ShouldRerenderOff();
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputConnection(grab->GetOutputPort());
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes->GetPointer(0)),
+                                             static_cast<std::size_t>(bytes->GetNumberOfValues())));
+  window->Finalize();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace isurface::vis

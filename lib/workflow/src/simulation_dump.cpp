@@ -1,0 +1,92 @@
+// Simulating into a Biip dump whose metadata names the program and the machine.
+#include "isurface/workflow/simulation_dump.h"
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+
+#include "isurface/io/biip.h"
+
+namespace isurface {
+
+namespace {
+
+class BiipSink : public SampleSink {
+ public:
+  explicit BiipSink(BiipWriter& writer) : writer_(writer) {}
+  void consume(const SimSample* samples, std::size_t count) override {
+    for (std::size_t i = 0; i < count; ++i) writer_.append(&samples[i]);
+  }
+
+ private:
+  BiipWriter& writer_;
+};
+
+nlohmann::json machineJson(const Machine& m) {
+  nlohmann::json axes = nlohmann::json::object();
+  const char* names[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i) {
+    const AxisLimits& a = m.axes[i];
+    axes[names[i]] = {{"max_velocity_mm_min", a.maxVelocity * 60},
+                      {"max_acceleration_mm_s2", a.maxAcceleration},
+                      {"max_jerk_mm_s3", a.maxJerk},
+                      {"position_gain_1_s", a.positionGain},
+                      {"velocity_feed_forward", a.velocityFeedForward},
+                      {"velocity_loop_time_constant_s", a.velocityLoopTimeConstant}};
+  }
+  return {{"name", m.name},
+          {"cycle_s", m.cycle},
+          {"rapid_mm_min", m.rapidVelocity * 60},
+          {"chord_tolerance_mm", m.chordTolerance},
+          {"axes", axes}};
+}
+
+}  // namespace
+
+std::vector<BiipChannel> simulationChannels() {
+  std::vector<BiipChannel> channels = {
+      {"line", BiipType::U32, offsetof(SimSample, line)}, {"block", BiipType::U32, offsetof(SimSample, block)},
+      {"x", BiipType::F64, offsetof(SimSample, x)},       {"y", BiipType::F64, offsetof(SimSample, y)},
+      {"z", BiipType::F64, offsetof(SimSample, z)},       {"fb_x", BiipType::F64, offsetof(SimSample, fbX)},
+      {"fb_y", BiipType::F64, offsetof(SimSample, fbY)},  {"fb_z", BiipType::F64, offsetof(SimSample, fbZ)},
+      {"feed", BiipType::F64, offsetof(SimSample, feed)}};
+  return channels;
+}
+
+namespace {
+
+std::string simulationMetadata(const std::string& source, const Machine& machine) {
+  const nlohmann::json meta = {{"source", source},
+                               {"units", "mm"},
+                               {"writer", "isurface-cli 0.1.0 simulate"},
+                               {"coordinates", "workpiece"},
+                               {"machine", machineJson(machine)}};
+  return meta.dump();
+}
+
+}  // namespace
+
+SimulationReport simulateToBiip(const Program& program, const Machine& machine, const std::string& path,
+                                const ProgressCallback& progress) {
+  BiipWriter writer(path, simulationChannels(), machine.cycle, simulationMetadata(program.source, machine));
+  BiipSink sink(writer);
+  const SimulationReport report = simulate(program, machine, sink, progress);
+  writer.commit();
+  return report;
+}
+
+StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const Machine& machine,
+                                           const std::string& biipPath, const InterpreterOptions& options) {
+  BiipWriter writer(biipPath, simulationChannels(), machine.cycle, simulationMetadata(gcodePath, machine));
+  BiipSink sink(writer);
+  StreamingSimulation simulation(machine, options.startPosition, gcodePath, sink);
+  StreamedSimulation result;
+  result.interpretation = interpretGcodeFileStream(gcodePath, simulation, options);
+  if (!result.interpretation.ok()) return result;  // the writer removes its temporary file
+  result.report = simulation.finish();
+  result.largestWindow = simulation.planner().largestHeld();
+  result.forcedCommits = simulation.planner().forcedCommits();
+  writer.commit();
+  return result;
+}
+
+}  // namespace isurface

@@ -1,0 +1,197 @@
+// Settings kept between runs: where they live, round trips, and tolerance of damaged files.
+#include <gtest/gtest.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <string>
+
+#include "isurface/app_model/settings.h"
+#include "test_support.h"
+
+using namespace isurface::app_model;
+using namespace isurface::test;
+
+namespace {
+
+// Sets (or unsets) an environment variable for the scope of a test.
+class ScopedEnv {
+ public:
+  ScopedEnv(const char* name, const char* value) : name_(name) {
+    if (const char* old = std::getenv(name)) old_ = old;
+    if (value)
+      setenv(name, value, 1);
+    else
+      unsetenv(name);
+  }
+  ~ScopedEnv() {
+    if (old_)
+      setenv(name_, old_->c_str(), 1);
+    else
+      unsetenv(name_);
+  }
+
+ private:
+  const char* name_;
+  std::optional<std::string> old_;
+};
+
+std::string freshFolder(const std::string& name) {
+  const std::filesystem::path folder = scratchDir() / name;
+  std::filesystem::remove_all(folder);
+  return folder.string();
+}
+
+void writeText(const std::string& path, const std::string& text) {
+  std::filesystem::create_directories(std::filesystem::path(path).parent_path());
+  std::ofstream(path, std::ios::binary) << text;
+}
+
+void expectDefaults(const Settings& s) {
+  const Settings defaults;
+  EXPECT_TRUE(s.recentFiles.empty());
+  EXPECT_EQ(s.quantity, defaults.quantity);
+  EXPECT_EQ(s.colorMap, defaults.colorMap);
+  EXPECT_EQ(s.windowWidth, defaults.windowWidth);
+  EXPECT_EQ(s.windowHeight, defaults.windowHeight);
+}
+
+}  // namespace
+
+TEST(settings, PathFollowsXdgConfigHome) {
+  ScopedEnv xdg("XDG_CONFIG_HOME", "/tmp/somewhere/config");
+  EXPECT_EQ(settingsPath(), "/tmp/somewhere/config/isurface/settings.json");
+}
+
+TEST(settings, PathFallsBackToHomeConfig) {
+  ScopedEnv home("HOME", "/home/tester");
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", nullptr);
+    EXPECT_EQ(settingsPath(), "/home/tester/.config/isurface/settings.json");
+  }
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", "");
+    EXPECT_EQ(settingsPath(), "/home/tester/.config/isurface/settings.json");
+  }
+  {
+    ScopedEnv xdg("XDG_CONFIG_HOME", "relative/config");  // ignored, as the XDG rules say
+    EXPECT_EQ(settingsPath(), "/home/tester/.config/isurface/settings.json");
+  }
+}
+
+TEST(settings, NoHomeMeansNothingIsSaved) {
+  ScopedEnv home("HOME", nullptr);
+  ScopedEnv xdg("XDG_CONFIG_HOME", nullptr);
+  EXPECT_EQ(settingsPath(), "");
+  expectDefaults(loadSettings());
+  EXPECT_FALSE(saveSettings(Settings{}));
+}
+
+TEST(settings, RoundTripThroughTheDefaultPath) {
+  const std::string config = freshFolder("xdg-roundtrip");
+  ScopedEnv xdg("XDG_CONFIG_HOME", config.c_str());
+  Settings saved;
+  saved.addRecent("/data/first.biip");
+  saved.addRecent("/data/second part.nc");
+  saved.addRecent("/data/ünïcode.biip");
+  saved.quantity = "jerk";
+  saved.colorMap = "viridis";
+  saved.windowWidth = 2560;
+  saved.windowHeight = 1440;
+  ASSERT_TRUE(saveSettings(saved));  // creates isurface/ under the config folder
+  EXPECT_TRUE(fileExists(config + "/isurface/settings.json"));
+
+  const Settings loaded = loadSettings();
+  EXPECT_EQ(loaded.recentFiles, saved.recentFiles);
+  EXPECT_EQ(loaded.quantity, "jerk");
+  EXPECT_EQ(loaded.colorMap, "viridis");
+  EXPECT_EQ(loaded.windowWidth, 2560);
+  EXPECT_EQ(loaded.windowHeight, 1440);
+
+  // The keys the file promises.
+  const std::string text = readFile(config + "/isurface/settings.json");
+  for (const char* key : {"recent_files", "quantity", "color_map", "window_width", "window_height"})
+    EXPECT_NE(text.find(key), std::string::npos) << key;
+}
+
+TEST(settings, SavingReplacesTheOldFile) {
+  const std::string path = freshFolder("replace") + "/settings.json";
+  Settings first;
+  first.quantity = "accel";
+  ASSERT_TRUE(saveSettings(first, path));
+  Settings second;
+  second.quantity = "feed";
+  ASSERT_TRUE(saveSettings(second, path));
+  EXPECT_EQ(loadSettings(path).quantity, "feed");
+  // No temporary left beside it.
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(std::filesystem::path(path).parent_path()))
+    ++files;
+  EXPECT_EQ(files, 1);
+}
+
+TEST(settings, UnwritableLocationFailsAndKeepsNothingHalfWritten) {
+  const std::string folder = freshFolder("unwritable");
+  writeText(folder + "/blocker", "a file where a folder should be");
+  EXPECT_FALSE(saveSettings(Settings{}, folder + "/blocker/isurface/settings.json"));
+  EXPECT_EQ(readFile(folder + "/blocker"), "a file where a folder should be");
+}
+
+TEST(settings, MissingFileGivesDefaults) {
+  expectDefaults(loadSettings(freshFolder("missing") + "/settings.json"));
+  expectDefaults(loadSettings(""));
+}
+
+TEST(settings, BrokenFileGivesDefaults) {
+  const std::string folder = freshFolder("broken");
+  for (const char* text : {"{\"quantity\": \"jerk\",", "not json at all", "", "[1, 2, 3]", "null", "\"text\""}) {
+    writeText(folder + "/settings.json", text);
+    expectDefaults(loadSettings(folder + "/settings.json"));
+  }
+  expectDefaults(loadSettings(folder));  // a folder, not a file
+}
+
+TEST(settings, WrongTypesFallBackOneByOne) {
+  const std::string path = freshFolder("types") + "/settings.json";
+  writeText(path, R"({"recent_files": ["/a.nc", 7, null, "/b.nc"], "quantity": 3, "color_map": "gray",
+                      "window_width": "wide", "window_height": -5, "unknown_key": true})");
+  const Settings s = loadSettings(path);
+  EXPECT_EQ(s.recentFiles, (std::vector<std::string>{"/a.nc", "/b.nc"}));
+  EXPECT_EQ(s.quantity, Settings{}.quantity);
+  EXPECT_EQ(s.colorMap, "gray");
+  EXPECT_EQ(s.windowWidth, Settings{}.windowWidth);
+  EXPECT_EQ(s.windowHeight, Settings{}.windowHeight);
+}
+
+TEST(settings, LoadedRecentFilesAreDeduplicatedAndCapped) {
+  const std::string path = freshFolder("recent-load") + "/settings.json";
+  std::string list;
+  for (int i = 0; i < 15; ++i) list += (i ? ", " : "") + std::string("\"/f") + std::to_string(i % 12) + "\"";
+  writeText(path, "{\"recent_files\": [" + list + "]}");
+  const Settings s = loadSettings(path);
+  ASSERT_EQ(s.recentFiles.size(), 10u);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(s.recentFiles[i], "/f" + std::to_string(i));
+}
+
+TEST(settings, AddRecentMovesToFrontAndKeepsTen) {
+  Settings s;
+  s.addRecent("/a");
+  s.addRecent("/b");
+  s.addRecent("/c");
+  EXPECT_EQ(s.recentFiles, (std::vector<std::string>{"/c", "/b", "/a"}));
+  s.addRecent("/a");
+  EXPECT_EQ(s.recentFiles, (std::vector<std::string>{"/a", "/c", "/b"}));
+  s.addRecent("/a");
+  EXPECT_EQ(s.recentFiles, (std::vector<std::string>{"/a", "/c", "/b"}));
+  s.addRecent("");
+  EXPECT_EQ(s.recentFiles.size(), 3u);
+
+  for (int i = 0; i < 20; ++i) s.addRecent("/file" + std::to_string(i));
+  ASSERT_EQ(s.recentFiles.size(), 10u);
+  for (int i = 0; i < 10; ++i) EXPECT_EQ(s.recentFiles[i], "/file" + std::to_string(19 - i));
+  s.addRecent("/file15");
+  EXPECT_EQ(s.recentFiles.front(), "/file15");
+  EXPECT_EQ(s.recentFiles.size(), 10u);
+  EXPECT_EQ(s.recentFiles[1], "/file19");
+}

@@ -1,0 +1,142 @@
+// Canned drilling cycles G81 G82 G83 G73 expanded into moves, with G98/G99 retracts.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "isurface/gcode/gcode_interpreter.h"
+#include "gcode_test_support.h"
+#include "test_support.h"
+
+using namespace isurface;
+using namespace isurface::gcodetest;
+
+namespace {
+
+struct Expected {
+  char kind;  // 'R' rapid, 'F' feed, 'D' dwell
+  double x, y, z;
+};
+
+// Compares the moves from `from` on with the expected list.
+void expectMoves(const InterpretResult& r, std::size_t from, const std::vector<Expected>& expected) {
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), from + expected.size());
+  for (std::size_t i = 0; i < expected.size(); ++i) {
+    const Move& m = r.program.moves[from + i];
+    const Expected& e = expected[i];
+    const char kind = m.kind == MoveKind::Rapid ? 'R' : m.kind == MoveKind::Linear ? 'F' : 'D';
+    EXPECT_EQ(kind, e.kind) << "move " << from + i;
+    EXPECT_NEAR(m.end.x(), e.x, 1e-9) << "move " << from + i;
+    EXPECT_NEAR(m.end.y(), e.y, 1e-9) << "move " << from + i;
+    EXPECT_NEAR(m.end.z(), e.z, 1e-9) << "move " << from + i;
+    EXPECT_EQ(m.flags & kExactStop, kExactStop) << "cycles run in exact stop";
+  }
+}
+
+}  // namespace
+
+TEST(gcodeCycles, G81ReturnsToInitialLevelByDefault) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nX10\n");
+  expectMoves(r, 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 10},
+               {'R', 10, 5, 10}, {'R', 10, 5, 2}, {'F', 10, 5, -3}, {'R', 10, 5, 10}});
+  EXPECT_EQ(r.program.moves[1].line, 2u);
+  EXPECT_EQ(r.program.moves[5].line, 3u);
+  EXPECT_FLOAT_EQ(r.program.moves[3].feed, 100.0f);
+}
+
+TEST(gcodeCycles, G99ReturnsToR) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG99 G81 X5 Y5 Z-3 R2 F100\nX10\n");
+  expectMoves(r, 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 2},
+               {'R', 10, 5, 2}, {'F', 10, 5, -3}, {'R', 10, 5, 2}});
+}
+
+TEST(gcodeCycles, StartBelowRGoesUpFirst) {
+  const InterpretResult r = run("G0 X0 Y0 Z1\nG81 X5 Y5 Z-3 R2 F100\n");
+  expectMoves(r, 1, {{'R', 0, 0, 2}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 2}});
+}
+
+TEST(gcodeCycles, G82Dwells) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG82 X5 Y5 Z-3 R2 P0.5 F100\nY6\n");
+  expectMoves(r, 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}, {'R', 5, 5, 10},
+               {'R', 5, 6, 10}, {'R', 5, 6, 2}, {'F', 5, 6, -3}, {'D', 5, 6, -3}, {'R', 5, 6, 10}});
+  EXPECT_DOUBLE_EQ(r.program.moves[4].dwellSeconds(), 0.5);
+  EXPECT_DOUBLE_EQ(r.program.moves[9].dwellSeconds(), 0.5);  // P is kept for the next holes
+}
+
+TEST(gcodeCycles, G83PecksBackToR) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG83 X0 Y0 Z-5 R1 Q2 F100\n");
+  expectMoves(r, 1,
+              {{'R', 0, 0, 10}, {'R', 0, 0, 1},
+               {'F', 0, 0, -1}, {'R', 0, 0, 1}, {'R', 0, 0, -0.746},
+               {'F', 0, 0, -3}, {'R', 0, 0, 1}, {'R', 0, 0, -2.746},
+               {'F', 0, 0, -5}, {'R', 0, 0, 10}});
+}
+
+TEST(gcodeCycles, G73BreaksChips) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG73 X0 Y0 Z-5 R1 Q2 F100\n");
+  expectMoves(r, 1,
+              {{'R', 0, 0, 10}, {'R', 0, 0, 1}, {'F', 0, 0, -1}, {'R', 0, 0, -0.746},
+               {'F', 0, 0, -3}, {'R', 0, 0, -2.746}, {'F', 0, 0, -5}, {'R', 0, 0, 10}});
+}
+
+TEST(gcodeCycles, IncrementalWithRepeats) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG91 G81 X5 Y0 Z-4 R-8 L3 F100\n");
+  expectMoves(r, 1,
+              {{'R', 5, 0, 10}, {'R', 5, 0, 2}, {'F', 5, 0, -2}, {'R', 5, 0, 10},
+               {'R', 10, 0, 10}, {'R', 10, 0, 2}, {'F', 10, 0, -2}, {'R', 10, 0, 10},
+               {'R', 15, 0, 10}, {'R', 15, 0, 2}, {'F', 15, 0, -2}, {'R', 15, 0, 10}});
+}
+
+TEST(gcodeCycles, G80EndsTheCycle) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nG80\nG0 Z20\nX1\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), 7u);
+  EXPECT_EQ(r.program.moves[5].end, Vec3(5, 5, 20));
+  EXPECT_EQ(r.program.moves[6].end, Vec3(1, 5, 20));
+  EXPECT_EQ(r.program.moves[6].kind, MoveKind::Rapid);
+}
+
+TEST(gcodeCycles, InchCycle) {
+  const InterpretResult r = run("G20\nG0 X0 Y0 Z1\nG99 G81 X1 Y1 Z-0.1 R0.1 F10\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), 5u);
+  EXPECT_NEAR(r.program.moves[3].end.z(), -2.54, 1e-12);
+  EXPECT_NEAR(r.program.moves[4].end.z(), 2.54, 1e-12);
+  EXPECT_FLOAT_EQ(r.program.moves[3].feed, 254.0f);
+}
+
+TEST(gcodeCycles, Errors) {
+  EXPECT_EQ(firstError("G18 G81 X1 Y1 Z-1 R1 F100\n"),
+            "t.ngc:1:5: G81: canned cycle only in G17 (XY plane)");
+  EXPECT_EQ(firstError("G81 X1 Y1 Z-1 F100\n"),
+            "t.ngc:1:1: R clearance plane unspecified in canned cycle");
+  EXPECT_EQ(firstError("G81 X1 Y1 R1 F100\n"),
+            "t.ngc:1:1: Z value unspecified in XY plane canned cycle");
+  EXPECT_EQ(firstError("G83 X1 Y1 Z-1 R1 F100\n"), "t.ngc:1:1: Q word missing with G83");
+  EXPECT_EQ(firstError("G73 X1 Y1 Z-1 R1 Q-1 F100\n"), "t.ngc:1:18: Negative or zero Q value used");
+  EXPECT_EQ(firstError("G82 X1 Y1 Z-1 R1 F100\n"), "t.ngc:1:1: Dwell time P word missing with G82");
+  EXPECT_EQ(firstError("G81 X1 Z1 R0 F100\n"), "t.ngc:1:1: R less than Z in canned cycle in XY plane");
+  EXPECT_EQ(firstError("G81 X1 Y1 Z-1 R1\n"), "t.ngc:1:1: Cannot do G81 with zero feed rate");
+  EXPECT_EQ(firstError("G83 X1 Y1 Z-100 R1 Q0.0001 F100\n"),
+            "t.ngc:1:20: Q value too small: over 100000 pecks");
+  EXPECT_EQ(firstError("G81 X1 Y1 Z-1 R1 L1e5 F100\n"),
+            "t.ngc:1:20: Unknown word starting with E");
+  EXPECT_EQ(firstError("G81 X1 Y1 Z-1 R1 L2.5 F100\n"),
+            "t.ngc:1:18: L word must be a whole number, zero or more");
+}
+
+TEST(gcodeCycles, BadCycleBlockLeavesNoMovesWithKeepGoing) {
+  InterpreterOptions options;
+  options.keepGoing = true;
+  // The second block fails after some of its holes would have been drilled.
+  const InterpretResult r =
+      run("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nG18 X6\nG17 X7\n", options);
+  ASSERT_EQ(r.errors.size(), 1u);
+  EXPECT_EQ(r.errors[0].line, 3u);
+  ASSERT_EQ(r.program.moves.size(), 9u);
+  EXPECT_EQ(r.program.moves[5].end, Vec3(7, 5, 10));
+}

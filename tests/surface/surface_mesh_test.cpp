@@ -1,0 +1,295 @@
+// The cutter-location surface: strips between neighbouring passes, gaps, loops, orientation.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "surface_fixtures.h"
+#include "isurface/base/diagnostic.h"
+#include "isurface/surface/surface_mesh.h"
+#include "test_support.h"
+
+using namespace isurface;
+using namespace isurface::test;
+
+namespace {
+
+// A raster of `passes` straight lines of `points` evenly spaced samples each, given directly
+// as passes (one per line), zig-zag or all one way.
+struct Grid {
+  Trajectory samples;
+  PassSet passes;
+};
+
+Grid planeGrid(int passes, int points, double spacing, double step, bool zigZag,
+               const std::function<double(double, double)>& z = {}) {
+  Grid g;
+  g.passes.pattern = PathPattern::DirectionParallel;
+  for (int k = 0; k < passes; ++k) {
+    const std::size_t begin = g.samples.x.size();
+    for (int i = 0; i < points; ++i) {
+      const int along = zigZag && k % 2 == 1 ? points - 1 - i : i;
+      const double x = along * spacing, y = k * step;
+      g.samples.x.push_back(x);
+      g.samples.y.push_back(y);
+      g.samples.z.push_back(z ? z(x, y) : 0.0);
+    }
+    g.passes.passes.push_back({begin, g.samples.x.size()});
+  }
+  const std::size_t n = g.samples.x.size();
+  g.samples.line.assign(n, 0);
+  g.samples.time.resize(n);
+  for (std::size_t i = 0; i < n; ++i) g.samples.time[i] = 0.001 * double(i);
+  return g;
+}
+
+Vec3 triangleNormal(const Trajectory& s, const SurfaceMesh& m, const std::array<std::uint32_t, 3>& t) {
+  const Vec3 a = s.commanded(m.vertexSample[t[0]]), b = s.commanded(m.vertexSample[t[1]]);
+  const Vec3 c = s.commanded(m.vertexSample[t[2]]);
+  return (b - a).cross(c - a);
+}
+
+double longestCrossEdge(const Trajectory& s, const SurfaceMesh& m) {
+  double longest = 0;
+  for (const auto& t : m.triangles)
+    for (int e = 0; e < 3; ++e) {
+      const std::uint32_t a = t[e], b = t[(e + 1) % 3];
+      if (m.vertexPass[a] != m.vertexPass[b])
+        longest = std::max(longest, (s.commanded(m.vertexSample[a]) - s.commanded(m.vertexSample[b])).norm());
+    }
+  return longest;
+}
+
+TEST(surface_mesh, PlaneRasterTrianglesAndNoHoles) {
+  const int passes = 10, points = 41;
+  for (const bool zigZag : {false, true}) {
+    const Grid g = planeGrid(passes, points, 0.25, 0.5, zigZag);
+    const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+    ASSERT_EQ(m.vertexSample.size(), std::size_t(passes * points));
+    ASSERT_EQ(m.passFirstVertex.size(), std::size_t(passes + 1));
+    // Each strip between two passes of n vertices: 2n - 2 triangles.
+    EXPECT_EQ(m.triangles.size(), std::size_t((passes - 1) * (2 * points - 2))) << zigZag;
+    // Boundary edges only on the outer border of the rectangle.
+    const auto border = boundaryEdges(m);
+    EXPECT_EQ(border.size(), std::size_t(2 * (points - 1) + 2 * (passes - 1)));
+    for (const auto& [a, b] : border) {
+      const Vec3 p = g.samples.commanded(m.vertexSample[a]), q = g.samples.commanded(m.vertexSample[b]);
+      const bool onBorder = (p.x() == 0 && q.x() == 0) || (p.x() == 10 && q.x() == 10) ||
+                            (p.y() == 0 && q.y() == 0) || (p.y() == 4.5 && q.y() == 4.5);
+      EXPECT_TRUE(onBorder) << p.transpose() << " - " << q.transpose();
+    }
+    // Facing +Z, and no diagonal longer than the grid's (a walk that ran one pass backwards
+    // would cross the whole strip).
+    for (const auto& t : m.triangles) ASSERT_GT(triangleNormal(g.samples, m, t).z(), 0);
+    EXPECT_LT(longestCrossEdge(g.samples, m), std::hypot(0.25, 0.5) + 1e-9);
+  }
+}
+
+TEST(surface_mesh, NeighboursAreTheNearestMatchedVertices) {
+  const Grid g = planeGrid(4, 21, 0.25, 0.5, true);
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+  for (std::size_t v = 0; v < m.vertexSample.size(); ++v) {
+    const std::uint32_t pass = m.vertexPass[v];
+    const Vec3 p = g.samples.commanded(m.vertexSample[v]);
+    if (pass == 0) {
+      EXPECT_EQ(m.previousPassNeighbour[v], kNoVertex);
+    } else {
+      ASSERT_NE(m.previousPassNeighbour[v], kNoVertex);
+      EXPECT_EQ(m.vertexPass[m.previousPassNeighbour[v]], pass - 1);
+      // Straight across on this grid.
+      EXPECT_NEAR((g.samples.commanded(m.vertexSample[m.previousPassNeighbour[v]]) - p).norm(), 0.5, 1e-9);
+    }
+    if (pass == 3) {
+      EXPECT_EQ(m.nextPassNeighbour[v], kNoVertex);
+    } else {
+      ASSERT_NE(m.nextPassNeighbour[v], kNoVertex);
+      EXPECT_EQ(m.vertexPass[m.nextPassNeighbour[v]], pass + 1);
+      EXPECT_NEAR((g.samples.commanded(m.vertexSample[m.nextPassNeighbour[v]]) - p).norm(), 0.5, 1e-9);
+    }
+  }
+}
+
+TEST(surface_mesh, StrideKeepsEveryStrideThSampleAndTheLast) {
+  const Grid g = planeGrid(3, 101, 0.1, 0.5, true);
+  MeshOptions options;
+  options.stride = 7;
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes, options);
+  // 0, 7, ..., 98 and 100: 16 per pass.
+  ASSERT_EQ(m.vertexSample.size(), 48u);
+  for (std::size_t k = 0; k < 3; ++k) {
+    const std::size_t first = m.passFirstVertex[k];
+    EXPECT_EQ(m.vertexSample[first], g.passes.passes[k].begin);
+    EXPECT_EQ(m.vertexSample[m.passFirstVertex[k + 1] - 1], g.passes.passes[k].end - 1);
+    EXPECT_EQ(m.vertexSample[first + 1], g.passes.passes[k].begin + 7);
+  }
+  EXPECT_TRUE(boundaryEdges(m).size() == 2 * 15 + 2 * 2);
+}
+
+TEST(surface_mesh, GapLimitLeavesFarRegionsApart) {
+  // Two rasters 10 mm apart in Y: the strip between their neighbouring passes is not made.
+  Grid g = planeGrid(6, 21, 0.5, 0.5, true, [](double, double y) { return y > 2 ? 1.0 : 0.0; });
+  for (std::size_t i = 0; i < g.samples.size(); ++i)
+    if (g.samples.y[i] > 1.2) g.samples.y[i] += 10.0;
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+  EXPECT_EQ(m.triangles.size(), 4u * (2 * 21 - 2));  // strips 0-1, 1-2, 3-4, 4-5
+  EXPECT_LE(longestCrossEdge(g.samples, m), 2.0);
+  for (std::size_t v = m.passFirstVertex[2]; v < m.passFirstVertex[3]; ++v) EXPECT_EQ(m.nextPassNeighbour[v], kNoVertex);
+  for (std::size_t v = m.passFirstVertex[3]; v < m.passFirstVertex[4]; ++v)
+    EXPECT_EQ(m.previousPassNeighbour[v], kNoVertex);
+  // A larger limit bridges them.
+  MeshOptions wide;
+  wide.gapLimit = 20;
+  EXPECT_EQ(buildSurfaceMesh(g.samples, g.passes, wide).triangles.size(), 5u * (2 * 21 - 2));
+}
+
+TEST(surface_mesh, PassesOfDifferentLengthsOnlyMeetWhereTheyOverlap) {
+  // The second pass covers only x in [5, 10] of the first's [0, 10].
+  Grid g = planeGrid(2, 21, 0.5, 0.5, false);
+  Trajectory& s = g.samples;
+  for (std::size_t i = g.passes.passes[1].begin; i < g.passes.passes[1].end; ++i) s.x[i] = 5.0 + 0.5 * s.x[i];
+  const SurfaceMesh m = buildSurfaceMesh(s, g.passes);
+  EXPECT_GT(m.triangles.size(), 20u);
+  EXPECT_LE(longestCrossEdge(s, m), 2.0);
+  for (const auto& t : m.triangles)
+    for (const std::uint32_t v : t) EXPECT_GE(s.x[m.vertexSample[v]], 3.0);
+}
+
+TEST(surface_mesh, NonFiniteSamplesAreNeverVertices) {
+  Grid g = planeGrid(3, 21, 0.5, 0.5, true);
+  g.samples.x[5] = std::numeric_limits<double>::quiet_NaN();
+  g.samples.z[30] = std::numeric_limits<double>::infinity();
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+  EXPECT_EQ(m.vertexSample.size(), 61u);
+  for (const std::uint32_t sample : m.vertexSample) {
+    EXPECT_NE(sample, 5u);
+    EXPECT_NE(sample, 30u);
+  }
+  for (const auto& t : m.triangles) EXPECT_TRUE(triangleNormal(g.samples, m, t).allFinite());
+}
+
+TEST(surface_mesh, StandstillAddsNoDegenerateTriangles) {
+  Grid g = planeGrid(2, 11, 0.5, 0.5, false);
+  // Repeat a sample of the first pass three times (the machine standing still).
+  Trajectory& s = g.samples;
+  for (auto* channel : {&s.x, &s.y, &s.z, &s.time}) channel->insert(channel->begin() + 4, 2, (*channel)[4]);
+  s.line.insert(s.line.begin(), 2, 0);
+  g.passes.passes[0].end += 2;
+  g.passes.passes[1].begin += 2;
+  g.passes.passes[1].end += 2;
+  const SurfaceMesh m = buildSurfaceMesh(s, g.passes);
+  EXPECT_EQ(m.vertexSample.size(), 22u);
+  EXPECT_EQ(m.triangles.size(), 20u);
+  for (const auto& t : m.triangles) EXPECT_GT(triangleNormal(s, m, t).norm(), 1e-6);
+}
+
+TEST(surface_mesh, ClosedLoopsCloseAround) {
+  const Trajectory s = concentricLoops(6, 10.0, 0.5, 2000);
+  const PassSet passes = splitPasses(s);
+  ASSERT_EQ(passes.pattern, PathPattern::ContourParallel);
+  ASSERT_EQ(passes.passes.size(), 6u);
+  const SurfaceMesh m = buildSurfaceMesh(s, passes);
+  // Boundary edges only along the outermost and innermost loops: no seam where loops start.
+  for (const auto& [a, b] : boundaryEdges(m)) {
+    const std::uint32_t pa = m.vertexPass[a], pb = m.vertexPass[b];
+    EXPECT_EQ(pa, pb);
+    EXPECT_TRUE(pa == 0 || pa == 5) << pa;
+  }
+  for (const auto& t : m.triangles) ASSERT_GT(triangleNormal(s, m, t).z(), 0);
+  EXPECT_LT(longestCrossEdge(s, m), 0.6);
+}
+
+TEST(surface_mesh, LoopsRunningOppositeWaysAreMatched) {
+  // Alternating climb and conventional loops: clockwise, then counter-clockwise.
+  PathSampler path(Vec3(10, 0, 0));
+  for (int k = 0; k < 4; ++k) {
+    const double r = 10.0 - 0.5 * k;
+    if (k > 0) path.lineTo(Vec3(r, 0, 0), 2000);
+    path.arc(Vec3::Zero(), k % 2 == 0 ? -2 * kPi : 2 * kPi, r, 0, 2000);
+  }
+  const Trajectory s = path.take();
+  PassOptions options;
+  options.pattern = PathPattern::ContourParallel;
+  const PassSet passes = splitPasses(s, options);
+  ASSERT_EQ(passes.passes.size(), 4u);
+  const SurfaceMesh m = buildSurfaceMesh(s, passes);
+  EXPECT_LT(longestCrossEdge(s, m), 0.6);
+  for (const auto& t : m.triangles) ASSERT_GT(triangleNormal(s, m, t).z(), 0);
+  for (const auto& [a, b] : boundaryEdges(m)) EXPECT_TRUE(m.vertexPass[a] == 0 || m.vertexPass[a] == 3);
+}
+
+TEST(surface_mesh, WaterlineWallsFaceOutwards) {
+  // Square loops stacked 0.5 mm apart in Z: a vertical wall, faced away from the loops' inside.
+  PathSampler path(Vec3(0, -10, 0));
+  for (int level = 0; level < 5; ++level) {
+    const double z = -0.5 * level;
+    if (level > 0) path.lineTo(Vec3(0, -10, z), 500);
+    path.lineTo(Vec3(10, -10, z), 2000).lineTo(Vec3(10, 10, z), 2000).lineTo(Vec3(-10, 10, z), 2000);
+    path.lineTo(Vec3(-10, -10, z), 2000).lineTo(Vec3(0, -10, z), 2000);
+  }
+  const Trajectory s = path.take();
+  const PassSet passes = splitPasses(s);
+  ASSERT_EQ(passes.passes.size(), 5u);
+  const SurfaceMesh m = buildSurfaceMesh(s, passes);
+  ASSERT_GT(m.triangles.size(), 0u);
+  std::size_t outwards = 0;
+  for (const auto& t : m.triangles) {
+    const Vec3 n = triangleNormal(s, m, t);
+    const Vec3 c = s.commanded(m.vertexSample[t[0]]);
+    outwards += n.x() * c.x() + n.y() * c.y() > 0;
+  }
+  EXPECT_EQ(outwards, m.triangles.size());
+}
+
+TEST(surface_mesh, NormalsOfATiltedPlane) {
+  const Grid g = planeGrid(5, 21, 0.5, 0.5, true, [](double x, double) { return 0.5 * x; });
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+  const std::vector<Vec3> positions = meshPositions(g.samples, m);
+  const std::vector<Vec3> normals = vertexNormals(positions, m);
+  const Vec3 expected = Vec3(-0.5, 0, 1).normalized();
+  for (const Vec3& n : normals) EXPECT_NEAR((n - expected).norm(), 0, 1e-9);
+}
+
+TEST(surface_mesh, FeedbackSurfaceNeedsFeedback) {
+  const Grid g = planeGrid(2, 5, 0.5, 0.5, true);
+  MeshOptions options;
+  options.feedback = true;
+  EXPECT_THROW(buildSurfaceMesh(g.samples, g.passes, options), InputError);
+  EXPECT_THROW(meshPositions(g.samples, buildSurfaceMesh(g.samples, g.passes), true), InputError);
+}
+
+TEST(surface_mesh, TransitionSurfaceHasNoHoles) {
+  const std::string file = sourcePath("samples/transition-surface.nc");
+  const Simulated sim = simulateGcode(readFile(file), file);
+  PassOptions passOptions;
+  passOptions.program = &sim.program;
+  const PassSet passes = splitPasses(sim.samples, passOptions);
+  ASSERT_EQ(passes.passes.size(), 81u);
+  const SurfaceMesh m = buildSurfaceMesh(sim.samples, passes);
+  const Trajectory& s = sim.samples;
+  // Every boundary edge is on the part's outer border: the first or last pass, or the ends of
+  // the passes (x near 0 or 80, where the step-overs were left out).
+  std::size_t inside = 0;
+  for (const auto& [a, b] : boundaryEdges(m)) {
+    const std::uint32_t pa = m.vertexPass[a], pb = m.vertexPass[b];
+    const Vec3 p = s.commanded(m.vertexSample[a]), q = s.commanded(m.vertexSample[b]);
+    const bool firstOrLast = (pa == 0 && pb == 0) || (pa == 80 && pb == 80);
+    const bool atEnds = (p.x() < 0.5 && q.x() < 0.5) || (p.x() > 79.5 && q.x() > 79.5);
+    if (!firstOrLast && !atEnds) ++inside;
+  }
+  EXPECT_EQ(inside, 0u);
+  for (const auto& t : m.triangles) ASSERT_GT(triangleNormal(s, m, t).z(), 0);
+  EXPECT_LE(longestCrossEdge(s, m), 2.0);
+}
+
+TEST(surface_mesh, ManySamplesMeshQuickly) {
+  // 2 million samples: a zig-zag of 200 passes of 10,000 samples.
+  const Grid g = planeGrid(200, 10000, 0.01, 0.5, true);
+  const auto start = std::chrono::steady_clock::now();
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  EXPECT_EQ(m.triangles.size(), 199u * (2 * 10000 - 2));
+  EXPECT_LT(seconds, 5.0);
+}
+
+}  // namespace
