@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "isurface/nc/simulator.h"
+#include "isurface/workflow/simulation_dump.h"
 
 using namespace isurface;
 

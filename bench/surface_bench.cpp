@@ -20,6 +20,8 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/nc/simulator.h"
 #include "isurface/surface/surface_mesh.h"
+#include "isurface/io/trajectory_loading.h"
+#include "isurface/workflow/simulation_dump.h"
 
 using namespace isurface;
 

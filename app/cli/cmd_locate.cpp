@@ -12,6 +12,7 @@
 #include "inputs.h"
 #include "isurface/io/biip.h"
 #include "isurface/analysis/locate.h"
+#include "isurface/workflow/locate_in_dump.h"
 
 namespace isurface::cli {
 

@@ -13,6 +13,7 @@
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_map.h"
 #include "isurface/vis/offscreen_render.h"
+#include "isurface/io/trajectory_loading.h"
 #include "progress.h"
 #include "trajectory_input.h"
 

@@ -5,6 +5,7 @@
 #include "command.h"
 #include "inputs.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/workflow/simulation_dump.h"
 #include "progress.h"
 
 namespace isurface::cli {

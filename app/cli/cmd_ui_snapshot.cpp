@@ -55,7 +55,7 @@ int runSnapshot(const SnapshotOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "give --pick-line or --pick-sample, not both"});
   int status = kExitOk;
   // Snapshots do not read or change the user's settings: the same inputs give the same picture.
-  HeadlessUi ui(width, height, app_model::Settings{});
+  panels::HeadlessUi ui(width, height, app_model::Settings{});
   panels::Inspector& inspector = ui.inspector();
   for (const std::string& file : o.files) {
     inspector.open(file);

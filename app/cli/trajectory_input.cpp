@@ -4,6 +4,8 @@
 
 #include "isurface/io/biip.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/io/trajectory_loading.h"
+#include "isurface/nc/sample_trajectory.h"
 #include "progress.h"
 
 namespace isurface::cli {

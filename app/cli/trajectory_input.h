@@ -6,6 +6,7 @@
 #include "isurface/machine/machine.h"
 #include "isurface/gcode/program.h"
 #include "isurface/base/trajectory.h"
+#include "isurface/io/trajectory_loading.h"
 
 namespace isurface::cli {
 

@@ -5,6 +5,7 @@
 
 #include "fuzz_support.h"
 #include "isurface/io/biip.h"
+#include "isurface/io/trajectory_loading.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   const std::string& path = isurface::fuzz::writeScratch(data, size, ".biip");

@@ -10,6 +10,7 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/surface/surface_mesh.h"
 #include "isurface/io/trajectory_writing.h"
+#include "isurface/io/trajectory_loading.h"
 
 namespace isurface::fuzz {
 namespace {

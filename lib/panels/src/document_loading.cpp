@@ -7,6 +7,8 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/simulator.h"
 #include "isurface/vis/quality_scene.h"
+#include "isurface/io/trajectory_loading.h"
+#include "isurface/nc/sample_trajectory.h"
 
 namespace isurface::panels {
 

@@ -20,6 +20,7 @@
 #include "isurface/nc/simulator.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
+#include "isurface/nc/sample_trajectory.h"
 
 namespace isurface::panels {
 

@@ -11,6 +11,7 @@
 #include "isurface/io/biip.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
+#include "isurface/io/trajectory_loading.h"
 
 namespace isurface::panels {
 
