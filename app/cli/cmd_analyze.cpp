@@ -19,6 +19,7 @@ namespace {
 
 struct AnalyzeOptions {
   std::string gcode, biip, output, png, machine;
+  bool force = false;
   QualityThresholds thresholds;
   std::size_t top = 20;
 };
@@ -35,7 +36,7 @@ int runAnalyze(const AnalyzeOptions& o) {
   requirePositive(o.thresholds.jerk, "--jerk-threshold");
   const Program program = loadProgram(o.gcode, false);
   const Trajectory samples = o.biip.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
-                                            : readTrajectory(o.biip);
+                                            : readProgramDump(o.biip, program, o.force);
   ProgressLine progress("analysing");
   vis::QualityMapRequest request;
   request.quantity = Quantity::SpeedInconsistency;
@@ -119,6 +120,7 @@ const bool registered = registerCommand(
       sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str();
       sub.add_option("--top", o->top, "regions listed at most")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runAnalyze(*o); };
     });
 

@@ -18,6 +18,7 @@ namespace {
 
 struct ExportOptions {
   std::string biip, vtp, gcode, surface = "commanded";
+  bool force = false;
 };
 
 int runExport(const ExportOptions& o) {
@@ -25,7 +26,7 @@ int runExport(const ExportOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
   std::unique_ptr<Program> program;
   if (!o.gcode.empty()) program = std::make_unique<Program>(loadProgram(o.gcode, false));
-  const Trajectory samples = readTrajectory(o.biip);
+  const Trajectory samples = program ? readProgramDump(o.biip, *program, o.force) : readTrajectory(o.biip);
   const bool feedback = o.surface == "feedback";
   if (feedback && !samples.hasFeedback())
     throw InputError(Diagnostic{o.biip, 0, 0, "no feedback channels (fb_x fb_y fb_z) for the feedback surface"});
@@ -72,6 +73,7 @@ const bool registered = registerCommand(
       sub.add_option("--vtp", o->vtp, "VTK XML polydata file to write")->required();
       sub.add_option("--gcode", o->gcode, "the program of the dump (tells rapids from cutting moves)");
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
+      sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runExport(*o); };
     });
 

@@ -15,7 +15,8 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/analysis/quality_regions.h"
-#include "isurface/optimise/region_optimizer.h"
+#include "isurface/workflow/region_optimisation.h"
+#include "progress.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_map.h"
 #include "isurface/vis/offscreen_render.h"
@@ -30,32 +31,6 @@ struct OptimizeCliOptions {
   double chordTolerance = 0.002;
 };
 
-struct Run {
-  Trajectory samples;
-  PassSet passes;
-  SurfaceMesh mesh;
-};
-
-Run simulateRun(const Program& program, const Machine& machine) {
-  Run run;
-  run.samples = simulateTrajectory(program, machine);
-  PassOptions options;
-  options.program = &program;
-  run.passes = splitPasses(run.samples, options);
-  run.mesh = buildSurfaceMesh(run.samples, run.passes);
-  return run;
-}
-
-std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
-  std::vector<Vec3> points;
-  for (std::size_t i = 0; i < program.moves.size(); ++i)
-    if (program.moves[i].isMotion() && program.moves[i].line >= lines.first && program.moves[i].line <= lines.last) {
-      if (points.empty()) points.push_back(program.startOf(i));
-      points.push_back(program.moves[i].end);
-    }
-  return points;
-}
-
 nlohmann::json metricsJson(const RegionMetrics& m) {
   return {{"samples", m.samples},
           {"time_s", m.time},
@@ -66,16 +41,16 @@ nlohmann::json metricsJson(const RegionMetrics& m) {
 }
 
 // A top view of the run's surface coloured as the request says.
-void renderTop(const Run& run, const Program& program, vis::QualityMapRequest request, const std::string& caption,
+void renderTop(const SurfaceRun& run, const Program& program, vis::QualityMapRequest request, const std::string& caption,
                const std::string& path) {
   request.view = vis::ViewDirection::Top;
   request.caption = caption;
-  const vis::QualityMap map = vis::buildQualityMap(run.samples, &program, request);
+  const vis::QualityMap map = vis::buildQualityMap(*run.samples, &program, request);
   vis::QualityScene scene(map.data, map.style);
   vis::renderSceneToPng(scene, 1200, 800, path);
 }
 
-void renderSpeed(const Run& run, const Program& program, const std::string& caption, const ValueRange& range,
+void renderSpeed(const SurfaceRun& run, const Program& program, const std::string& caption, const ValueRange& range,
                  const std::string& path) {
   vis::QualityMapRequest request;
   request.quantity = Quantity::Speed;
@@ -92,36 +67,28 @@ int runOptimize(const OptimizeCliOptions& o) {
   std::stringstream text;
   text << in.rdbuf();
 
-  const Run before = simulateRun(program, machine);
-  LineRange range;
-  std::optional<std::pair<Vec3, Vec3>> defectBox;
+  const SurfaceRun before = surfaceRun(std::make_shared<const Trajectory>(simulateTrajectory(program, machine)), &program);
+  RegionRequest request;
+  request.options.chordTolerance = o.chordTolerance;
   if (o.automatic) {
-    const QualityReport report = findQualityRegions(before.samples, before.mesh);
-    const QualityRegion* worst = worstRegionInsidePasses(report);
-    if (!worst)
-      throw InputError(Diagnostic{o.input, 0, 0,
-                                  report.regions.empty() ? "no region beyond the quality thresholds to optimise"
-                                                         : "every region beyond the quality thresholds lies where passes start or end"});
-    range = widenToWholePasses(before.samples, before.passes, {worst->firstLine, worst->lastLine});
-    defectBox = std::make_pair(worst->lower, worst->upper);
+    const ChosenRegion worst = worstRegion(before, o.input);
+    request.lines = worst.lines;
+    request.box = std::make_pair(worst.lower, worst.upper);
   } else {
-    range = parseLineRange(o.lines);
+    request.lines = parseLineRange(o.lines);
   }
-  OptimizeOptions options;
-  options.chordTolerance = o.chordTolerance;
-  const OptimizeResult result = optimizeRegion(text.str(), program, range, machine, options);
-  writeFileAtomically(o.output, result.text);
-
-  InterpretResult reread = interpretGcode(result.text, o.output);
-  if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
-  const Run after = simulateRun(reread.program, machine);
-  // The comparison looks where the defect was found (--auto), else where the path was re-fitted.
-  const Vec3 lower = defectBox ? defectBox->first : result.fittedLower;
-  const Vec3 upper = defectBox ? defectBox->second : result.fittedUpper;
-  const RegionMetrics old = measureRegion(before.samples, before.mesh, range, lower, upper);
-  const RegionMetrics now = measureRegion(after.samples, after.mesh, result.newRange, lower, upper);
-  const double distance = polylineDistance(regionPoints(program, range), regionPoints(reread.program, result.newRange));
-  const double timeBefore = (before.samples.size() - 1) * machine.cycle, timeAfter = (after.samples.size() - 1) * machine.cycle;
+  ProgressLine progress("optimising");
+  const RegionOptimisation r =
+      optimiseRegion(text.str(), program, before, machine, request, [&](double f) { progress.update(f); });
+  progress.finish();
+  writeFileAtomically(o.output, r.result.text);
+  const OptimizeResult& result = r.result;
+  const LineRange range = r.lines;
+  const SurfaceRun& after = r.after;
+  const Program& newProgram = *r.program;
+  const RegionMetrics &old = r.before, &now = r.afterMetrics;
+  const Vec3 &lower = r.lower, &upper = r.upper;
+  const double distance = r.maxPathDistance, timeBefore = r.timeBefore, timeAfter = r.timeAfter;
 
   nlohmann::json passes = nlohmann::json::array();
   for (const OptimizedPass& p : result.passes)
@@ -136,14 +103,14 @@ int runOptimize(const OptimizeCliOptions& o) {
       {"compared_box_mm", {{"min", {lower.x(), lower.y()}}, {"max", {upper.x(), upper.y()}}}}};
   if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
   if (!o.pngBefore.empty() || !o.pngAfter.empty()) {
-    const std::vector<float> speeds = vertexQuantity(Quantity::Speed, before.samples, before.mesh);
+    const std::vector<float> speeds = vertexQuantity(Quantity::Speed, *before.samples, *before.mesh);
     const ValueRange span = percentileRange(speeds, 1, 99);
     if (!o.pngBefore.empty()) renderSpeed(before, program, o.input + " before", span, o.pngBefore);
-    if (!o.pngAfter.empty()) renderSpeed(after, reread.program, o.output + " after", span, o.pngAfter);
+    if (!o.pngAfter.empty()) renderSpeed(after, newProgram, o.output + " after", span, o.pngAfter);
   }
   if (!o.pngDifference.empty()) {
-    const RunComparison difference = compareOptimizedRuns(before.samples, after.samples, result);
-    renderTop(before, program, vis::regionDifferenceMapRequest(difference, before.samples, range),
+    const RunComparison difference = compareOptimizedRuns(*before.samples, *after.samples, result);
+    renderTop(before, program, vis::regionDifferenceMapRequest(difference, *before.samples, range),
               o.output + " against " + o.input, o.pngDifference);
   }
   std::printf("%s: lines %u-%u, %zu passes re-fitted\n", o.output.c_str(), range.first, range.last, result.passes.size());

@@ -15,6 +15,7 @@
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/io/trajectory_loading.h"
 #include "progress.h"
+#include "isurface/workflow/run_inputs.h"
 #include "trajectory_input.h"
 
 namespace isurface::cli {
@@ -25,17 +26,10 @@ struct RenderOptions {
   std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "rainbow";
   std::string range, percentiles = "1:99", surface = "commanded";
   long highlightLine = -1;
-  bool noToolpath = false, noPassWires = false, colorToolpath = false;
+  bool noToolpath = false, noPassWires = false, colorToolpath = false, force = false;
   int isoBands = 12;
   double gapLimit = MeshOptions{}.gapLimit;  // mm
 };
-
-bool isBiipFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  in.read(magic, 4);
-  return in.gcount() == 4 && std::string(magic, 4) == "BIIP";
-}
 
 std::pair<int, int> parseSize(const std::string& text) {
   int w = 0, h = 0;
@@ -105,7 +99,8 @@ int runRender(const RenderOptions& o) {
   channels.extra = !request.channel.empty();
   channels.feedback = channels.extra || request.feedbackSurface || quantityInfo(request.quantity).needsFeedback;
   const Trajectory samples = dump.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
-                                          : readTrajectory(dump, channels);
+                                          : dumpOnly ? readTrajectory(dump, channels)
+                                                     : readProgramDump(dump, program, o.force, channels);
   ProgressLine building("building the surface");
   vis::QualityMap map = vis::buildQualityMap(samples, dumpOnly ? nullptr : &program, request);
   map.style.fontSize = vis::fontSizeForHeight(height);
@@ -142,6 +137,7 @@ const bool registered = registerCommand(
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
       return [o] { return runRender(*o); };
     });

@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "command.h"
+#include "isurface/workflow/run_inputs.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/base/diagnostic.h"
@@ -57,8 +58,11 @@ int runSnapshot(const SnapshotOptions& o) {
   // Snapshots do not read or change the user's settings: the same inputs give the same picture.
   panels::HeadlessUi ui(width, height, app_model::Settings{});
   panels::Inspector& inspector = ui.inspector();
-  for (const std::string& file : o.files) {
-    inspector.open(file);
+  for (const RunFiles& run : pairRunFiles(o.files)) {
+    std::vector<std::string> files;
+    for (const std::string& f : {run.program, run.dump})
+      if (!f.empty()) files.push_back(f);
+    inspector.open(files);
     inspector.waitUntilIdle();
     ui.frame();
     if (inspector.statusText().rfind("error:", 0) == 0) {

@@ -82,9 +82,9 @@ int run(int argc, char** argv) {
       // Idle frames wait for input; work in the background wakes the loop often enough.
       if (inspector.busy()) glfwWaitEventsTimeout(0.05);
       else glfwWaitEventsTimeout(0.25);
-      if (!dropped.empty() && !inspector.busy()) {
-        inspector.open(dropped.front());
-        dropped.erase(dropped.begin());
+      if (!dropped.empty()) {
+        inspector.open(dropped);  // together: a dump after its program joins it
+        dropped.clear();
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();

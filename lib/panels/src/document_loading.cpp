@@ -1,30 +1,32 @@
-// Loading a document on a background thread: program text, interpretation, samples (read or
-// simulated), the quality map and its scene, and the signal curves.
+// Loading a document on a background thread: program text, the program and its samples (one
+// workflow call: read and joined, or simulated), the quality map and its scene, the curves.
 #include <filesystem>
 
 #include "inspector_state.h"
-#include "isurface/io/biip.h"
-#include "isurface/gcode/gcode_interpreter.h"
-#include "isurface/nc/simulator.h"
 #include "isurface/vis/quality_scene.h"
-#include "isurface/io/trajectory_loading.h"
-#include "isurface/nc/sample_trajectory.h"
+#include "isurface/workflow/run_inputs.h"
 
 namespace isurface::panels {
 
 namespace {
 
-// Maps a part of the job's progress to one stage.
-struct Stage {
-  app_model::JobControl& control;
-  double from, to;
-  void operator()(double f) const { control.progress(from + (to - from) * f); }
-};
-
 Curve curveOf(Quantity q, const Trajectory& samples) {
   const QuantityInfo& info = quantityInfo(q);
   const std::vector<double> values = sampleQuantity(q, samples);
   return Curve{info.label, info.unit, app_model::SignalPyramid(std::vector<float>(values.begin(), values.end()))};
+}
+
+// A colouring remembered from another file that this one cannot show (a quantity that needs
+// feedback) gives way to speed, with a word, rather than blocking the file.
+vis::QualityMapRequest fitRequest(vis::QualityMapRequest request, const Trajectory& samples,
+                                  std::vector<std::string>& warnings) {
+  if (request.channel.empty() && quantityInfo(request.quantity).needsFeedback && !samples.hasFeedback()) {
+    warnings.push_back(std::string("coloured by speed: ") + quantityInfo(request.quantity).label +
+                       " needs feedback, which this file has none of");
+    request.quantity = Quantity::Speed;
+  }
+  if (!request.channel.empty() && !samples.extraChannel(request.channel)) request.channel.clear();
+  return request;
 }
 
 }  // namespace
@@ -35,28 +37,18 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
   doc->name = std::filesystem::path(programPath.empty() ? dumpPath : programPath).filename().string();
-  if (!programPath.empty()) {
-    doc->text = std::make_unique<app_model::TextLines>(programPath);
-    InterpreterOptions options;
-    options.progress = Stage{control, 0.0, 0.15};
-    InterpretResult r = interpretGcodeFile(programPath, options);
-    if (!r.ok()) throw InputError(r.errors.front());
-    for (const Diagnostic& w : r.program.warnings) doc->warnings.push_back(w.str());
-    doc->program = std::make_shared<const Program>(std::move(r.program));
-  }
-  if (!dumpPath.empty()) {
-    const BiipReader reader(dumpPath);
-    for (const std::string& w : reader.warnings()) doc->warnings.push_back(dumpPath + ": " + w);
-    doc->samples = std::make_shared<const Trajectory>(loadTrajectory(reader, Stage{control, 0.15, 0.5}));
-  } else if (doc->program) {
-    SampleBuffer buffer;
-    const Machine machine = defaultMachine();
-    simulate(*doc->program, machine, buffer, Stage{control, 0.15, 0.5});
-    doc->samples = std::make_shared<const Trajectory>(trajectoryFromSamples(buffer.data, machine.cycle, programPath));
-  }
+  if (!programPath.empty()) doc->text = std::make_unique<app_model::TextLines>(programPath);
+  OpenRunRequest open;
+  open.files = {programPath, dumpPath};
+  OpenedRun run = openRun(open, [&control](double f) { control.progress(0.5 * f); });
+  doc->program = std::move(run.program);
+  doc->samples = std::move(run.samples);
+  doc->machine = run.machine;
+  doc->machineKnown = run.machineKnown;
+  doc->warnings = std::move(run.warnings);
   if (!doc->samples || doc->samples->size() == 0) return doc;
   control.progress(0.55);
-  doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), request);
+  doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitRequest(request, *doc->samples, doc->warnings));
   control.progress(0.75);
   doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
   control.progress(0.85);

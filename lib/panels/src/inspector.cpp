@@ -2,6 +2,7 @@
 
 #include <imgui.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -9,18 +10,12 @@
 #include <thread>
 
 #include "inspector_state.h"
+#include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
 
 namespace {
-
-bool looksLikeBiip(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  char magic[4] = {};
-  in.read(magic, 4);
-  return in.gcount() == 4 && std::memcmp(magic, "BIIP", 4) == 0;
-}
 
 }  // namespace
 
@@ -99,6 +94,10 @@ void Inspector::State::takeJobResult() {
   }
   if (result->document) {
     Document& doc = *result->document;
+    // The colouring gave way (see loadDocument): the controls say what the map shows.
+    if (doc.samples && !doc.samples->hasFeedback() && settings.channel.empty() &&
+        quantityInfo(settings.quantity).needsFeedback)
+      settings.quantity = Quantity::Speed;
     status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
     for (const std::string& w : doc.warnings) status += " | " + w;
     if (result->replaces < documents.size()) {
@@ -161,29 +160,50 @@ void Inspector::State::syncHighlight() {
 
 Inspector::Inspector(GlHooks hooks, app_model::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {
   state_->persistent = std::move(settings);
-  if (const auto q = parseQuantity(state_->persistent.quantity)) state_->settings.quantity = *q;
-  state_->settings.colorMap = state_->persistent.colorMap;
+  // A remembered colouring that this version does not know is a note, never a blocked file.
+  State& s = *state_;
+  std::vector<std::string> notes;
+  if (const auto q = parseQuantity(s.persistent.quantity)) s.settings.quantity = *q;
+  else if (!s.persistent.quantity.empty()) notes.push_back("unknown quantity '" + s.persistent.quantity + "'");
+  const std::vector<std::string> maps = vis::colorMapNames();
+  if (std::find(maps.begin(), maps.end(), s.persistent.colorMap) != maps.end()) s.settings.colorMap = s.persistent.colorMap;
+  else notes.push_back("unknown colour map '" + s.persistent.colorMap + "'");
+  if (!notes.empty()) {
+    s.status = "settings.json: ";
+    for (std::size_t i = 0; i < notes.size(); ++i) s.status += (i ? ", " : "") + notes[i];
+    s.status += "; using " + std::string(quantityInfo(s.settings.quantity).label) + " and " + s.settings.colorMap;
+  }
 }
 
 Inspector::~Inspector() = default;
 
-void Inspector::State::openFile(const std::string& path) {
-  persistent.addRecent(path);
-  if (looksLikeBiip(path)) {
-    // A dump joins the active program when that has no dump of its own yet.
-    Document* doc = activeDocument();
-    if (doc && doc->dumpPath.empty() && !doc->programPath.empty()) startLoad(doc->programPath, path, active);
-    else startLoad("", path);
-  } else {
-    startLoad(path, "");
-  }
+void Inspector::State::openFile(const std::string& path) { openFiles({path}); }
+
+void Inspector::State::openFiles(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) persistent.addRecent(path);
+  for (RunFiles& run : pairRunFiles(paths)) queuedRuns.push_back(std::move(run));
+  startQueuedLoad();
+}
+
+void Inspector::State::startQueuedLoad() {
+  if (job.running() || pending || queuedRuns.empty()) return;
+  const RunFiles run = queuedRuns.front();
+  queuedRuns.pop_front();
+  // A dump alone joins the active program when that has no dump of its own yet.
+  Document* doc = activeDocument();
+  if (run.program.empty() && doc && doc->dumpPath.empty() && !doc->programPath.empty())
+    startLoad(doc->programPath, run.dump, active);
+  else
+    startLoad(run.program, run.dump);
 }
 
 void Inspector::open(const std::string& path) { state_->openFile(path); }
+void Inspector::open(const std::vector<std::string>& paths) { state_->openFiles(paths); }
 
 void Inspector::frame() {
   State& s = *state_;
   s.takeJobResult();
+  s.startQueuedLoad();
   s.syncHighlight();
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float width = viewport->Size.x, height = viewport->Size.y;
@@ -218,8 +238,11 @@ bool Inspector::busy() const { return state_->job.running(); }
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }
 
 void Inspector::waitUntilIdle() {
-  while (state_->job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  state_->takeJobResult();
+  do {
+    while (state_->job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    state_->takeJobResult();
+    state_->startQueuedLoad();
+  } while (state_->job.running());
 }
 
 void Inspector::selectSample(std::size_t sample) { state_->selection.selectSample(sample); }

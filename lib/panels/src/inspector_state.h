@@ -4,12 +4,14 @@
 #include <imgui.h>
 
 #include <memory>
+#include <deque>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "isurface/gcode/program.h"
+#include "isurface/machine/machine.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/analysis/run_comparison.h"
 #include "isurface/base/trajectory.h"
@@ -20,6 +22,7 @@
 #include "isurface/app_model/signal_pyramid.h"
 #include "isurface/app_model/text_lines.h"
 #include "isurface/vis/quality_map.h"
+#include "isurface/workflow/run_inputs.h"
 
 namespace isurface::panels {
 
@@ -39,6 +42,8 @@ struct Document {
   vis::QualityMap map;
   std::shared_ptr<vis::QualityScene> scene;
   std::vector<Curve> curves;  // speed, acceleration, jerk, then any extra channel
+  Machine machine;            // what made the samples: the dump's own, else the simulation's
+  bool machineKnown = true;   // false: a dump that names no machine (the default stands in)
   std::vector<std::string> warnings;
   bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
 };
@@ -111,6 +116,7 @@ struct Inspector::State {
   app_model::ScreenRectangle optimiseBoxOnView;
   char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
+  std::deque<RunFiles> queuedRuns;  // files opened together, loaded one run after another
   std::size_t active = 0;
   app_model::SelectionModel selection;
   std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
@@ -134,6 +140,10 @@ struct Inspector::State {
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
   // Opens a program or a dump: a dump joins the active program when that has none yet.
   void openFile(const std::string& path);
+  // Opens files named together (a command line, a drop): a dump after its program joins it.
+  void openFiles(const std::vector<std::string>& paths);
+  // Starts loading the next run of files waiting, when no job runs.
+  void startQueuedLoad();
 
   Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
   vis::QualityMapRequest mapRequest() const;

@@ -13,14 +13,10 @@
 
 #include "inspector_state.h"
 #include "isurface/io/atomic_file.h"
-#include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/optimized_run_comparison.h"
-#include "isurface/analysis/quality_regions.h"
-#include "isurface/optimise/region_optimizer.h"
-#include "isurface/nc/simulator.h"
+#include "isurface/workflow/region_optimisation.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
-#include "isurface/nc/sample_trajectory.h"
 
 namespace isurface::panels {
 
@@ -45,7 +41,10 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
 void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
                                      std::optional<std::pair<Vec3, Vec3>> measuredBox) {
   Document* doc = activeDocument();
-  if (!doc || !doc->program || doc->programPath.empty() || !doc->samples) return;
+  if (!doc || !doc->program || doc->programPath.empty() || !doc->samples) {
+    status = "Optimise needs a G-code program: open the program of this dump first";
+    return;
+  }
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
@@ -54,45 +53,35 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   std::shared_ptr<const Program> program = doc->program;
   std::shared_ptr<const Trajectory> before = doc->samples;
   const PassSet beforePasses = doc->map.passes;
+  const Machine machine = doc->machine;  // the document's own, as the CLI's --machine
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, before, beforePasses, request, first, last, measuredBox](app_model::JobControl& control) {
+            [result, path, program, before, beforePasses, request, first, last, measuredBox,
+             machine](app_model::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
-              const Machine machine = defaultMachine();
-              const OptimizeResult optimized = optimizeRegion(text.str(), *program, LineRange{first, last}, machine);
-              control.progress(0.2);
-              InterpretResult reread = interpretGcode(optimized.text, path);
-              if (!reread.ok()) throw InputError(reread.errors.front());
+              SurfaceRun beforeRun{before, beforePasses,
+                                   std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*before, beforePasses))};
+              RegionRequest region;
+              region.lines = LineRange{first, last};
+              region.box = measuredBox;
+              const RegionOptimisation r = optimiseRegion(text.str(), *program, beforeRun, machine, region,
+                                                          [&](double f) { control.progress(0.8 * f); });
               auto c = std::make_shared<Comparison>();
-              c->text = optimized.text;
+              c->text = r.result.text;
               c->first = first;
               c->last = last;
-              c->program = std::make_shared<const Program>(std::move(reread.program));
-              SampleBuffer buffer;
-              simulate(*c->program, machine, buffer, [&](double f) { control.progress(0.2 + 0.5 * f); });
-              c->samples = std::make_shared<const Trajectory>(trajectoryFromSamples(buffer.data, machine.cycle, path));
+              c->program = r.program;
+              c->samples = r.after.samples;
               c->map = vis::buildQualityMap(*c->samples, c->program.get(), request);
               c->scene = std::make_shared<vis::QualityScene>(c->map.data, c->map.style);
-              control.progress(0.8);
-              c->difference = compareOptimizedRuns(*before, *c->samples, optimized);
+              control.progress(0.9);
+              c->difference = compareOptimizedRuns(*before, *c->samples, r.result);
               buildDifferenceView(vis::regionDifferenceMapRequest(c->difference, *before, LineRange{first, last}), request,
                                   *before, program.get(), c->differenceMap, c->differenceScene);
-              control.progress(0.9);
-              const SurfaceMesh beforeMesh = buildSurfaceMesh(*before, beforePasses);
-              const Vec3 lower = measuredBox ? measuredBox->first : optimized.fittedLower;
-              const Vec3 upper = measuredBox ? measuredBox->second : optimized.fittedUpper;
-              const RegionMetrics old = measureRegion(*before, beforeMesh, LineRange{first, last}, lower, upper);
-              const RegionMetrics now = measureRegion(*c->samples, *c->map.mesh, optimized.newRange, lower, upper);
-              c->timeBefore = before->size() * machine.cycle;
-              c->timeAfter = c->samples->size() * machine.cycle;
-              c->summary = fmt::format(
-                  "lines {}-{}: {} passes re-fitted. Machining time {:.1f} -> {:.1f} s. In the region: speed fluctuation "
-                  "{:.0f} -> {:.0f} mm/min, largest inconsistency between passes {:.0f} -> {:.0f} mm/min, jerk peak "
-                  "{:.0f} -> {:.0f} mm/s^3",
-                  first, last, optimized.passes.size(), c->timeBefore, c->timeAfter, old.speedFluctuation,
-                  now.speedFluctuation, old.maxSpeedInconsistency, now.maxSpeedInconsistency, old.maxJerk, now.maxJerk);
-              c->summary += passDifferenceText(c->difference, optimized);
+              c->timeBefore = r.timeBefore;
+              c->timeAfter = r.timeAfter;
+              c->summary = regionSummary(r) + passDifferenceText(c->difference, r.result);
               result->comparison = c;
             });
 }
@@ -124,22 +113,28 @@ void drawOptimiseDialog(Inspector::State& s) {
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
   }
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
-    const QualityReport report = findQualityRegions(*doc->samples, *doc->map.mesh);
-    if (const QualityRegion* worst = worstRegionInsidePasses(report)) {
+    try {
       // As `optimize --auto`: whole passes around the region, its figures taken inside its box.
-      const LineRange lines = widenToWholePasses(*doc->samples, doc->map.passes, {worst->firstLine, worst->lastLine});
-      s.optimiseFirst = static_cast<int>(lines.first);
-      s.optimiseLast = static_cast<int>(lines.last);
-      s.optimiseBox = app_model::BoxSelection{lines, worst->lower, worst->upper, worst->vertices};
+      const SurfaceRun run{doc->samples, doc->map.passes,
+                           std::shared_ptr<const SurfaceMesh>(doc->map.mesh.get(), [](const SurfaceMesh*) {})};
+      const ChosenRegion worst = worstRegion(run, doc->name);
+      s.optimiseFirst = static_cast<int>(worst.lines.first);
+      s.optimiseLast = static_cast<int>(worst.lines.last);
+      s.optimiseBox = app_model::BoxSelection{worst.lines, worst.lower, worst.upper, worst.vertices};
       s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
-    } else {
-      s.status = "no region beyond the quality thresholds away from the pass ends";
+    } catch (const InputError& e) {
+      s.status = e.what();
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Selected line's pass") && s.selection.current().line) {
-    s.optimiseFirst = static_cast<int>(*s.selection.current().line);
-    s.optimiseLast = s.optimiseFirst + 100;
+  if (ImGui::Button("Selected line's pass") && s.selection.current().line && doc && doc->samples) {
+    const SurfaceRun run{doc->samples, doc->map.passes, nullptr};
+    if (const auto pass = passOfLine(run, *s.selection.current().line)) {
+      s.optimiseFirst = static_cast<int>(pass->first);
+      s.optimiseLast = static_cast<int>(pass->last);
+    } else {
+      s.status = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
+    }
   }
   if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
     std::optional<std::pair<Vec3, Vec3>> measured;

@@ -22,4 +22,10 @@ bool timeIsIrregular(const double* time, std::size_t n, double cycle) {
   return false;
 }
 
+double machiningTime(const Trajectory& samples) {
+  if (samples.size() < 2 || samples.time.size() != samples.size()) return 0;
+  const double span = samples.time.back() - samples.time.front();
+  return std::isfinite(span) && span > 0 ? span : 0;
+}
+
 }  // namespace isurface

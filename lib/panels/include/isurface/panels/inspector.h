@@ -26,6 +26,9 @@ class Inspector {
   // Opens a G-code program or a Biip dump (told apart by its first bytes). A dump joins the
   // open program it belongs to; a program alone is simulated. The work runs in the background.
   void open(const std::string& path);
+  // Opens files named together (a command line, a drop), one after another: a dump right after
+  // a program joins it (refused, with the reason in the status, when it is not that program's).
+  void open(const std::vector<std::string>& paths);
 
   // Draws the whole window; call between ImGui::NewFrame() and ImGui::Render().
   void frame();

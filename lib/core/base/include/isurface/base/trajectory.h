@@ -39,4 +39,8 @@ struct Trajectory {
 // of it (or a time is not finite).
 bool timeIsIrregular(const double* time, std::size_t n, double cycle);
 
+// Machining time, s: first sample to last (n - 1 cycles for a regular dump), 0 for fewer than
+// two samples or a time channel that is not finite.
+double machiningTime(const Trajectory& samples);
+
 }  // namespace isurface

@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "isurface/base/progress.h"
 #include "isurface/machine/machine.h"
 #include "isurface/gcode/program.h"
 
@@ -67,7 +68,6 @@ struct FeedPlan {
   double profileDuration() const;
 };
 
-using ProgressCallback = std::function<void(double)>;
 
 FeedPlan planFeed(const Program& program, const Machine& machine, const LimitBudget& budget = {},
                   const ProgressCallback& progress = {});

@@ -1,0 +1,66 @@
+#pragma once
+// Re-optimising a region of a program, written once for `optimize` and the application's
+// Optimise dialog: choose the lines (given, a pass, or the worst predicted region), re-fit
+// them, simulate the new program with the same machine, and measure the region before and after.
+#include <memory>
+#include <optional>
+#include <string>
+#include <utility>
+
+#include "isurface/analysis/run_comparison.h"
+#include "isurface/base/progress.h"
+#include "isurface/optimise/region_optimizer.h"
+
+namespace isurface {
+
+// A run as the quality map sees it: samples split into passes, and the surface between them.
+struct SurfaceRun {
+  std::shared_ptr<const Trajectory> samples;
+  PassSet passes;
+  std::shared_ptr<const SurfaceMesh> mesh;
+};
+
+// Splits a program's samples into passes and builds the surface (the program tells rapids apart).
+SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program);
+
+// The worst region the quality prediction finds inside the passes, widened to whole passes (as
+// `optimize --auto` takes it), with the box of the defect; InputError when there is none.
+struct ChosenRegion {
+  LineRange lines;
+  Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // mm, where the figures are measured
+  std::size_t vertices = 0;                         // surface vertices of the defect
+};
+ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source);
+
+// The lines of the pass that holds a sample of `line` (first to last line of its samples);
+// nothing when the line is on no pass.
+std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line);
+
+struct RegionRequest {
+  LineRange lines;
+  // Where the figures are measured (XY, mm); by default the box of the region's programmed path.
+  std::optional<std::pair<Vec3, Vec3>> box;
+  OptimizeOptions options;
+};
+
+struct RegionOptimisation {
+  OptimizeResult result;                   // the new text, its passes and new line range
+  std::shared_ptr<const Program> program;  // the new program, interpreted
+  SurfaceRun after;
+  LineRange lines;                         // the region in the old program
+  Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // the box measured, mm
+  RegionMetrics before, afterMetrics;
+  double timeBefore = 0, timeAfter = 0;    // s, machining time of the whole program
+  double maxPathDistance = 0;              // mm, new path to old over the region
+};
+
+// `text` is the program's source, `program` its interpretation, `before` its run on `machine`.
+// Progress: 0..1 over re-fitting and simulating the new program.
+RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
+                                  const Machine& machine, const RegionRequest& request,
+                                  const ProgressCallback& progress = {});
+
+// One line of figures: machining time, speed fluctuation, inconsistency, jerk (mm/min, mm/s^3).
+std::string regionSummary(const RegionOptimisation& r);
+
+}  // namespace isurface

@@ -1,0 +1,73 @@
+#pragma once
+// Opening what a user brings: a G-code program, a Biip dump (simulated or a machine trace), or
+// both, joined. Written once for the command line and the application. Errors are InputError
+// naming the file (and line); a progress callback may throw to cancel.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "isurface/base/progress.h"
+#include "isurface/base/trajectory.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/io/trajectory_loading.h"
+#include "isurface/machine/machine.h"
+
+namespace isurface {
+
+class BiipReader;
+
+// True when the file starts with a Biip dump's magic bytes: the format is decided by content,
+// not by the name's extension.
+bool isBiipFile(const std::string& path);
+
+// A program and the dump made from it, as a user names them; either may be empty.
+struct RunFiles {
+  std::string program, dump;
+};
+
+// Files as named on a command line or dropped together: a dump right after a program joins
+// that program; any other file stands alone.
+std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths);
+
+// Interprets a program; its warnings go to `warnings`, its first error is thrown (with
+// options.keepGoing every error is reported by the caller's printer first, see cli).
+Program readProgram(const std::string& path, const ProgressCallback& progress = {},
+                    std::vector<std::string>* warnings = nullptr);
+
+// The machine a dump's metadata says it was made with (a simulation's dump names it), if any.
+std::optional<Machine> machineOfDump(const BiipReader& reader);
+
+// Why a dump cannot belong to a program, or nothing when it may: its metadata names another
+// program, its line numbers run past the program's last line, or its samples leave the
+// program's path (more than 1 % of the samples checked lie farther than kJoinDistance from
+// every move near their line).
+std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory& samples, const Program& program);
+constexpr double kJoinDistance = 1.0;  // mm
+
+struct OpenRunRequest {
+  RunFiles files;
+  // The machine to simulate with when there is no dump; when empty, the default machine.
+  std::optional<Machine> machine;
+  TrajectoryChannels channels;
+  bool force = false;  // join a dump to a program that does not look like its own
+};
+
+// A program and its samples: read from the dump, or simulated with the machine.
+struct OpenedRun {
+  RunFiles files;
+  std::shared_ptr<const Program> program;     // null for a dump alone
+  std::shared_ptr<const Trajectory> samples;  // null when a program has no motion
+  Machine machine;        // what made the samples: the dump's own, else the simulation's
+  bool machineKnown = true;  // false: a dump that names no machine (a trace); `machine` is the default
+  std::vector<std::string> warnings;
+};
+
+// Throws InputError for a bad file, and for a dump that does not belong to its program (the
+// message names both files) unless request.force.
+OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress = {});
+
+// Simulates a program in memory with a machine (progress 0..1).
+Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress = {});
+
+}  // namespace isurface

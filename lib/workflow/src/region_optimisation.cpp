@@ -1,0 +1,108 @@
+// Re-optimising a region: choose it, re-fit it, simulate the new program, measure both.
+#include "isurface/workflow/region_optimisation.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+#include "isurface/analysis/quality_regions.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/workflow/run_inputs.h"
+
+namespace isurface {
+
+namespace {
+
+std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
+  std::vector<Vec3> points;
+  for (std::size_t i = 0; i < program.moves.size(); ++i)
+    if (program.moves[i].isMotion() && program.moves[i].line >= lines.first && program.moves[i].line <= lines.last) {
+      if (points.empty()) points.push_back(program.startOf(i));
+      points.push_back(program.moves[i].end);
+    }
+  return points;
+}
+
+std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) {
+  Vec3 lower = Vec3::Constant(std::numeric_limits<double>::infinity()), upper = -lower;
+  for (const Vec3& p : points) lower = lower.cwiseMin(p), upper = upper.cwiseMax(p);
+  if (points.empty()) lower = upper = Vec3::Zero();
+  return {lower, upper};
+}
+
+}  // namespace
+
+SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program) {
+  SurfaceRun run;
+  PassOptions options;
+  options.program = program;
+  run.passes = splitPasses(*samples, options);
+  run.mesh = std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*samples, run.passes));
+  run.samples = std::move(samples);
+  return run;
+}
+
+ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source) {
+  const QualityReport report = findQualityRegions(*run.samples, *run.mesh);
+  const QualityRegion* worst = worstRegionInsidePasses(report);
+  if (!worst)
+    throw InputError(Diagnostic{source, 0, 0,
+                                report.regions.empty() ? "no region beyond the quality thresholds to optimise"
+                                                       : "every region beyond the quality thresholds lies where passes start or end"});
+  return {widenToWholePasses(*run.samples, run.passes, {worst->firstLine, worst->lastLine}), worst->lower, worst->upper,
+          worst->vertices};
+}
+
+std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
+  const Trajectory& t = *run.samples;
+  for (const Pass& pass : run.passes.passes) {
+    const auto begin = t.line.begin() + static_cast<std::ptrdiff_t>(pass.begin);
+    const auto end = t.line.begin() + static_cast<std::ptrdiff_t>(pass.end);
+    if (std::find(begin, end, line) == end) continue;
+    LineRange lines{~std::uint32_t(0), 0};
+    for (auto it = begin; it != end; ++it)
+      if (*it != 0) lines.first = std::min(lines.first, *it), lines.last = std::max(lines.last, *it);
+    return lines;
+  }
+  return std::nullopt;
+}
+
+RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
+                                  const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
+  RegionOptimisation r;
+  r.lines = request.lines;
+  r.result = optimizeRegion(text, program, request.lines, machine, request.options);
+  if (progress) progress(0.2);
+  InterpretResult reread = interpretGcode(r.result.text, program.source);
+  if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
+  r.program = std::make_shared<const Program>(std::move(reread.program));
+  r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.2, 0.9))),
+                       r.program.get());
+  // The figures look where the defect was found (a box), else where the path was re-fitted; a
+  // re-fitted part that holds no surface sample (one pass, a flat box) gives way to the region.
+  std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
+  r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
+  if (!request.box && r.before.samples == 0) {
+    std::tie(r.lower, r.upper) = boundingBox(regionPoints(program, request.lines));
+    r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
+  }
+  r.afterMetrics = measureRegion(*r.after.samples, *r.after.mesh, r.result.newRange, r.lower, r.upper);
+  r.maxPathDistance =
+      polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
+  r.timeBefore = machiningTime(*before.samples);
+  r.timeAfter = machiningTime(*r.after.samples);
+  if (progress) progress(1.0);
+  return r;
+}
+
+std::string regionSummary(const RegionOptimisation& r) {
+  return fmt::format(
+      "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
+      "{:.1f} -> {:.1f} mm/min, largest inconsistency between passes {:.1f} -> {:.1f} mm/min, jerk peak "
+      "{:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most",
+      r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, r.before.speedFluctuation,
+      r.afterMetrics.speedFluctuation, r.before.maxSpeedInconsistency, r.afterMetrics.maxSpeedInconsistency,
+      r.before.maxJerk, r.afterMetrics.maxJerk, r.maxPathDistance);
+}
+
+}  // namespace isurface

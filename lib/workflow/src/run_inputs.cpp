@@ -1,0 +1,167 @@
+// Opening programs and dumps, and joining a dump to its program.
+#include "isurface/workflow/run_inputs.h"
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <unordered_map>
+
+#include "isurface/gcode/path_segment.h"
+#include "isurface/io/biip.h"
+#include "isurface/nc/sample_trajectory.h"
+#include "isurface/nc/simulator.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr std::size_t kJoinChecks = 2000;      // samples checked against the program's path
+constexpr double kJoinOffShare = 0.01;         // share of them that may lie off it
+constexpr double kJoinStepMm = 0.5;            // arcs are walked in steps of this length, mm
+
+std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+double distanceToSegment(const Vec3& p, const PathSegment& segment) {
+  if (!segment.arc) {
+    const Vec3 d = segment.end - segment.start;
+    const double len2 = d.squaredNorm();
+    const double t = len2 > kLengthEpsilon * kLengthEpsilon ? std::clamp((p - segment.start).dot(d) / len2, 0.0, 1.0) : 0.0;
+    return (p - (segment.start + t * d)).norm();
+  }
+  const int steps = static_cast<int>(std::clamp(segment.length / kJoinStepMm, 2.0, 256.0));
+  double best = (p - segment.start).norm();
+  for (int i = 1; i <= steps; ++i) best = std::min(best, (p - segment.at(segment.length * i / steps)).norm());
+  return best;
+}
+
+// First and last move of each line with motion.
+std::unordered_map<std::uint32_t, std::pair<std::size_t, std::size_t>> movesByLine(const Program& program) {
+  std::unordered_map<std::uint32_t, std::pair<std::size_t, std::size_t>> byLine;
+  for (std::size_t k = 0; k < program.moves.size(); ++k) {
+    if (!program.moves[k].isMotion()) continue;
+    auto [it, added] = byLine.try_emplace(program.moves[k].line, k, k);
+    if (!added) it->second.second = k;
+  }
+  return byLine;
+}
+
+// Whether a sample lies near a move of its line, or the moves just before and after (a
+// blended corner belongs to either).
+bool nearItsLine(const Program& program, const Vec3& p, std::pair<std::size_t, std::size_t> moves) {
+  const std::size_t from = moves.first > 0 ? moves.first - 1 : 0;
+  const std::size_t to = std::min(program.moves.size() - 1, moves.second + 1);
+  for (std::size_t k = from; k <= to; ++k)
+    if (program.moves[k].isMotion() && distanceToSegment(p, PathSegment::from(program, k)) <= kJoinDistance) return true;
+  return false;
+}
+
+std::optional<std::string> sourceMismatch(const BiipReader& dump, const Program& program) {
+  const nlohmann::json meta = nlohmann::json::parse(dump.header().metadataJson, nullptr, false);
+  if (!meta.is_object() || !meta.contains("source") || !meta["source"].is_string()) return std::nullopt;
+  const std::string named = meta["source"].get<std::string>();
+  if (named.empty() || fileName(named) == fileName(program.source)) return std::nullopt;
+  return "its metadata names the program " + named;
+}
+
+std::optional<std::string> pathMismatch(const Trajectory& samples, const Program& program) {
+  if (!samples.hasLine || samples.size() == 0) return std::nullopt;
+  const std::uint32_t lastLine = *std::max_element(samples.line.begin(), samples.line.end());
+  if (program.lineCount > 0 && lastLine > program.lineCount)
+    return "its samples name line " + std::to_string(lastLine) + ", past the program's last line " +
+           std::to_string(program.lineCount);
+  const auto byLine = movesByLine(program);
+  const std::size_t step = std::max<std::size_t>(1, samples.size() / kJoinChecks);
+  std::size_t checked = 0, off = 0;
+  for (std::size_t i = 0; i < samples.size(); i += step) {
+    const auto moves = byLine.find(samples.line[i]);
+    const Vec3 p = samples.commanded(i);
+    if (moves == byLine.end() || !p.allFinite()) continue;
+    ++checked;
+    if (!nearItsLine(program, p, moves->second)) ++off;
+  }
+  if (checked == 0 || double(off) <= kJoinOffShare * double(checked)) return std::nullopt;
+  return std::to_string(off) + " of " + std::to_string(checked) + " samples checked lie farther than " +
+         std::to_string(static_cast<int>(kJoinDistance)) + " mm from the program's moves of their lines";
+}
+
+}  // namespace
+
+bool isBiipFile(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char magic[4] = {};
+  in.read(magic, 4);
+  return in.gcount() == 4 && std::memcmp(magic, "BIIP", 4) == 0;
+}
+
+std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths) {
+  std::vector<RunFiles> runs;
+  for (const std::string& path : paths) {
+    const bool dump = isBiipFile(path);
+    if (dump && !runs.empty() && !runs.back().program.empty() && runs.back().dump.empty()) runs.back().dump = path;
+    else if (dump) runs.push_back({"", path});
+    else runs.push_back({path, ""});
+  }
+  return runs;
+}
+
+Program readProgram(const std::string& path, const ProgressCallback& progress, std::vector<std::string>* warnings) {
+  InterpreterOptions options;
+  options.progress = progress;
+  InterpretResult r = interpretGcodeFile(path, options);
+  if (!r.ok()) throw InputError(r.errors.front());
+  if (warnings)
+    for (const Diagnostic& w : r.program.warnings) warnings->push_back(w.str());
+  return std::move(r.program);
+}
+
+std::optional<Machine> machineOfDump(const BiipReader& reader) {
+  const nlohmann::json meta = nlohmann::json::parse(reader.header().metadataJson, nullptr, false);
+  if (!meta.is_object() || !meta.contains("machine") || !meta["machine"].is_object()) return std::nullopt;
+  try {
+    return parseMachine(meta["machine"].dump(), reader.path() + " (its machine)");
+  } catch (const InputError&) {
+    return std::nullopt;  // a trace's own notes on its machine, not a machine description
+  }
+}
+
+std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory& samples, const Program& program) {
+  if (auto why = sourceMismatch(dump, program)) return why;
+  return pathMismatch(samples, program);
+}
+
+Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress) {
+  SampleBuffer buffer;
+  simulate(program, machine, buffer, progress);
+  return trajectoryFromSamples(buffer.data, machine.cycle, program.source);
+}
+
+OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress) {
+  OpenedRun run;
+  run.files = request.files;
+  run.machine = request.machine ? *request.machine : defaultMachine();
+  const bool hasDump = !request.files.dump.empty();
+  if (!request.files.program.empty())
+    run.program = std::make_shared<const Program>(
+        readProgram(request.files.program, progressStage(progress, 0.0, hasDump ? 0.3 : 0.2), &run.warnings));
+  if (hasDump) {
+    const BiipReader reader(request.files.dump);
+    for (const std::string& w : reader.warnings()) run.warnings.push_back(request.files.dump + ": " + w);
+    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), request.channels));
+    if (run.program && !request.force)
+      if (const auto why = dumpMismatch(reader, *samples, *run.program))
+        throw InputError(Diagnostic{request.files.dump, 0, 0,
+                                    "is not a dump of " + request.files.program + ": " + *why});
+    const std::optional<Machine> own = machineOfDump(reader);
+    run.machineKnown = own.has_value();
+    if (own) run.machine = *own;
+    run.samples = std::move(samples);
+  } else if (run.program) {
+    run.samples = std::make_shared<const Trajectory>(simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0)));
+  }
+  if (progress) progress(1.0);
+  return run;
+}
+
+}  // namespace isurface
