@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "gcode_machine.h"
+#include "interpreter_state.h"
 
 namespace isurface::gcode {
 
@@ -20,7 +20,7 @@ constexpr double kMaxCycleMoves = 2e6;
 
 }  // namespace
 
-bool Machine::cycle(const Block& block, int motion, std::uint32_t column) {
+bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t column) {
   const std::string name = fmt::format("G{}", motion / 10);
   if (state_.plane != Plane::XY)
     return fail(column, fmt::format("{}: canned cycle only in G17 (XY plane)", name));

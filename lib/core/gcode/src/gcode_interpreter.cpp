@@ -12,7 +12,7 @@
 #include <cstring>
 #include <functional>
 
-#include "gcode_machine.h"
+#include "interpreter_state.h"
 
 namespace isurface {
 namespace gcode {
@@ -98,7 +98,7 @@ std::uint32_t clampToU32(std::size_t n) { return static_cast<std::uint32_t>(std:
 
 std::string fmtLength(double v) { return fmt::format("{:.4f}", v); }
 
-Machine::Machine(const InterpreterOptions& options, InterpretResult& result, std::string source)
+InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretResult& result, std::string source)
     : options_(options), result_(result), moves_(result.program.moves), source_(std::move(source)) {
   state_.position = options.startPosition;
   state_.g28 = options.g28Position;
@@ -107,25 +107,25 @@ Machine::Machine(const InterpreterOptions& options, InterpretResult& result, std
   result_.program.start = options.startPosition;
 }
 
-bool Machine::fail(std::uint32_t column, std::string message) {
+bool InterpreterState::fail(std::uint32_t column, std::string message) {
   errorColumn_ = column;
   errorMessage_ = std::move(message);
   return false;
 }
 
-void Machine::warnOnce(bool& done, std::uint32_t column, std::string message) {
+void InterpreterState::warnOnce(bool& done, std::uint32_t column, std::string message) {
   if (done) return;
   done = true;
   result_.program.warnings.push_back(Diagnostic{source_, line_, column, std::move(message)});
 }
 
-void Machine::streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released) {
+void InterpreterState::streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released) {
   sink_ = &sink;
   chunkMoves_ = std::max<std::size_t>(chunkMoves, 1);
   released_ = std::move(released);
 }
 
-void Machine::deliverMoves(bool all) {
+void InterpreterState::deliverMoves(bool all) {
   const std::size_t last = all ? moves_.size() : moves_.size() - 1;
   std::size_t first = 0;
   while (first < last) {
@@ -137,7 +137,7 @@ void Machine::deliverMoves(bool all) {
   moves_.erase(moves_.begin(), moves_.begin() + static_cast<std::ptrdiff_t>(first));
 }
 
-void Machine::run(std::string_view text) {
+void InterpreterState::run(std::string_view text) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   if (sink_) {
@@ -185,7 +185,7 @@ void Machine::run(std::string_view text) {
   if (options_.progress) options_.progress(1.0);
 }
 
-void Machine::runLine(const char* begin, const char* end) {
+void InterpreterState::runLine(const char* begin, const char* end) {
   LexError lexError;
   if (!lexBlock(begin, end, block_, lexError)) {
     errorColumn_ = lexError.column;
@@ -207,7 +207,7 @@ void Machine::runLine(const char* begin, const char* end) {
   }
 }
 
-bool Machine::groupCodes(const Block& block, GroupedCodes& groups) {
+bool InterpreterState::groupCodes(const Block& block, GroupedCodes& groups) {
   std::fill(std::begin(groups.code), std::end(groups.code), -1);
   for (int i = 0; i < block.gCount; ++i) {
     const int code = block.g[i];
@@ -231,7 +231,7 @@ bool Machine::groupCodes(const Block& block, GroupedCodes& groups) {
   return true;
 }
 
-bool Machine::executeBlock(const Block& block) {
+bool InterpreterState::executeBlock(const Block& block) {
   switch (block.kind) {
     case BlockKind::Deleted: return true;
     case BlockKind::Percent:
@@ -375,7 +375,7 @@ bool Machine::executeBlock(const Block& block) {
   return true;
 }
 
-void Machine::applyModalCodes(const GroupedCodes& groups) {
+void InterpreterState::applyModalCodes(const GroupedCodes& groups) {
   if (groups.has(kGroupPlane)) {
     const int code = groups.code[kGroupPlane];
     state_.plane = code == kG17 ? Plane::XY : code == kG18 ? Plane::ZX : Plane::YZ;
@@ -401,8 +401,8 @@ void Machine::applyModalCodes(const GroupedCodes& groups) {
 InterpretResult interpretGcode(std::string_view text, const std::string& sourceName,
                                const InterpreterOptions& options) {
   InterpretResult result;
-  gcode::Machine machine(options, result, sourceName);
-  machine.run(text);
+  gcode::InterpreterState state(options, result, sourceName);
+  state.run(text);
   return result;
 }
 
@@ -468,16 +468,16 @@ StreamedInterpretation streamText(std::string_view text, const std::string& sour
                                   const InterpreterOptions& options, std::size_t chunkMoves,
                                   std::function<void(const char*)> released) {
   InterpretResult result;
-  gcode::Machine machine(options, result, sourceName);
-  machine.streamTo(sink, chunkMoves, std::move(released));
-  machine.run(text);
+  gcode::InterpreterState state(options, result, sourceName);
+  state.streamTo(sink, chunkMoves, std::move(released));
+  state.run(text);
   StreamedInterpretation out;
   out.source = std::move(result.program.source);
   out.start = result.program.start;
   out.warnings = std::move(result.program.warnings);
   out.errors = std::move(result.errors);
   out.lineCount = result.program.lineCount;
-  out.moveCount = machine.movesMade();
+  out.moveCount = state.movesMade();
   return out;
 }
 

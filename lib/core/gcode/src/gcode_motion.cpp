@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "gcode_machine.h"
+#include "interpreter_state.h"
 #include "isurface/gcode/arc.h"
 
 namespace isurface::gcode {
@@ -42,9 +42,9 @@ constexpr double kTiny = 1e-12;
 
 }  // namespace
 
-bool Machine::hasAxisWords(const Block& block) const { return (block.present & kAxisBits) != 0; }
+bool InterpreterState::hasAxisWords(const Block& block) const { return (block.present & kAxisBits) != 0; }
 
-Vec3 Machine::targetOf(const Block& block) const {
+Vec3 InterpreterState::targetOf(const Block& block) const {
   Vec3 t = state_.position;
   for (int i = 0; i < 3; ++i) {
     const char c = kAxisLetter[i];
@@ -55,7 +55,7 @@ Vec3 Machine::targetOf(const Block& block) const {
   return t;
 }
 
-void Machine::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags) {
+void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags) {
   Move& m = moves_.emplace_back();
   m.end = end;
   m.line = line_;
@@ -65,7 +65,7 @@ void Machine::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extr
   if (kind != MoveKind::Dwell) state_.position = end;
 }
 
-void Machine::emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns,
+void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns,
                       float feed) {
   Move& m = moves_.emplace_back();
   m.end = end;
@@ -79,7 +79,7 @@ void Machine::emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsign
   state_.position = end;
 }
 
-bool Machine::straight(const Block& block, int motion, std::uint32_t column) {
+bool InterpreterState::straight(const Block& block, int motion, std::uint32_t column) {
   const Vec3 end = targetOf(block);
   if (motion == kG0) {
     emit(MoveKind::Rapid, end, 0.0f);
@@ -97,7 +97,7 @@ bool Machine::straight(const Block& block, int motion, std::uint32_t column) {
   return true;
 }
 
-bool Machine::arc(const Block& block, int motion, std::uint32_t column) {
+bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column) {
   const Plane plane = state_.plane;
   const PlaneAxes ax = planeAxes(plane);
   const char normalOffset = kOffsetLetter[ax.w];
@@ -195,7 +195,7 @@ bool Machine::arc(const Block& block, int motion, std::uint32_t column) {
   return true;
 }
 
-bool Machine::dwell(const Block& block, std::uint32_t column) {
+bool InterpreterState::dwell(const Block& block, std::uint32_t column) {
   if (!block.has('P')) return fail(column, "Dwell time P word missing with G4");
   const double seconds = block.get('P');
   if (seconds < 0) return fail(block.col('P'), "Negative dwell time P word used with G4");
@@ -203,7 +203,7 @@ bool Machine::dwell(const Block& block, std::uint32_t column) {
   return true;
 }
 
-bool Machine::homeMove(const Block& block, int code) {
+bool InterpreterState::homeMove(const Block& block, int code) {
   const Vec3& home = code == kG28 ? state_.g28 : state_.g30;
   if (!hasAxisWords(block)) {
     emit(MoveKind::Rapid, home, 0.0f);

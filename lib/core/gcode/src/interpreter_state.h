@@ -1,7 +1,8 @@
 #pragma once
-// The RS274/NGC machine model behind interpretGcode: modal state, one block's execution, moves
-// out. Private to the core library; split over gcode_interpreter.cpp (blocks and modal codes),
-// gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp (canned cycles).
+// The interpreter's state behind interpretGcode (RS274/NGC): modal state, one block's
+// execution, moves out. Private to the gcode module; split over gcode_interpreter.cpp (blocks
+// and modal codes), gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp
+// (canned cycles). Not the machine description (isurface/machine/machine.h).
 #include <functional>
 #include <string>
 #include <vector>
@@ -76,9 +77,9 @@ struct GroupedCodes {
   bool has(Group g) const { return code[g] >= 0; }
 };
 
-class Machine {
+class InterpreterState {
  public:
-  Machine(const InterpreterOptions& options, InterpretResult& result, std::string source);
+  InterpreterState(const InterpreterOptions& options, InterpretResult& result, std::string source);
 
   // Hands the moves to `sink` in chunks of about `chunkMoves` between blocks instead of keeping
   // them all; `released(p)` is told now and then that the text before p is no longer needed.
