@@ -14,6 +14,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/gcode/gcode_stream.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/workflow/simulation_dump.h"
 #include "program_corpus.h"
 #include "test_support.h"
 

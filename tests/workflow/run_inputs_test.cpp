@@ -1,0 +1,98 @@
+// Opening programs and dumps, and joining a dump to its program: once, for the CLI and the app.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "isurface/io/biip.h"
+#include "workflow_fixtures.h"
+
+using namespace isurface;
+using namespace isurface::test;
+
+namespace {
+
+std::string messageOf(const OpenRunRequest& request) {
+  try {
+    openRun(request);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(runInputs, FilesArePairedByContentADumpJoiningTheProgramBeforeIt) {
+  const std::string dump = transitionDump();
+  // A dump named like a program, and a program named like a dump: told apart by their bytes.
+  const std::string disguisedDump = (scratchDir() / "dump-named.nc").string();
+  const std::string disguisedProgram = (scratchDir() / "program-named.biip").string();
+  std::filesystem::copy_file(dump, disguisedDump, std::filesystem::copy_options::overwrite_existing);
+  std::ofstream(disguisedProgram) << "G1 X1 F100\n";
+  EXPECT_TRUE(isBiipFile(disguisedDump));
+  EXPECT_FALSE(isBiipFile(disguisedProgram));
+  const auto runs = pairRunFiles({"a.nc", dump, disguisedProgram, disguisedDump, dump});
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[0].program, "a.nc");
+  EXPECT_EQ(runs[0].dump, dump);
+  EXPECT_EQ(runs[1].program, disguisedProgram);
+  EXPECT_EQ(runs[1].dump, disguisedDump);
+  EXPECT_EQ(runs[2].program, "");
+  EXPECT_EQ(runs[2].dump, dump);
+}
+
+TEST(runInputs, TheProgramsOwnDumpJoinsAndBringsTheMachineItWasMadeWith) {
+  const std::string dump = simulatedDump("transition-surface", slowMachine(), "slow");
+  OpenRunRequest request;
+  request.files = {sourcePath("samples/transition-surface.nc"), dump};
+  const OpenedRun run = openRun(request);
+  ASSERT_TRUE(run.program && run.samples);
+  EXPECT_EQ(run.samples->size(), BiipReader(dump).recordCount());
+  EXPECT_TRUE(run.machineKnown);
+  EXPECT_EQ(run.machine.name, "slow test machine");
+  EXPECT_DOUBLE_EQ(run.machine.cycle, 0.002);
+  EXPECT_DOUBLE_EQ(run.machine.axes[0].maxAcceleration, slowMachine().axes[0].maxAcceleration);
+}
+
+TEST(runInputs, ADumpOfAnotherProgramIsRefusedNamingBothFiles) {
+  const std::string dump = transitionDump();
+  const std::string program = sourcePath("samples/wuzhishan.nc");
+  OpenRunRequest request;
+  request.files = {program, dump};
+  const std::string message = messageOf(request);
+  EXPECT_NE(message.find(dump), std::string::npos) << message;
+  EXPECT_NE(message.find(program), std::string::npos) << message;
+  EXPECT_NE(message.find("transition-surface.nc"), std::string::npos) << message;  // what its metadata names
+  request.force = true;
+  EXPECT_EQ(messageOf(request), "");
+}
+
+TEST(runInputs, ADumpThatNamesNoProgramIsRefusedWhenItsSamplesLeaveThePath) {
+  // A trace-like dump (no source in its metadata) of the transition surface, given with another
+  // program: its samples lie far from that program's moves.
+  OpenRunRequest own;
+  own.files = {"", transitionDump()};
+  Trajectory samples = *openRun(own).samples;
+  samples.source = "";
+  const std::string anonymous = (scratchDir() / "anonymous.biip").string();
+  writeTrajectoryBiip(samples, anonymous);
+  OpenRunRequest request;
+  request.files = {sourcePath("samples/wuzhishan.nc"), anonymous};
+  const std::string message = messageOf(request);
+  EXPECT_NE(message.find("lie farther than"), std::string::npos) << message;
+  // With its own program it joins.
+  request.files.program = sourcePath("samples/transition-surface.nc");
+  EXPECT_EQ(messageOf(request), "");
+}
+
+TEST(runInputs, AProgramAloneIsSimulatedWithTheGivenMachine) {
+  OpenRunRequest request;
+  request.files = {sourcePath("samples/transition-surface.nc"), ""};
+  request.machine = slowMachine();
+  const OpenedRun run = openRun(request);
+  ASSERT_TRUE(run.samples);
+  EXPECT_DOUBLE_EQ(run.samples->cycle, 0.002);
+  EXPECT_EQ(run.machine.name, "slow test machine");
+  // Machining time is first sample to last: n - 1 cycles.
+  EXPECT_DOUBLE_EQ(machiningTime(*run.samples), double(run.samples->size() - 1) * 0.002);
+}
