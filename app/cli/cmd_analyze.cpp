@@ -105,8 +105,10 @@ int runAnalyze(const AnalyzeOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "analyze", "Predict surface defects: regions where adjacent passes or consecutive samples disagree",
+}  // namespace
+
+Command analyzeCommand() {
+  return Command{"analyze", "Predict surface defects: regions where adjacent passes or consecutive samples disagree",
     [](CLI::App& sub) {
       auto o = std::make_shared<AnalyzeOptions>();
       sub.add_option("gcode", o->gcode, "G-code program")->required();
@@ -122,7 +124,7 @@ const bool registered = registerCommand(
       sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runAnalyze(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -62,9 +62,11 @@ std::function<int()> setup(CLI::App& sub) {
   };
 }
 
-static const bool registered = registerCommand(
-    "canon", "Interpret a G-code program and print its moves, one line each", setup);
-
 }  // namespace
+
+Command canonCommand() {
+  return Command{"canon", "Interpret a G-code program and print its moves, one line each", setup};
+}
+
 
 }  // namespace isurface::cli

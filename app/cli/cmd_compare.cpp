@@ -168,8 +168,10 @@ int runCompare(const CompareOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "compare", "Compare two runs of a program (Biip dumps) by G-code line and arc length; JSON and a difference map",
+}  // namespace
+
+Command compareCommand() {
+  return Command{"compare", "Compare two runs of a program (Biip dumps) by G-code line and arc length; JSON and a difference map",
     [](CLI::App& sub) {
       auto o = std::make_shared<CompareOptions>();
       sub.add_option("a", o->runA, "run A, the reference (Biip dump)")->required();
@@ -191,7 +193,7 @@ const bool registered = registerCommand(
                      "s; a line's time difference within it counts as equal when grouping ranges")->capture_default_str();
       sub.add_flag("--linuxcnc-lines", o->linuxcncLines, "mapping lines for a run without them: as LinuxCNC reports blends");
       return [o] { return runCompare(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -66,8 +66,10 @@ int runExport(const ExportOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "export", "Write the CL surface of a Biip dump with every scalar as a .vtp file (ParaView)", [](CLI::App& sub) {
+}  // namespace
+
+Command exportCommand() {
+  return Command{"export", "Write the CL surface of a Biip dump with every scalar as a .vtp file (ParaView)", [](CLI::App& sub) {
       auto o = std::make_shared<ExportOptions>();
       sub.add_option("biip", o->biip, "Biip dump")->required();
       sub.add_option("--vtp", o->vtp, "VTK XML polydata file to write")->required();
@@ -75,7 +77,7 @@ const bool registered = registerCommand(
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runExport(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

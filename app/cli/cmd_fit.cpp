@@ -8,6 +8,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "isurface/base/units.h"
 #include "isurface/fitting/akima_spline.h"
 #include "isurface/fitting/constant_speed_intervals.h"
 
@@ -44,7 +45,7 @@ double maxJoinAngleDeg(const std::vector<CubicSegment>& segments) {
   for (std::size_t i = 0; i + 1 < segments.size(); ++i) {
     const Vec3 a = segments[i].derivative(segments[i].length), b = segments[i + 1].derivative(0);
     // atan2 rather than acos: acos loses all precision for nearly parallel tangents.
-    worst = std::max(worst, std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / 3.14159265358979323846);
+    worst = std::max(worst, std::atan2(a.cross(b).norm(), a.dot(b)) * 180.0 / kPi);
   }
   return worst;
 }
@@ -96,15 +97,17 @@ int runFit(const FitOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "fit", "Fit an Akima spline through the CL points of a line range and resample it (JSON)",
+}  // namespace
+
+Command fitCommand() {
+  return Command{"fit", "Fit an Akima spline through the CL points of a line range and resample it (JSON)",
     [](CLI::App& sub) {
       auto o = std::make_shared<FitOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
       sub.add_option("--lines", o->lines, "source lines A-B (1-based, inclusive)")->required();
       sub.add_option("--tolerance", o->tolerance, "chord tolerance of the resampled moves, mm")->capture_default_str();
       return [o] { return runFit(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

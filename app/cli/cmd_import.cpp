@@ -67,8 +67,10 @@ int runImport(const ImportOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "import", "Convert a recorded machine trace (halsampler text or CSV) to a Biip dump",
+}  // namespace
+
+Command importCommand() {
+  return Command{"import", "Convert a recorded machine trace (halsampler text or CSV) to a Biip dump",
     [](CLI::App& sub) {
       auto o = std::make_shared<ImportOptions>();
       sub.add_option("format", o->format, "trace format")->required()->check(CLI::IsMember({"halsampler", "csv"}));
@@ -84,7 +86,7 @@ const bool registered = registerCommand(
       sub.add_flag("--linuxcnc-lines", o->linuxcncLines,
                    "line mapping: give blends into a move its line, as LinuxCNC reports them");
       return [o] { return runImport(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

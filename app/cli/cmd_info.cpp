@@ -99,8 +99,10 @@ nlohmann::ordered_json describe(const BiipReader& reader) {
   return out;
 }
 
-static const bool registered = registerCommand(
-    "info", "Describe a Biip file: header, channels, extent, line range, speed/acceleration/jerk maxima",
+}  // namespace
+
+Command infoCommand() {
+  return Command{"info", "Describe a Biip file: header, channels, extent, line range, speed/acceleration/jerk maxima",
     [](CLI::App& sub) -> std::function<int()> {
       auto file = std::make_shared<std::string>();
       auto output = std::make_shared<std::string>();
@@ -121,8 +123,8 @@ static const bool registered = registerCommand(
         }
         return kExitOk;
       };
-    });
+    }};
+}
 
-}  // namespace
 
 }  // namespace isurface::cli

@@ -98,8 +98,10 @@ int runIntervals(const IntervalsOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "intervals", "Constant speed intervals of a program's cutting moves, with planned feeds (JSON)",
+}  // namespace
+
+Command intervalsCommand() {
+  return Command{"intervals", "Constant speed intervals of a program's cutting moves, with planned feeds (JSON)",
     [](CLI::App& sub) {
       auto o = std::make_shared<IntervalsOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
@@ -111,7 +113,7 @@ const bool registered = registerCommand(
                      "mm of path per section where passes have no boundary")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description (JSON); default: built-in");
       return [o] { return runIntervals(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -123,8 +123,10 @@ int runLocate(const LocateOptions& o) {
   return kExitOk;
 }
 
-static const bool registered = registerCommand(
-    "locate", "Find a sample by G-code line, index or nearest point and print its motion as JSON",
+}  // namespace
+
+Command locateCommand() {
+  return Command{"locate", "Find a sample by G-code line, index or nearest point and print its motion as JSON",
     [](CLI::App& sub) -> std::function<int()> {
       auto o = std::make_shared<LocateOptions>();
       sub.add_option("file", o->file, "Biip file (Biip.dat or *.biip)")->required();
@@ -132,8 +134,8 @@ static const bool registered = registerCommand(
       sub.add_option("--sample", o->sample, "this sample (0-based)");
       sub.add_option("--point", o->point, "the sample nearest this point, X,Y,Z in mm");
       return [o] { return runLocate(*o); };
-    });
+    }};
+}
 
-}  // namespace
 
 }  // namespace isurface::cli

@@ -121,8 +121,10 @@ int runOptimize(const OptimizeCliOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "optimize", "Re-optimise a region (constant speed intervals, Akima fitting), write it and compare", [](CLI::App& sub) {
+}  // namespace
+
+Command optimizeCommand() {
+  return Command{"optimize", "Re-optimise a region (constant speed intervals, Akima fitting), write it and compare", [](CLI::App& sub) {
       auto o = std::make_shared<OptimizeCliOptions>();
       sub.add_option("gcode", o->input, "G-code program")->required();
       sub.add_option("-o,--output", o->output, "new G-code program to write")->required();
@@ -136,7 +138,7 @@ const bool registered = registerCommand(
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description (JSON)");
       return [o] { return runOptimize(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -115,8 +115,10 @@ int runRender(const RenderOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "render", "Render a quality map of a program (simulated, or from its Biip dump) to a PNG, headless",
+}  // namespace
+
+Command renderCommand() {
+  return Command{"render", "Render a quality map of a program (simulated, or from its Biip dump) to a PNG, headless",
     [](CLI::App& sub) {
       auto o = std::make_shared<RenderOptions>();
       sub.add_option("gcode", o->gcode, "G-code program (or a Biip dump alone, shown without a program)")->required();
@@ -140,7 +142,7 @@ const bool registered = registerCommand(
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
       return [o] { return runRender(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

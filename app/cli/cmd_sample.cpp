@@ -29,14 +29,16 @@ int runSample(const SampleOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "sample", "Write one of the paper's sample parts as G-code (D6R3 ball-end mill, F3000)", [](CLI::App& sub) {
+}  // namespace
+
+Command sampleCommand() {
+  return Command{"sample", "Write one of the paper's sample parts as G-code (D6R3 ball-end mill, F3000)", [](CLI::App& sub) {
       auto o = std::make_shared<SampleOptions>();
       sub.add_option("name", o->name, "sample part name");
       sub.add_option("-o,--output", o->output, "G-code file to write (default NAME.nc)");
       sub.add_flag("--list", o->list, "list the sample parts");
       return [o] { return runSample(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -51,8 +51,10 @@ int runSimulate(const SimulateOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "simulate", "Simulate the NC interpolator on a G-code program and write a Biip dump",
+}  // namespace
+
+Command simulateCommand() {
+  return Command{"simulate", "Simulate the NC interpolator on a G-code program and write a Biip dump",
     [](CLI::App& sub) {
       auto o = std::make_shared<SimulateOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
@@ -61,7 +63,7 @@ const bool registered = registerCommand(
       sub.add_flag("--keep-going", o->keepGoing, "report every bad block, not only the first");
       sub.add_flag("--json", o->json, "print the summary as JSON");
       return [o] { return runSimulate(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

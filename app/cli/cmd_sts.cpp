@@ -8,6 +8,7 @@
 #include "command.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
 #include "isurface/sts/sts_report.h"
 #include "isurface/sts/sts_samples.h"
 #include "isurface/vis/quality_map.h"
@@ -16,8 +17,6 @@
 
 namespace isurface::cli {
 namespace {
-
-constexpr double kDegPerRad = 180.0 / 3.14159265358979323846;
 
 struct StsOptions {
   std::string surface = "toric", discretise = "height", nodes = "nonuniform", interp = "spline";
@@ -62,7 +61,7 @@ int runSts(const StsOptions& o) {
   SpiralParameters p = (o.surface == "sinusoid" ? paperSinusoidCase() : paperToricCase()).spiral;
   if (*o.radiusOpt) p.workpieceRadius = o.radius;
   if (*o.feedOpt) p.feedPerRev = o.feed;
-  if (*o.angleOpt) p.angleStep = o.angleStepDeg / kDegPerRad;
+  if (*o.angleOpt) p.angleStep = o.angleStepDeg / kDegreesPerRadian;
   if (*o.arcOpt) p.arcStep = o.arcStep;
   if (*o.heightOpt) p.heightStep = o.heightStep;
   if (*o.toolOpt) p.toolRadius = o.toolRadius;
@@ -93,8 +92,10 @@ int runSts(const StsOptions& o) {
   return kExitOk;
 }
 
-const bool registered = registerCommand(
-    "sts", "Slow tool servo turning tool path (spiral, nose compensation, PVT) and its errors",
+}  // namespace
+
+Command stsCommand() {
+  return Command{"sts", "Slow tool servo turning tool path (spiral, nose compensation, PVT) and its errors",
     [](CLI::App& sub) {
       auto o = std::make_shared<StsOptions>();
       sub.add_option("--surface", o->surface,
@@ -120,7 +121,7 @@ const bool registered = registerCommand(
       sub.add_option("--spindle-rpm", o->spindleRpm, "spindle speed, rev/min (PVT times)");
       sub.add_option("--samples", o->samples, "error samples inside each segment");
       return [o] { return runSts(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -96,8 +96,10 @@ int runSnapshot(const SnapshotOptions& o) {
   return status;
 }
 
-const bool registered = registerCommand(
-    "ui-snapshot", "Draw the whole application window headless (OSMesa) to a PNG", [](CLI::App& sub) {
+}  // namespace
+
+Command uiSnapshotCommand() {
+  return Command{"ui-snapshot", "Draw the whole application window headless (OSMesa) to a PNG", [](CLI::App& sub) {
       auto o = std::make_shared<SnapshotOptions>();
       sub.add_option("files", o->files, "G-code programs and Biip dumps to open");
       sub.add_option("-o,--output", o->output, "PNG file to write")->required();
@@ -113,7 +115,7 @@ const bool registered = registerCommand(
           ->needs(optimize)
           ->capture_default_str();
       return [o] { return runSnapshot(*o); };
-    });
+    }};
+}
 
-}  // namespace
 }  // namespace isurface::cli

@@ -1,16 +1,38 @@
 #pragma once
-// Every isurface-cli subcommand registers itself here from its own file.
+// The isurface-cli subcommands: each file cmd_NAME.cpp makes one; commands.cpp lists them.
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace isurface::cli {
 
 // Adds the subcommand's options to `sub` and returns what runs it; its result is the exit code.
 using CommandSetup = std::function<std::function<int()>(CLI::App& sub)>;
 
-// Called from a static initialiser in each command's file.
-bool registerCommand(std::string name, std::string description, CommandSetup setup);
+struct Command {
+  std::string name, description;
+  CommandSetup setup;
+};
+
+Command analyzeCommand();
+Command canonCommand();
+Command compareCommand();
+Command exportCommand();
+Command fitCommand();
+Command importCommand();
+Command infoCommand();
+Command intervalsCommand();
+Command locateCommand();
+Command optimizeCommand();
+Command renderCommand();
+Command sampleCommand();
+Command simulateCommand();
+Command stsCommand();
+Command uiSnapshotCommand();
+
+// Every command, in the order `isurface-cli --help` lists them.
+std::vector<Command> allCommands();
 
 // Exit codes shared by all commands.
 constexpr int kExitOk = 0;

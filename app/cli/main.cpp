@@ -1,32 +1,10 @@
 // isurface-cli: every headless job of iSurface, one subcommand each.
 #include <cstdio>
 #include <map>
-#include <memory>
-#include <vector>
 
 #include "command.h"
 #include "inputs.h"
 #include "isurface/base/diagnostic.h"
-
-namespace isurface::cli {
-
-namespace {
-struct Registered {
-  std::string name, description;
-  CommandSetup setup;
-};
-std::vector<Registered>& registry() {
-  static std::vector<Registered> commands;
-  return commands;
-}
-}  // namespace
-
-bool registerCommand(std::string name, std::string description, CommandSetup setup) {
-  registry().push_back({std::move(name), std::move(description), std::move(setup)});
-  return true;
-}
-
-}  // namespace isurface::cli
 
 int main(int argc, char** argv) {
   using namespace isurface::cli;
@@ -34,7 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "isurface-cli 0.1.0");
   std::map<CLI::App*, std::function<int()>> runners;
-  for (auto& command : registry()) {
+  for (const Command& command : allCommands()) {
     CLI::App* sub = app.add_subcommand(command.name, command.description);
     runners[sub] = command.setup(*sub);
   }

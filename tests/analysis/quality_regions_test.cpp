@@ -1,11 +1,8 @@
 // Quality prediction: regions where neighbouring passes disagree, found, bounded and ranked.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-
 #include "surface_fixtures.h"
 #include "isurface/analysis/quality_regions.h"
-#include "test_support.h"
 
 using namespace isurface;
 using namespace isurface::test;
@@ -64,29 +61,4 @@ TEST(qualityRegions, NothingBeyondTheThresholdsGivesNoRegion) {
   thresholds.jerk = 1e12;
   thresholds.accelInconsistency = 1e9;
   EXPECT_TRUE(findQualityRegions(t, mesh, thresholds).regions.empty());
-}
-
-// The transition sample's passes disagree where they start and stop (zig-zag: one pass speeds
-// up where its neighbour slows down) and in the transition: analyze tells the two apart, and the
-// worst region inside the passes is the transition.
-TEST(qualityRegions, AnalyzeFindsTheTransitionOfTheSample) {
-  const std::string out = (scratchDir() / "analysis.json").string();
-  const CommandResult r = runCli("analyze " + sourcePath("samples/transition-surface.nc") + " -o " + out);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  EXPECT_NE(r.out.find("worst inside the passes at lines"), std::string::npos) << r.out;
-  const nlohmann::json report = nlohmann::json::parse(readFile(out));
-  ASSERT_GE(report["regions"].size(), 3u);
-  const nlohmann::json* worst = nullptr;
-  for (const auto& region : report["regions"]) {
-    const double lowX = region["bounding_box"]["min"][0].get<double>(), highX = region["bounding_box"]["max"][0].get<double>();
-    // The passes run from x = 0 to x = 80.
-    EXPECT_EQ(region["at_pass_ends"].get<bool>(), highX < 3.0 || lowX > 77.0) << region.dump();
-    if (!worst && !region["at_pass_ends"].get<bool>()) worst = &region;
-  }
-  ASSERT_NE(worst, nullptr);
-  // The transition runs from x = 22 to x = 22 + 40 mm at most.
-  EXPECT_GT((*worst)["bounding_box"]["min"][0].get<double>(), 20.0);
-  EXPECT_LT((*worst)["bounding_box"]["max"][0].get<double>(), 62.0);
-  EXPECT_GE(report["regions"][0]["severity"].get<double>(), report["regions"].back()["severity"].get<double>());
-  EXPECT_EQ(runCli("analyze " + sourcePath("samples/transition-surface.nc") + " --speed-threshold 0 -o " + out).exitCode, 2);
 }

@@ -8,6 +8,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/analysis/run_comparison.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/nc/sample_trajectory.h"
 
 namespace isurface {
 namespace {

@@ -28,11 +28,3 @@ TEST(SampleParts, EverySampleInterpretsAndCutsAtF3000) {
     EXPECT_GT(cutting, 4000u);
   }
 }
-
-TEST(SampleParts, UnknownNameIsRefused) {
-  EXPECT_THROW(generateSamplePart("no-such-part"), std::invalid_argument);
-  const test::CommandResult r = test::runCli("sample no-such-part -o /tmp/never.nc");
-  EXPECT_EQ(r.exitCode, 2);
-  EXPECT_NE(r.err.find("unknown sample 'no-such-part'"), std::string::npos);
-  EXPECT_FALSE(test::fileExists("/tmp/never.nc"));
-}

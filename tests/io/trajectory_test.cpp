@@ -8,6 +8,8 @@
 #include "isurface/io/biip.h"
 #include "isurface/nc/interpolator.h"
 #include "isurface/base/trajectory.h"
+#include "isurface/io/trajectory_loading.h"
+#include "isurface/nc/sample_trajectory.h"
 #include "test_support.h"
 
 using namespace isurface;

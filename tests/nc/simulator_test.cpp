@@ -10,6 +10,7 @@
 #include "isurface/nc/feed_plan.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/workflow/simulation_dump.h"
 #include "test_support.h"
 
 using namespace isurface;

@@ -8,6 +8,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/nc/sample_trajectory.h"
 #include "test_support.h"
 
 using namespace isurface;

@@ -1,15 +1,16 @@
 // The application's selection sync through the inspector itself (no window needed: its panels
-// are only drawn by frame()), and the whole UI drawn headless against a reference picture.
+// are only drawn by frame()), and the real window under a virtual X server. (The whole UI drawn
+// headless by isurface-cli ui-snapshot: tests/cli/inspector_cli_test.cpp.)
 #include <gtest/gtest.h>
 
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 
+#include "dump_fixtures.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/panels/inspector.h"
 #include "test_support.h"
-#include "image_compare.h"
 
 using namespace isurface;
 using namespace isurface::test;
@@ -46,7 +47,7 @@ TEST(inspector, PickedLineSelectsItsFirstSampleAndBack) {
 TEST(inspector, ADumpJoinsItsProgramAndBadFilesReportErrors) {
   panels::Inspector inspector(noContext(), app_model::Settings{});
   const std::string dump = (scratchDir() / "wz.biip").string();
-  ASSERT_EQ(runCli("simulate " + sourcePath("samples/wuzhishan.nc") + " -o " + dump).exitCode, 0);
+  ASSERT_TRUE(simulateToDump(sourcePath("samples/wuzhishan.nc"), dump));
   inspector.open(sourcePath("samples/wuzhishan.nc"));
   inspector.waitUntilIdle();
   inspector.open(dump);
@@ -60,28 +61,6 @@ TEST(inspector, ADumpJoinsItsProgramAndBadFilesReportErrors) {
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
   EXPECT_NE(inspector.statusText().find("broken.nc:1"), std::string::npos);
-}
-
-TEST(uiSnapshot, WholeWindowWithAPickedLineMatchesItsReference) {
-  const std::string out = (scratchDir() / "ui.png").string();
-  const CommandResult r = runCli("ui-snapshot " + sourcePath("samples/transition-surface.nc") +
-                                 " --pick-line 2000 --size 1280x800 -o " + out);
-  ASSERT_EQ(r.exitCode, 0) << r.err;
-  const std::string reference = sourcePath("tests/data/reference/ui-transition-surface-line2000.png");
-  if (std::getenv("ISURFACE_UPDATE_REFERENCES")) {
-    std::filesystem::copy_file(out, reference, std::filesystem::copy_options::overwrite_existing);
-    GTEST_SKIP() << "reference rewritten: " << reference;
-  }
-  const ImageDifference d = compareImages(readPng(reference), readPng(out));
-  EXPECT_TRUE(matches(d)) << "worst block " << d.worstBlock << ", mean " << d.meanDifference << " (" << out << ")";
-}
-
-TEST(uiSnapshot, BadInputsExitWithTwoAndWriteNothing) {
-  const std::string out = (scratchDir() / "never-ui.png").string();
-  EXPECT_EQ(runCli("ui-snapshot /nonexistent.nc -o " + out).exitCode, 2);
-  EXPECT_EQ(runCli("ui-snapshot " + sourcePath("samples/wuzhishan.nc") + " --pick-line 3 -o " + out).exitCode, 2);
-  EXPECT_EQ(runCli("ui-snapshot --size 10x10 -o " + out).exitCode, 2);
-  EXPECT_FALSE(fileExists(out));
 }
 
 // The real window, under a virtual X server when the machine has one.
@@ -114,7 +93,7 @@ TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
 // A slow tool servo path written as a dump opens alone and is coloured by its error channels.
 TEST(inspector, SlowToolServoPathColouredByItsError) {
   const std::string dump = (scratchDir() / "sts.biip").string();
-  ASSERT_EQ(runCli("sts --surface sinusoid --interp hermite --biip " + dump).exitCode, 0);
+  ASSERT_TRUE(stsToDump("sinusoid", "hermite", dump));
   panels::Inspector inspector(noContext(), app_model::Settings{});
   inspector.open(dump);
   inspector.waitUntilIdle();

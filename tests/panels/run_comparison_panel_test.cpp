@@ -4,6 +4,7 @@
 
 #include <fstream>
 
+#include "dump_fixtures.h"
 #include "isurface/panels/inspector.h"
 #include "test_support.h"
 
@@ -28,8 +29,7 @@ std::string writeRaster(const std::string& name, int feed) {
 
 std::string simulated(const std::string& program, const std::string& name) {
   const std::string dump = (scratchDir() / name).string();
-  const CommandResult r = runCli("simulate " + program + " -o " + dump);
-  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_TRUE(simulateToDump(program, dump));
   return dump;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// What the interpreter suites share: interpreting a text and reading its first error.
+// What the interpreter suites share: interpreting a text, its program and its first error.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -10,6 +10,13 @@ namespace isurface::gcodetest {
 
 inline InterpretResult run(const std::string& text, InterpreterOptions options = {}) {
   return interpretGcode(text, "t.ngc", options);
+}
+
+// The program of a text that must interpret without errors.
+inline Program interpret(const std::string& text) {
+  const InterpretResult r = interpretGcode(text, "test.ngc");
+  EXPECT_TRUE(r.ok());
+  return r.program;
 }
 
 inline std::string firstError(const std::string& text) {

@@ -15,6 +15,7 @@
 #include "isurface/nc/simulator.h"
 #include "isurface/surface/surface_mesh.h"
 #include "isurface/base/trajectory.h"
+#include "isurface/nc/sample_trajectory.h"
 
 namespace isurface::test {
 

@@ -13,6 +13,8 @@ namespace isurface {
 
 namespace {
 
+constexpr double kRegionMarginMm = 0.5;
+
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
   for (std::size_t i = 0; i < program.moves.size(); ++i)
@@ -84,6 +86,10 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
   if (!request.box && r.before.samples == 0) {
     std::tie(r.lower, r.upper) = boundingBox(regionPoints(program, request.lines));
+    // Only the region's lines are measured: the margin takes in no other line, and gives the
+    // box of a single straight pass the height its samples need.
+    r.lower -= Vec3::Constant(kRegionMarginMm);
+    r.upper += Vec3::Constant(kRegionMarginMm);
     r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
   }
   r.afterMetrics = measureRegion(*r.after.samples, *r.after.mesh, r.result.newRange, r.lower, r.upper);

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "isurface/io/biip.h"
+#include "isurface/base/units.h"
 
 namespace isurface {
 
@@ -26,7 +27,7 @@ nlohmann::json machineJson(const Machine& m) {
   const char* names[3] = {"x", "y", "z"};
   for (int i = 0; i < 3; ++i) {
     const AxisLimits& a = m.axes[i];
-    axes[names[i]] = {{"max_velocity_mm_min", a.maxVelocity * 60},
+    axes[names[i]] = {{"max_velocity_mm_min", mmPerSToMmPerMin(a.maxVelocity)},
                       {"max_acceleration_mm_s2", a.maxAcceleration},
                       {"max_jerk_mm_s3", a.maxJerk},
                       {"position_gain_1_s", a.positionGain},
@@ -35,7 +36,7 @@ nlohmann::json machineJson(const Machine& m) {
   }
   return {{"name", m.name},
           {"cycle_s", m.cycle},
-          {"rapid_mm_min", m.rapidVelocity * 60},
+          {"rapid_mm_min", mmPerSToMmPerMin(m.rapidVelocity)},
           {"chord_tolerance_mm", m.chordTolerance},
           {"axes", axes}};
 }

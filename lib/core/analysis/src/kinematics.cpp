@@ -3,6 +3,8 @@
 
 #include <cmath>
 
+#include "isurface/base/units.h"
+
 namespace isurface {
 
 namespace {
@@ -143,7 +145,7 @@ PathValues pathValues(const Derivatives& d) {
   const double vmag = std::sqrt(v2);
   const double dot = d.v[0] * d.a[0] + d.v[1] * d.a[1] + d.v[2] * d.a[2];
   PathValues p;
-  p.speed = 60.0 * vmag;
+  p.speed = mmPerSToMmPerMin(vmag);
   p.accelMagnitude = std::sqrt(d.a[0] * d.a[0] + d.a[1] * d.a[1] + d.a[2] * d.a[2]);
   p.accel = vmag == 0 ? 0.0 : dot / vmag;
   p.jerk = std::sqrt(d.j[0] * d.j[0] + d.j[1] * d.j[1] + d.j[2] * d.j[2]);
@@ -181,10 +183,10 @@ void accumulate(KinematicsSummary& s, std::size_t i, const Derivatives& d) {
 }
 
 KinematicsSummary finished(KinematicsSummary s) {
-  s.maxSpeed_mm_min = 60.0 * std::sqrt(s.maxSpeed_mm_min);
+  s.maxSpeed_mm_min = mmPerSToMmPerMin(std::sqrt(s.maxSpeed_mm_min));
   s.maxAccel_mm_s2 = std::sqrt(s.maxAccel_mm_s2);
   s.maxJerk_mm_s3 = std::sqrt(s.maxJerk_mm_s3);
-  for (auto& m : s.axis) m.speed_mm_min *= 60.0;
+  for (auto& m : s.axis) m.speed_mm_min = mmPerSToMmPerMin(m.speed_mm_min);
   return s;
 }
 
@@ -234,7 +236,7 @@ Kinematics deriveKinematics(const double* x, const double* y, const double* z, c
     k.jerk[i] = p.jerk;
     if (perAxis) {
       for (int ax = 0; ax < 3; ++ax) {
-        k.axisVel[ax][i] = 60.0 * d.v[ax];
+        k.axisVel[ax][i] = mmPerSToMmPerMin(d.v[ax]);
         k.axisAcc[ax][i] = d.a[ax];
         k.axisJerk[ax][i] = d.j[ax];
       }

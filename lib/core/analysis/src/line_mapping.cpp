@@ -1,4 +1,5 @@
 #include "isurface/analysis/line_mapping.h"
+#include "isurface/base/tolerances.h"
 #include "isurface/base/units.h"
 
 #include <algorithm>
@@ -49,7 +50,7 @@ Nearest nearestOnSegment(const PathSegment& seg, const Vec3& p) {
   constexpr double kGolden = 0.6180339887498949;
   double f1 = hi - kGolden * (hi - lo), f2 = lo + kGolden * (hi - lo);
   double d1 = dist(f1), d2 = dist(f2);
-  for (int it = 0; it < 40 && (hi - lo) * seg.length > 1e-6; ++it) {
+  for (int it = 0; it < 40 && (hi - lo) * seg.length > kSearchResolution; ++it) {
     if (d1 < d2) {
       hi = f2, f2 = f1, d2 = d1;
       f1 = hi - kGolden * (hi - lo), d1 = dist(f1);
@@ -101,7 +102,7 @@ Vec3 travelDirection(const Trajectory& t, std::size_t i) {
   if (!finite(pa) || !finite(pb)) return Vec3::Zero();
   const Vec3 d = pb - pa;
   const double len = d.norm();
-  return len > 1e-9 ? Vec3(d / len) : Vec3(Vec3::Zero());
+  return len > kLengthEpsilon ? Vec3(d / len) : Vec3(Vec3::Zero());
 }
 
 }  // namespace
@@ -162,7 +163,7 @@ LineMapping mapSamplesToLines(const Trajectory& samples, const Program& program,
       // Among equally near moves: the one heading the way the sample travels; at a standstill
       // (score 0 everywhere) the earliest.
       const double score = candidates[k].tangent.dot(dir);
-      if (score > bestScore + 1e-9) bestScore = score, chosen = current + k;
+      if (score > bestScore + kRoundingSlack) bestScore = score, chosen = current + k;
     }
     const Nearest& best = candidates[chosen - current];
     const double d = best.distance;

@@ -188,7 +188,8 @@ class Aligner {
   const Trajectory& a_;
   const Trajectory& b_;
   RunComparison& out_;
-  std::vector<double> speedA_, speedB_, pathB_;
+  std::vector<double> speedA_, speedB_;  // mm/min, path speed per sample of each run
+  std::vector<double> pathB_;            // mm, B's arc length at each sample
   double searchRadius_ = kPathSearchRadius;  // mm, for the line being compared
 };
 

@@ -38,7 +38,8 @@ class FigureAccumulator {
 
  private:
   DifferenceFigures f_;
-  double speedSum_ = 0, feedback_ = 0;
+  double speedSum_ = 0;  // mm/min, sum of the finite speed differences
+  double feedback_ = 0;  // mm, largest feedback distance
 };
 
 // Adds a line's (or range's) figures to those of a larger stretch.

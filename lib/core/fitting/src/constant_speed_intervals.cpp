@@ -1,4 +1,5 @@
 #include "isurface/fitting/constant_speed_intervals.h"
+#include "isurface/base/tolerances.h"
 #include "isurface/base/units.h"
 
 #include <algorithm>
@@ -187,7 +188,7 @@ std::vector<PathSection> splitAtReversals(const PathSection& run, double reversa
       const Vec3 step = run.points[i] - run.points[i - 1];
       const Eigen::Vector2d xy(step.x(), step.y());
       if (xy.norm() > kLengthEpsilon && net.norm() > kLengthEpsilon &&
-          xy.dot(net) / (xy.norm() * net.norm()) < cosLimit - 1e-9) {  // a right angle is no reversal
+          xy.dot(net) / (xy.norm() * net.norm()) < cosLimit - kRoundingSlack) {  // a right angle is no reversal
         PathSection next;
         next.points.push_back(run.points[i - 1]);
         next.lines.push_back(run.lines[i - 1]);

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isurface/base/units.h"
+
 namespace isurface {
 
 IntervalLimits intervalLimits(const Machine& machine) {
@@ -28,13 +30,13 @@ double sCurveTransitionDistance(double v0, double v1, double a, double j) {
 }
 
 double intervalFeed(double programmedFeedMmMin, double averageCurvature, const IntervalLimits& limits) {
-  double v = programmedFeedMmMin / 60.0;  // mm/s
+  double v = mmPerMinToMmPerS(programmedFeedMmMin);  // mm/s
   if (averageCurvature > kZeroCurvature) {
     const double rho = 1.0 / averageCurvature;
     v = std::min(v, std::sqrt(limits.acceleration * rho));
     if (limits.jerk > 0) v = std::min(v, std::cbrt(limits.jerk * rho * rho));
   }
-  return v * 60.0;
+  return mmPerSToMmPerMin(v);
 }
 
 std::vector<PlannedInterval> planIntervalSpeeds(const std::vector<ConstantSpeedInterval>& intervals,
@@ -59,7 +61,8 @@ std::vector<PlannedInterval> planIntervalSpeeds(const std::vector<ConstantSpeedI
     out.push_back(p);
   }
   for (std::size_t k = 0; k + 1 < out.size(); ++k) {
-    const double v0 = out[k].plannedFeedMmMin / 60.0, v1 = out[k + 1].plannedFeedMmMin / 60.0;
+    const double v0 = mmPerMinToMmPerS(out[k].plannedFeedMmMin);
+    const double v1 = mmPerMinToMmPerS(out[k + 1].plannedFeedMmMin);
     out[k].transitionTimeS = sCurveTransitionTime(v1 - v0, limits.acceleration, limits.jerk);
     out[k].transitionDistanceMm = sCurveTransitionDistance(v0, v1, limits.acceleration, limits.jerk);
   }

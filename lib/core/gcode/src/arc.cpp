@@ -2,11 +2,10 @@
 
 #include <cmath>
 
-namespace isurface {
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586476925286766559;
-}
+namespace isurface {
 
 ArcGeometry ArcGeometry::from(const Vec3& start, const Move& move) {
   ArcGeometry g;
@@ -24,7 +23,7 @@ ArcGeometry ArcGeometry::from(const Vec3& start, const Move& move) {
   const bool ccw = move.kind == MoveKind::ArcCCW;
   double sweep = endAngle - g.startAngle;
   // Start and end coincide in the plane: a full circle, as in RS274NGC.
-  const bool samePoint = std::hypot(eu - su, ev - sv) < 1e-9 * (1.0 + g.startRadius);
+  const bool samePoint = std::hypot(eu - su, ev - sv) < kLengthEpsilon * (1.0 + g.startRadius);
   if (ccw) {
     while (sweep <= 0) sweep += kTwoPi;
     if (samePoint) sweep = kTwoPi;

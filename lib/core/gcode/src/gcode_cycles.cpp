@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "interpreter_state.h"
+#include "isurface/base/tolerances.h"
 
 namespace isurface::gcode {
 
@@ -20,6 +21,8 @@ constexpr double kMaxCycleMoves = 2e6;
 
 }  // namespace
 
+// The canned cycles G73 G76.. G89 as rs274 runs them: the checks, then the shared approach, then
+// one case per cycle. Kept whole so that the cycles read side by side (longer than most).
 bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t column) {
   const std::string name = fmt::format("G{}", motion / 10);
   if (state_.plane != Plane::XY)
@@ -42,7 +45,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   long repeats = 1;
   if (block.has('L')) {
     const double l = block.get('L');
-    if (l < 0 || std::fabs(l - std::nearbyint(l)) > 1e-6)
+    if (l < 0 || std::fabs(l - std::nearbyint(l)) > kWholeNumberTolerance)
       return fail(block.col('L'), "L word must be a whole number, zero or more");
     if (l > kMaxRepeats)
       return fail(block.col('L'), fmt::format("L word too large (over {} repeats)", kMaxRepeats));

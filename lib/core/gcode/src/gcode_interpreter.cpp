@@ -231,6 +231,8 @@ bool InterpreterState::groupCodes(const Block& block, GroupedCodes& groups) {
   return true;
 }
 
+// One block in RS274/NGC's order of execution (the standard's table 8, as LinuxCNC follows it):
+// kept as one function, longer than most, so that the order reads top to bottom as the table.
 bool InterpreterState::executeBlock(const Block& block) {
   switch (block.kind) {
     case BlockKind::Deleted: return true;

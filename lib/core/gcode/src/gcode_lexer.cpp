@@ -7,6 +7,8 @@
 #include <cmath>
 #include <cstring>
 
+#include "isurface/base/tolerances.h"
+
 namespace isurface::gcode {
 
 namespace {
@@ -281,7 +283,7 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error)
         int code = -1;
         if (tenths >= 0 && tenths < 99999.5) {
           const int rounded = static_cast<int>(tenths + 0.5);
-          if (std::fabs(tenths - rounded) <= 1e-6) code = rounded;
+          if (std::fabs(tenths - rounded) <= kWholeNumberTolerance) code = rounded;
         }
         if (upper == 'G') {
           if (block.gCount == kMaxGWords) return fail(wordStart, "Too many G words on one line");

@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include "interpreter_state.h"
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
 #include "isurface/gcode/arc.h"
 
 namespace isurface::gcode {
@@ -37,8 +39,6 @@ std::string planeAxesNames(Plane plane) {
 std::string point2(const PlaneAxes& ax, double a, double b) {
   return fmt::format("({}{:.4f},{}{:.4f})", kAxisLetter[ax.u], a, kAxisLetter[ax.v], b);
 }
-
-constexpr double kTiny = 1e-12;
 
 }  // namespace
 
@@ -126,7 +126,7 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
   if (block.has('P')) {
     const double p = block.get('P');
     const double rounded = std::nearbyint(p);
-    if (std::fabs(p - rounded) > 1e-6)
+    if (std::fabs(p - rounded) > kWholeNumberTolerance)
       return fail(block.col('P'), "P value not an integer with G2 or G3");
     if (rounded < 1) return fail(block.col('P'), "P value must be at least 1 with G2 or G3");
     if (rounded > 10000) return fail(block.col('P'), "P value too large with G2 or G3 (over 10000 turns)");
@@ -148,8 +148,7 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
     double half = std::hypot(midU - eu, midV - ev);
     if (half - absRadius > options_.arcReachTolerance || absRadius < kLengthEpsilon)
       return fail(block.col('R'), "Arc radius too small to reach end point");
-    if (half / absRadius > 1 - kTiny) half = absRadius;  // a semicircle, within the tolerance
-    constexpr double kHalfPi = 1.57079632679489661923;
+    if (half / absRadius > 1 - kRatioEpsilon) half = absRadius;  // a semicircle, within the tolerance
     const double chordAngle = std::atan2(ev - sv, eu - su);
     const bool right = (motion == kG2) == (radius > 0);
     const double theta = right ? chordAngle - kHalfPi : chordAngle + kHalfPi;

@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "isurface/base/geometry.h"
+#include "isurface/base/tolerances.h"
 
 namespace isurface {
 
@@ -47,7 +48,7 @@ double dropBall(const HeightField& f, double x, double y) {
       if (h > best) best = h, bu = u, bv = v;
     }
   }
-  for (double step = R / 12.0; step > 1e-6; step *= 0.5) {
+  for (double step = R / 12.0; step > kSearchResolution; step *= 0.5) {
     bool moved = true;
     while (moved) {
       moved = false;
@@ -166,7 +167,7 @@ std::string transitionSurface(const std::string& description) {
 std::string loopProgram(const std::string& description, const HeightField& f, double outerRadius,
                         double innerRadius, double stepOver) {
   ProgramWriter out(description);
-  for (double r = outerRadius; r >= innerRadius - 1e-9; r -= stepOver) {
+  for (double r = outerRadius; r >= innerRadius - kLengthEpsilon; r -= stepOver) {
     std::vector<Vec3> points;
     const int n = std::max(16, static_cast<int>(2 * kPi * r / kSampleStep));
     for (int i = 0; i <= n; ++i) {

@@ -78,6 +78,14 @@ void BiipReader::refuse(const std::string& problem) const {
 }
 
 void BiipReader::parse() {
+  mapFile();
+  const auto [channelCount, metadataBytes] = parseFixedHeader();
+  parseChannelTable(channelCount);
+  parseMetadata(kBiipFixedHeaderBytes + std::size_t(kBiipChannelEntryBytes) * channelCount, metadataBytes);
+  countRecords();
+}
+
+void BiipReader::mapFile() {
   const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) refuse("cannot read: " + std::error_code(errno, std::generic_category()).message());
   struct stat st {};
@@ -102,7 +110,9 @@ void BiipReader::parse() {
   data_ = static_cast<const unsigned char*>(map);
   size_ = size;
   ::madvise(map, size, MADV_SEQUENTIAL);
+}
 
+std::pair<std::uint32_t, std::uint32_t> BiipReader::parseFixedHeader() {
   const unsigned char* d = data_;
   const auto tooShort = [&] {
     refuse("file too short for the Biip header (" + std::to_string(size_) + " bytes, the fixed header alone is 64)");
@@ -147,7 +157,12 @@ void BiipReader::parse() {
            std::to_string(size_) + " bytes)");
   }
 
-  // Channel table.
+  return {channelCount, metadataBytes};
+}
+
+void BiipReader::parseChannelTable(std::uint32_t channelCount) {
+  const unsigned char* d = data_;
+  BiipHeader& h = header_;
   std::unordered_set<std::string> names;
   h.channels.reserve(channelCount);
   for (std::uint32_t c = 0; c < channelCount; ++c) {
@@ -183,7 +198,12 @@ void BiipReader::parse() {
     }
   }
 
-  // Metadata: a JSON object. Unusable metadata is ignored with a warning, never fatal.
+}
+
+// Metadata: a JSON object. Unusable metadata is ignored with a warning, never fatal.
+void BiipReader::parseMetadata(std::size_t tableEnd, std::uint32_t metadataBytes) {
+  const unsigned char* d = data_;
+  BiipHeader& h = header_;
   if (metadataBytes > 0) {
     std::string_view text(reinterpret_cast<const char*>(d + tableEnd), metadataBytes);
     while (!text.empty() && (text.back() == '\0' || text.back() == ' ' || text.back() == '\n' ||
@@ -206,7 +226,10 @@ void BiipReader::parse() {
     h.t0Seconds = 0;
   }
 
-  // Records.
+}
+
+void BiipReader::countRecords() {
+  BiipHeader& h = header_;
   const std::size_t body = size_ - h.headerBytes;
   const std::size_t whole = body / h.recordBytes;
   const std::size_t partial = body % h.recordBytes;

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
 
 namespace isurface {
 
@@ -71,9 +72,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   // samples of every simulation (1e-12 s would take hours for a few millimetres).
   if (m.cycle < 1e-5) fail(source, "cycle_s must be at least 1e-05 s (10 us)");
   // Checked as written (mm/min), then kept in mm/s.
-  const double rapid = number(root, "rapid_mm_min", m.rapidVelocity * 60, source, "");
+  const double rapid = number(root, "rapid_mm_min", mmPerSToMmPerMin(m.rapidVelocity), source, "");
   requirePositive(rapid, source, "rapid_mm_min");
-  m.rapidVelocity = rapid / 60.0;
+  m.rapidVelocity = mmPerMinToMmPerS(rapid);
   m.chordTolerance = number(root, "chord_tolerance_mm", m.chordTolerance, source, "");
   requirePositive(m.chordTolerance, source, "chord_tolerance_mm");
 
@@ -90,9 +91,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       const std::string where = std::string("axes.") + names[i] + ".";
       if (!a.is_object()) fail(source, where.substr(0, where.size() - 1) + " must be an object");
       AxisLimits& limits = m.axes[i];
-      const double velocity = number(a, "max_velocity_mm_min", limits.maxVelocity * 60, source, where);
+      const double velocity = number(a, "max_velocity_mm_min", mmPerSToMmPerMin(limits.maxVelocity), source, where);
       requirePositive(velocity, source, where + "max_velocity_mm_min");
-      limits.maxVelocity = velocity / 60.0;
+      limits.maxVelocity = mmPerMinToMmPerS(velocity);
       limits.maxAcceleration = number(a, "max_acceleration_mm_s2", limits.maxAcceleration, source, where);
       requirePositive(limits.maxAcceleration, source, where + "max_acceleration_mm_s2");
       if (a.contains("max_jerk_mm_s3") && a["max_jerk_mm_s3"].is_null()) {

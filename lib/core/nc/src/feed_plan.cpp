@@ -7,6 +7,8 @@
 #include <string>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
 #include "isurface/gcode/path_segment.h"
 
 #include <fmt/format.h>
@@ -64,7 +66,7 @@ double projectedLimit(const Vec3& direction, PerAxis perAxis) {
   double limit = kInfinity;
   for (int i = 0; i < 3; ++i) {
     const double c = std::abs(direction[i]);
-    if (c > 1e-12) limit = std::min(limit, perAxis(i) / c);
+    if (c > kRatioEpsilon) limit = std::min(limit, perAxis(i) / c);
   }
   return limit;
 }
@@ -175,7 +177,7 @@ class Planner {
       if (s.motionTime() > kLongestMove)
         throw InputError(Diagnostic{source_, window_[head_ + k].line, 0,
                                     fmt::format("this move takes {:.0f} h at F{:g}: an impossible feed for {:.1f} mm",
-                                                s.motionTime() / 3600, window_[head_ + k].feed, s.length)});
+                                                s.motionTime() / 3600, window_[head_ + k].feedMmMin, s.length)});
       out.push_back(s);
     }
     head_ += last;
@@ -197,7 +199,7 @@ class Planner {
     double entryRadius = 0;   // mm, three-point radius at its start junction between lines
     double entryForward = 0;  // mm/s, the forward pass's speed at its start
     std::uint32_t line = 0;   // of its move, for messages
-    float feed = 0;
+    float feedMmMin = 0;      // mm/min, its move's F word as programmed (for messages)
   };
 
   // The machine comes to rest at the current junction and waits `hold` seconds; by default
@@ -220,7 +222,7 @@ class Planner {
     ps.length = seg.length;
     double speed = move.kind == MoveKind::Rapid
                        ? machine_.rapidVelocity
-                       : std::max(static_cast<double>(move.feed), 1.0) / 60.0;
+                       : mmPerMinToMmPerS(std::max(static_cast<double>(move.feed), 1.0));
     if (seg.arc) {
       const ArcGeometry& g = seg.arcGeometry;
       const auto& ax = machine_.axes;
@@ -229,7 +231,7 @@ class Planner {
       const double planeAccel = std::min(ax[g.axes.u].maxAcceleration, ax[g.axes.v].maxAcceleration);
       const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
       speed = std::min(speed, planeVelocity);
-      if (pitch > 1e-12) speed = std::min(speed, ax[g.axes.w].maxVelocity / pitch);
+      if (pitch > kRatioEpsilon) speed = std::min(speed, ax[g.axes.w].maxVelocity / pitch);
       speed = std::min(speed, curvatureLimit(g.minRadius(), planeAccel, true));
     } else {
       speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
@@ -254,7 +256,7 @@ class Planner {
                                                          2.0 * before.planned.accel * before.planned.length));
     }
     e.line = move.line;
-    e.feed = move.feed;
+    e.feedMmMin = move.feed;
     window_.push_back(e);
     ++segments_;
     junctionLimit_ = kInfinity;
@@ -297,7 +299,7 @@ class Planner {
     const ArcGeometry& g = seg.arcGeometry;
     double accel = std::min(ax[g.axes.u].maxAcceleration, ax[g.axes.v].maxAcceleration);
     const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
-    if (pitch > 1e-12) accel = std::min(accel, ax[g.axes.w].maxAcceleration / pitch);
+    if (pitch > kRatioEpsilon) accel = std::min(accel, ax[g.axes.w].maxAcceleration / pitch);
     return budget_.tangentialAccel * accel;
   }
 
@@ -329,7 +331,7 @@ class Planner {
     const Vec3 turn = out.startTangent() - in.endTangent();
     const double turnNorm = turn.norm();
     double v = kInfinity;
-    if (turnNorm > 1e-9) {
+    if (turnNorm > kRoundingSlack) {
       // The velocity step v*|turn| at the corner, averaged by the filters, must fit the
       // corner's share of acceleration and jerk, and the rounding must stay in tolerance.
       const double spreadTime = std::max(t1_, t2_);
@@ -351,7 +353,7 @@ class Planner {
         // the samples fall off the corner by about sin(angle) a (W - h)^3 / (48 W).
         const double width = t1_ + t2_;
         const double sine = turnNorm * std::sqrt(std::max(0.0, 1.0 - 0.25 * turnNorm * turnNorm));
-        const double reach = sine > 1e-12 ? std::cbrt(48.0 * width * smoothingTolerance_ / (accel * sine)) : width;
+        const double reach = sine > kRatioEpsilon ? std::cbrt(48.0 * width * smoothingTolerance_ / (accel * sine)) : width;
         hold = std::clamp(width - reach, 0.0, width);
         return 0.0;
       }

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "isurface/base/units.h"
 #include "isurface/gcode/path_segment.h"
 #include "isurface/nc/servo.h"
 
@@ -55,7 +56,7 @@ int taps(double time, double cycle) {
 
 struct SampleTag {
   std::uint32_t line, block;
-  double feed;
+  double feedMmMin;  // programmed feed (the rapid rate on a G0), for the `feed` channel
 };
 
 // A segment of the plan with what walking it needs.
@@ -97,10 +98,10 @@ class ProfileWalker {
 
   // Position at the current time; then `advance(cycle)`.
   Vec3 position() const { return active_ ? geometry_.at(distance()) : last_; }
-  SampleTag tag(double rapidFeed) const {
+  SampleTag tag(double rapidFeedMmMin) const {
     const QueuedSegment& q = queue_.front();
     return SampleTag{q.move.line, q.planned.move,
-                     q.move.kind == MoveKind::Rapid ? rapidFeed : static_cast<double>(q.move.feed)};
+                     q.move.kind == MoveKind::Rapid ? rapidFeedMmMin : static_cast<double>(q.move.feed)};
   }
   void advance(double dt) { tau_ += dt; }
 
@@ -169,7 +170,7 @@ struct StreamingInterpolator::Impl {
     s.fbX = servos[0].step(commanded[0]);
     s.fbY = servos[1].step(commanded[1]);
     s.fbZ = servos[2].step(commanded[2]);
-    s.feed = tag.feed;
+    s.feed = tag.feedMmMin;
     batch.push_back(s);
     if (batch.size() == kBatch) flush();
   }
@@ -197,7 +198,7 @@ struct StreamingInterpolator::Impl {
         advanced = false;
       }
       if (!walker.active()) return;
-      lastTag = walker.tag(machine.rapidVelocity * 60.0);
+      lastTag = walker.tag(mmPerSToMmPerMin(machine.rapidVelocity));
       push(walker.position(), lastTag);
       walker.advance(cycle);
       advanced = true;

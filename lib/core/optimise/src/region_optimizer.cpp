@@ -10,6 +10,8 @@
 
 #include "isurface/fitting/akima_spline.h"
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
 #include "isurface/nc/feed_plan.h"
 #include "isurface/fitting/interval_speed_plan.h"
 #include "isurface/analysis/quantities.h"
@@ -129,7 +131,7 @@ std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chor
       const double chordPiece = std::sqrt(8.0 * chordTolerance / curvature);  // sagitta of a chord
       piece = std::max(kShortestPiece, std::min(maxTurn / curvature, chordPiece));
     }
-    const int count = std::max(1, static_cast<int>(std::ceil(s.length / piece - 1e-9)));
+    const int count = std::max(1, static_cast<int>(std::ceil(s.length / piece - kRoundingSlack)));
     for (int k = 1; k <= count; ++k) out.push_back(s.position(s.length * k / count));
   }
   return out;
@@ -181,10 +183,11 @@ std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::ve
   // The limit at each new point and of each new segment, mm/s. The corners at an interval's
   // ends belong to the planner (it slows there whatever the feed): only what lies inside an
   // interval sets its feed.
-  std::vector<double> atPoint(points.size(), feed / 60.0), ofSegment(points.size(), feed / 60.0);
+  const double feedMmS = mmPerMinToMmPerS(feed);
+  std::vector<double> atPoint(points.size(), feedMmS), ofSegment(points.size(), feedMmS);
   for (const PlannedSegment& s : plan.segments) {
-    ofSegment[s.move] = std::min(feed / 60.0, s.cap);  // segment k runs from point k to k + 1
-    if (s.move > 0) atPoint[s.move] = std::min(feed / 60.0, s.entryLimit);
+    ofSegment[s.move] = std::min(feedMmS, s.cap);  // segment k runs from point k to k + 1
+    if (s.move > 0) atPoint[s.move] = std::min(feedMmS, s.entryLimit);
   }
   const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
   std::vector<double> feeds;
@@ -194,9 +197,9 @@ std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::ve
     std::vector<double> limits(ofSegment.begin() + from, ofSegment.begin() + to);
     for (std::size_t k = from + 1; k < to; ++k) limits.push_back(atPoint[k]);
     std::sort(limits.begin(), limits.end());
-    const double v = std::min(limits.empty() ? feed / 60.0 : limits[limits.size() / 2],
-                              planned[k].plannedFeedMmMin / 60.0);
-    feeds.push_back(std::clamp(std::floor(v * 60.0), 0.2 * feed, feed));
+    const double v = std::min(limits.empty() ? feedMmS : limits[limits.size() / 2],
+                              mmPerMinToMmPerS(planned[k].plannedFeedMmMin));
+    feeds.push_back(std::clamp(std::floor(mmPerSToMmPerMin(v)), 0.2 * feed, feed));
   }
   return feeds;
 }
@@ -246,7 +249,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
       const std::size_t offset = fitted.size() - 1;
       fitted.insert(fitted.end(), piece.begin() + 1, piece.end());
       for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
-        while (j + 1 < piece.size() && (piece[j] - points[i]).norm() > 1e-9) ++j;
+        while (j + 1 < piece.size() && (piece[j] - points[i]).norm() > kLengthEpsilon) ++j;
         dataIndex[i] = offset + j;
       }
       intervalEnd.push_back(fitted.size() - 1);

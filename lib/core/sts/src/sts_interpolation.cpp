@@ -6,11 +6,11 @@
 
 #include "isurface/fitting/cubic_spline.h"
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
 
 namespace isurface {
 
 namespace {
-constexpr double kTwoPi = 2 * 3.14159265358979323846;
 
 [[noreturn]] void badParameter(const std::string& message) {
   throw InputError({"sts", 0, 0, message});

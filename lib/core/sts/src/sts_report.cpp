@@ -9,10 +9,6 @@
 
 namespace isurface {
 
-namespace {
-constexpr double kDegPerRad = 180.0 / kPi;
-}  // namespace
-
 StsCase paperToricCase() {
   StsCase c;
   c.surface = "toric";
@@ -21,7 +17,7 @@ StsCase paperToricCase() {
   c.spiral.toolRadius = 0.2;
   c.spiral.heightStep = 0.04;
   c.spiral.arcStep = 1;
-  c.spiral.angleStep = 5 / kDegPerRad;
+  c.spiral.angleStep = 5 / kDegreesPerRadian;
   return c;
 }
 
@@ -33,7 +29,7 @@ StsCase paperSinusoidCase() {
   c.spiral.toolRadius = 0.2;
   c.spiral.heightStep = 0.1;
   c.spiral.arcStep = 1;
-  c.spiral.angleStep = 3 / kDegPerRad;
+  c.spiral.angleStep = 3 / kDegreesPerRadian;
   return c;
 }
 
@@ -72,9 +68,9 @@ StsJobResult runStsJob(const StsSurface& surface, const SpiralParameters& p, con
 
 std::string formatStsNcProgram(const StsSurface& surface, const SpiralParameters& p,
                                const StsJobOptions& o, const StsJobResult& r) {
-  const double omega = o.spindleRpm * 2 * kPi / 60;  // rad/s
+  const double omega = rpmToRadPerS(o.spindleRpm);  // rad/s
   const double vx = -p.feedPerRev / (2 * kPi) * omega;   // mm/s, constant along the spiral
-  const double vc = o.spindleRpm * 6;                     // deg/s
+  const double vc = rpmToDegreesPerS(o.spindleRpm);      // deg/s
   std::string out;
   out += "; slow tool servo turning tool path (isurface-cli sts)\n";
   out += fmt::format("; surface: {}\n", surface.name());
@@ -94,7 +90,7 @@ std::string formatStsNcProgram(const StsSurface& surface, const SpiralParameters
     const double dtMs = (q.theta - previous) / omega * 1000;
     previous = q.theta;
     out += fmt::format("N{} X{:.6f} C{:.6f} Z{:.7f} ; T{:.4f} VX{:.6f} VC{:.4f} VZ{:.7f}\n", i + 1,
-                       q.r, q.theta * kDegPerRad, q.z, dtMs, vx, vc, r.track.slope[i] * omega);
+                       q.r, q.theta * kDegreesPerRadian, q.z, dtMs, vx, vc, r.track.slope[i] * omega);
   }
   out += "M30\n";
   return out;
@@ -112,7 +108,7 @@ nlohmann::json stsReportJson(const StsSurface& surface, const SpiralParameters& 
   nlohmann::json j;
   j["surface"] = surface.name();
   j["parameters"] = {{"workpiece_radius_mm", p.workpieceRadius}, {"feed_mm_per_rev", p.feedPerRev},
-                     {"angle_step_deg", p.angleStep * kDegPerRad}, {"arc_step_mm", p.arcStep},
+                     {"angle_step_deg", p.angleStep * kDegreesPerRadian}, {"arc_step_mm", p.arcStep},
                      {"height_step_mm", p.heightStep}, {"tool_radius_mm", p.toolRadius},
                      {"spindle_rpm", o.spindleRpm}, {"samples_per_segment", o.samplesPerSegment}};
   j["discretise"] = toString(o.discretisation);

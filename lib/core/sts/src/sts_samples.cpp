@@ -4,11 +4,9 @@
 #include <cmath>
 #include <sstream>
 
-namespace isurface {
+#include "isurface/base/units.h"
 
-namespace {
-constexpr double kTwoPi = 6.283185307179586;
-}
+namespace isurface {
 
 Trajectory stsTrajectory(const StsJobResult& job, const StsJobOptions& options, const std::string& ncText,
                          const std::string& source) {
@@ -24,7 +22,7 @@ Trajectory stsTrajectory(const StsJobResult& job, const StsJobOptions& options, 
   }
   Trajectory t;
   t.source = source;
-  const double secondsPerRadian = 60.0 / (options.spindleRpm * kTwoPi);
+  const double secondsPerRadian = secondsPerRadianAtRpm(options.spindleRpm);
   t.cycle = job.nodes.size() > 1 ? std::abs(job.nodes[1].theta - job.nodes[0].theta) * secondsPerRadian : 0.001;
   std::vector<double> discrete, interpolation;
   for (std::size_t k = 0; k < job.nodes.size(); ++k) {

@@ -5,12 +5,12 @@
 #include <fmt/format.h>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
 #include "isurface/sts/sts_interpolation.h"
 
 namespace isurface {
 
 namespace {
-constexpr double kTwoPi = 2 * 3.14159265358979323846;
 // Halving stops below this step (rad): a surface with a jump could otherwise halve forever.
 constexpr double kSmallestAngleStep = 1e-9;
 constexpr int kMaxHalvings = 60;

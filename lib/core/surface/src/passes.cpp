@@ -20,6 +20,7 @@
 #include <cmath>
 #include <limits>
 
+#include "isurface/base/tolerances.h"
 #include "isurface/gcode/path_segment.h"
 #include "pass_split.h"
 
@@ -150,7 +151,7 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
   }
   std::vector<char> out(n, 0);
   if (rapid > 0)
-    for (std::size_t i = 0; i < n; ++i) out[i] = s.feed[i] >= rapid * (1 - 1e-9);
+    for (std::size_t i = 0; i < n; ++i) out[i] = s.feed[i] >= rapid * (1 - kRoundingSlack);
   return out;
 }
 

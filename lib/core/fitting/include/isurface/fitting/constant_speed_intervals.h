@@ -43,8 +43,7 @@ struct IntervalThresholds {
 
 // Stands for "unbounded" in a curvature ratio whose previous curvature is zero.
 constexpr double kLargeRatio = 1e9;
-// Curvatures below this are zero (mm^-1): a radius of a kilometre is a straight line here.
-constexpr double kZeroCurvature = 1e-6;
+// Curvatures below kZeroCurvature (isurface/base/tolerances.h, 1e-6 mm^-1) are zero.
 
 struct CharacteristicPoint {
   std::size_t index = 0;       // into the caller's points

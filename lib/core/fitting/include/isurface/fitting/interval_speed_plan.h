@@ -43,7 +43,7 @@ struct PlannedInterval {
   std::size_t first = 0, last = 0;  // indices into the section's points
   double lengthMm = 0;
   double averageCurvature = 0;      // mm^-1
-  double plannedFeedMmMin = 0;
+  double plannedFeedMmMin = 0;     // mm/min, the interval's feed (intervalFeed())
   // The change from this interval's speed to the next one's (0 for the last interval).
   double transitionTimeS = 0;
   double transitionDistanceMm = 0;

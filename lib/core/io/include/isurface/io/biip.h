@@ -128,6 +128,12 @@ class BiipReader {
  private:
   [[noreturn]] void refuse(const std::string& problem) const;
   void parse();
+  void mapFile();
+  // Returns the channel count and the metadata's size in bytes.
+  std::pair<std::uint32_t, std::uint32_t> parseFixedHeader();
+  void parseChannelTable(std::uint32_t channelCount);
+  void parseMetadata(std::size_t tableEnd, std::uint32_t metadataBytes);
+  void countRecords();
   void unmap() noexcept;
 
   std::string path_;

@@ -14,8 +14,8 @@ class AxisServo {
   double position() const { return position_; }
 
  private:
-  double gain_, feedForward_, lagFactor_, cycle_;
-  double position_, velocity_ = 0, previousCommand_;
+  double gain_, feedForward_, lagFactor_, cycle_;  // 1/s, 0..1, 0..1 (share per cycle), s
+  double position_, velocity_ = 0, previousCommand_;  // mm, mm/s, mm
 };
 
 }  // namespace isurface

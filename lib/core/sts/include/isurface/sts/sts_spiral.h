@@ -12,6 +12,7 @@
 #include <string>
 #include <vector>
 
+#include "isurface/base/units.h"
 #include "isurface/sts/sts_surface.h"
 
 namespace isurface {
@@ -23,7 +24,7 @@ std::string toString(StsDiscretisation method);
 struct SpiralParameters {
   double workpieceRadius = 20.0;  // R, mm
   double feedPerRev = 0.5;        // a_f, mm/rev
-  double angleStep = 5.0 * 3.14159265358979323846 / 180.0;  // allowable angle, rad
+  double angleStep = 5.0 * kPi / 180.0;  // allowable angle, rad
   double arcStep = 1.0;     // allowable arc length in the XY plane, mm
   double heightStep = 0.04; // allowable height difference Delta Z_m, mm
   double toolRadius = 0.2;  // tool nose radius R_t, mm
