@@ -23,13 +23,8 @@ constexpr double kJoinStepMm = 0.5;            // arcs are walked in steps of th
 
 std::string fileName(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-double distanceToSegment(const Vec3& p, const PathSegment& segment) {
-  if (!segment.arc) {
-    const Vec3 d = segment.end - segment.start;
-    const double len2 = d.squaredNorm();
-    const double t = len2 > kLengthEpsilon * kLengthEpsilon ? std::clamp((p - segment.start).dot(d) / len2, 0.0, 1.0) : 0.0;
-    return (p - (segment.start + t * d)).norm();
-  }
+double distanceToMove(const Vec3& p, const PathSegment& segment) {
+  if (!segment.arc) return distanceToSegment(p, segment.start, segment.end);
   const int steps = static_cast<int>(std::clamp(segment.length / kJoinStepMm, 2.0, 256.0));
   double best = (p - segment.start).norm();
   for (int i = 1; i <= steps; ++i) best = std::min(best, (p - segment.at(segment.length * i / steps)).norm());
@@ -53,7 +48,7 @@ bool nearItsLine(const Program& program, const Vec3& p, std::pair<std::size_t, s
   const std::size_t from = moves.first > 0 ? moves.first - 1 : 0;
   const std::size_t to = std::min(program.moves.size() - 1, moves.second + 1);
   for (std::size_t k = from; k <= to; ++k)
-    if (program.moves[k].isMotion() && distanceToSegment(p, PathSegment::from(program, k)) <= kJoinDistance) return true;
+    if (program.moves[k].isMotion() && distanceToMove(p, PathSegment::from(program, k)) <= kJoinDistance) return true;
   return false;
 }
 

@@ -85,13 +85,6 @@ std::vector<double> cumulativeArcLength(const Trajectory& t) {
   return s;
 }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double f = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - (a + f * ab)).norm();
-}
-
 // Where B is at an arc length of a line: between two of its samples, by a fraction.
 struct Aligned {
   std::size_t from = 0, to = 0;

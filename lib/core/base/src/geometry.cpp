@@ -1,6 +1,7 @@
 // Geometry shared by planning and fitting.
 #include "isurface/base/geometry.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace isurface {
@@ -11,6 +12,14 @@ double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& nex
   const double lengths = a.norm() * b.norm() * c.norm();
   if (!(cross > kCollinearRelative * lengths) || lengths == 0) return std::numeric_limits<double>::infinity();
   return lengths / (2.0 * cross);
+}
+
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double len2 = ab.squaredNorm();
+  if (len2 < kLengthEpsilon * kLengthEpsilon) return (p - a).norm();
+  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
+  return (p - (a + t * ab)).norm();
 }
 
 }  // namespace isurface

@@ -17,14 +17,6 @@ constexpr double kNaN = std::numeric_limits<double>::quiet_NaN();
 
 [[noreturn]] void badParameter(const std::string& message) { throw InputError(Diagnostic{"", 0, 0, message}); }
 
-double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 ab = b - a;
-  const double len2 = ab.squaredNorm();
-  if (len2 < kLengthEpsilon * kLengthEpsilon) return (p - a).norm();
-  const double t = std::clamp((p - a).dot(ab) / len2, 0.0, 1.0);
-  return (p - (a + t * ab)).norm();
-}
-
 // Points with consecutive duplicates dropped, and for each kept point its index in `points`.
 struct DistinctPoints {
   std::vector<Vec3> points;

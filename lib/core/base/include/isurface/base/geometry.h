@@ -32,4 +32,7 @@ inline PlaneAxes planeAxes(Plane plane) {
 // paper), mm; +infinity for collinear or coincident points.
 double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& next);
 
+// Distance from p to the segment a-b, mm; a segment shorter than kLengthEpsilon is its start.
+double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
+
 }  // namespace isurface
