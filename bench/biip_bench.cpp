@@ -111,7 +111,7 @@ void BM_KinematicsSummaryStreaming(benchmark::State& state) {
     isurface::KinematicsAccumulator acc(reader.header().cycleSeconds);
     for (std::size_t i = 0; i < x.size(); ++i) acc.push(x[i], y[i], z[i]);
     const auto s = acc.finish();
-    benchmark::DoNotOptimize(s.maxJerk_mm_s3);
+    benchmark::DoNotOptimize(s.maxJerk);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kRecords));
 }
@@ -127,7 +127,7 @@ void BM_KinematicsSummaryArrays(benchmark::State& state) {
   }
   for (auto _ : state) {
     const auto s = isurface::summarizeKinematics(x.data(), y.data(), z.data(), nullptr, kRecords, 0.001);
-    benchmark::DoNotOptimize(s.maxJerk_mm_s3);
+    benchmark::DoNotOptimize(s.maxJerk);
   }
   state.SetItemsProcessed(static_cast<std::int64_t>(state.iterations() * kRecords));
 }

@@ -34,9 +34,9 @@ int runAnalyze(const AnalyzeOptions& o) {
   requirePositive(o.thresholds.speedInconsistency, "--speed-threshold");
   requirePositive(o.thresholds.accelInconsistency, "--accel-threshold");
   requirePositive(o.thresholds.jerk, "--jerk-threshold");
-  const Program program = loadProgram(o.gcode, false);
-  const Trajectory samples = o.biip.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
-                                            : readProgramDump(o.biip, program, o.force);
+  const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, o.machine, o.force);
+  const Program& program = *run.program;
+  const Trajectory& samples = *run.samples;
   ProgressLine progress("analysing");
   vis::QualityMapRequest request;
   request.quantity = Quantity::SpeedInconsistency;

@@ -24,15 +24,15 @@ struct ExportOptions {
 int runExport(const ExportOptions& o) {
   if (o.surface != "commanded" && o.surface != "feedback")
     throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
-  std::unique_ptr<Program> program;
-  if (!o.gcode.empty()) program = std::make_unique<Program>(loadProgram(o.gcode, false));
-  const Trajectory samples = program ? readProgramDump(o.biip, *program, o.force) : readTrajectory(o.biip);
+  const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, "", o.force);
+  const Program* program = run.program.get();
+  const Trajectory& samples = *run.samples;
   const bool feedback = o.surface == "feedback";
   if (feedback && !samples.hasFeedback())
     throw InputError(Diagnostic{o.biip, 0, 0, "no feedback channels (fb_x fb_y fb_z) for the feedback surface"});
   ProgressLine progress("building the surface");
   PassOptions passOptions;
-  passOptions.program = program.get();
+  passOptions.program = program;
   const PassSet passes = splitPasses(samples, passOptions);
   MeshOptions meshOptions;
   meshOptions.feedback = feedback;

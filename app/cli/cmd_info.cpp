@@ -6,6 +6,7 @@
 #include <string>
 
 #include "command.h"
+#include "isurface/base/units.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/io/biip.h"
 #include "isurface/analysis/kinematics.h"
@@ -73,15 +74,15 @@ nlohmann::ordered_json describe(const BiipReader& reader) {
   }
   const bool derived = k.finiteSamples > 0;
   const auto value = [&](double v) { return derived ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); };
-  out["max_speed_mm_min"] = value(k.maxSpeed_mm_min);
-  out["max_accel_mm_s2"] = value(k.maxAccel_mm_s2);
-  out["max_jerk_mm_s3"] = value(k.maxJerk_mm_s3);
+  out["max_speed_mm_min"] = value(mmPerSToMmPerMin(k.maxSpeed));
+  out["max_accel_mm_s2"] = value(k.maxAccel);
+  out["max_jerk_mm_s3"] = value(k.maxJerk);
   const char* names[3] = {"x", "y", "z"};
   auto& axes = out["axes"] = nlohmann::ordered_json::object();
   for (int a = 0; a < 3; ++a) {
-    axes[names[a]] = {{"max_speed_mm_min", value(k.axis[a].speed_mm_min)},
-                      {"max_accel_mm_s2", value(k.axis[a].accel_mm_s2)},
-                      {"max_jerk_mm_s3", value(k.axis[a].jerk_mm_s3)}};
+    axes[names[a]] = {{"max_speed_mm_min", value(mmPerSToMmPerMin(k.axis[a].speed))},
+                      {"max_accel_mm_s2", value(k.axis[a].accel)},
+                      {"max_jerk_mm_s3", value(k.axis[a].jerk)}};
   }
   // Where each path maximum occurs, traced back to its source line when there is one.
   const auto where = [&](std::size_t i) {

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "command.h"
+#include "isurface/base/units.h"
 #include "inputs.h"
 #include "isurface/io/biip.h"
 #include "isurface/analysis/locate.h"
@@ -75,10 +76,10 @@ Json describeSample(const BiipReader& reader, std::size_t i) {
   const Vec3 measured = feedback ? Vec3(fx[i], fy[i], fz[i]) : Vec3::Zero();
   out["feedback"] = feedback ? triple(measured) : Json(nullptr);
   out["feed_mm_min"] = feed.valid() ? numberOrNull(feed[i]) : Json(nullptr);
-  out["speed_mm_min"] = numberOrNull(m.speed);
+  out["speed_mm_min"] = numberOrNull(mmPerSToMmPerMin(m.speed));
   out["accel_mm_s2"] = numberOrNull(m.accel);
   out["jerk_mm_s3"] = numberOrNull(m.jerk);
-  out["velocity_mm_min"] = triple(m.velocity);
+  out["velocity_mm_min"] = triple(m.velocity.unaryExpr([](double v) { return mmPerSToMmPerMin(v); }));
   out["acceleration_mm_s2"] = triple(m.acceleration);
   out["jerk_axes_mm_s3"] = triple(m.jerkAxes);
   out["following_error_um"] = feedback ? numberOrNull(1000.0 * (measured - position).norm()) : Json(nullptr);

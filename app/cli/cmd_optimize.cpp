@@ -61,13 +61,14 @@ void renderSpeed(const SurfaceRun& run, const Program& program, const std::strin
 int runOptimize(const OptimizeCliOptions& o) {
   if (o.automatic == !o.lines.empty()) throw InputError(Diagnostic{"", 0, 0, "give either --lines A-B or --auto"});
   if (!(o.chordTolerance > 0)) throw InputError(Diagnostic{"", 0, 0, "--tolerance must be greater than 0"});
-  const Machine machine = loadMachineOption(o.machine);
-  const Program program = loadProgram(o.input, false);
+  const OpenedRun opened = openRunOnTerminal({o.input, ""}, o.machine, false);
+  const Machine& machine = opened.machine;
+  const Program& program = *opened.program;
   std::ifstream in(o.input, std::ios::binary);
   std::stringstream text;
   text << in.rdbuf();
 
-  const SurfaceRun before = surfaceRun(std::make_shared<const Trajectory>(simulateTrajectory(program, machine)), &program);
+  const SurfaceRun before = surfaceRun(opened.samples, &program);
   RegionRequest request;
   request.options.chordTolerance = o.chordTolerance;
   if (o.automatic) {

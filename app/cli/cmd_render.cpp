@@ -92,17 +92,15 @@ int runRender(const RenderOptions& o) {
   const bool dumpOnly = o.biip.empty() && isBiipFile(o.gcode);
   const std::string dump = dumpOnly ? o.gcode : o.biip;
   if (dumpOnly && !parseQuantity(o.color)) request.channel = o.color;
-  const Program program = dumpOnly ? Program{} : loadProgram(o.gcode, false);
   // A map that shows no feedback and no other channel of the dump is built without copying
   // them: 24 bytes a sample less for a simulated dump.
   TrajectoryChannels channels;
   channels.extra = !request.channel.empty();
   channels.feedback = channels.extra || request.feedbackSurface || quantityInfo(request.quantity).needsFeedback;
-  const Trajectory samples = dump.empty() ? simulateTrajectory(program, loadMachineOption(o.machine))
-                                          : dumpOnly ? readTrajectory(dump, channels)
-                                                     : readProgramDump(dump, program, o.force, channels);
+  const OpenedRun run = openRunOnTerminal({dumpOnly ? "" : o.gcode, dump}, o.machine, o.force, channels);
+  const Trajectory& samples = *run.samples;
   ProgressLine building("building the surface");
-  vis::QualityMap map = vis::buildQualityMap(samples, dumpOnly ? nullptr : &program, request);
+  vis::QualityMap map = vis::buildQualityMap(samples, run.program.get(), request);
   map.style.fontSize = vis::fontSizeForHeight(height);
   building.finish();
   vis::QualityScene scene(map.data, map.style);

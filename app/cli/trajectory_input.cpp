@@ -1,16 +1,16 @@
 #include "trajectory_input.h"
 
 #include <cstdio>
+#include <filesystem>
 
+#include "inputs.h"
 #include "isurface/io/biip.h"
-#include "isurface/workflow/run_inputs.h"
 #include "progress.h"
 
 namespace isurface::cli {
 
-namespace {
-
-Trajectory load(const BiipReader& reader, const TrajectoryChannels& channels) {
+Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels) {
+  const BiipReader reader(biipPath);
   for (const std::string& w : reader.warnings())
     std::fprintf(stderr, "warning: %s: %s\n", reader.path().c_str(), w.c_str());
   ProgressLine progress("loading " + reader.path());
@@ -19,28 +19,28 @@ Trajectory load(const BiipReader& reader, const TrajectoryChannels& channels) {
   return t;
 }
 
-}  // namespace
-
-Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels) {
-  return load(BiipReader(biipPath), channels);
-}
-
-Trajectory readProgramDump(const std::string& biipPath, const Program& program, bool force,
-                           const TrajectoryChannels& channels) {
-  const BiipReader reader(biipPath);
-  Trajectory samples = load(reader, channels);
-  if (!force)
-    if (const auto why = dumpMismatch(reader, samples, program))
-      throw InputError(Diagnostic{biipPath, 0, 0,
-                                  "is not a dump of " + program.source + ": " + *why + " (--force joins them anyway)"});
-  return samples;
-}
-
-Trajectory simulateTrajectory(const Program& program, const Machine& machine) {
-  ProgressLine progress("simulating " + program.source);
-  Trajectory samples = simulateRun(program, machine, [&](double f) { progress.update(f); });
+OpenedRun openRunOnTerminal(const RunFiles& files, const std::string& machineOption, bool force,
+                            const TrajectoryChannels& channels) {
+  OpenRunRequest request;
+  request.files = files;
+  if (!machineOption.empty()) request.machine = loadMachineOption(machineOption);
+  request.channels = channels;
+  request.force = force;
+  const std::string& first = files.program.empty() ? files.dump : files.program;
+  ProgressLine progress((files.dump.empty() ? "reading and simulating " : "reading ") +
+                        std::filesystem::path(first).filename().string());
+  OpenedRun run;
+  try {
+    run = openRun(request, [&](double f) { progress.update(f); });
+  } catch (const DumpMismatchError& e) {
+    progress.finish();
+    Diagnostic d = e.diagnostic();
+    d.message += " (--force joins them anyway)";
+    throw InputError(d);
+  }
   progress.finish();
-  return samples;
+  for (const std::string& w : run.warnings) std::fprintf(stderr, "warning: %s\n", w.c_str());
+  return run;
 }
 
 }  // namespace isurface::cli

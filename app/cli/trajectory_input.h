@@ -1,19 +1,19 @@
 #pragma once
-// The samples a command works on: read from a Biip dump or simulated from the program, with a
-// progress line on the terminal.
+// What a command works on, opened through the workflow (a program, its dump or both, or the
+// program simulated) with its warnings and a progress line on the terminal.
 #include <string>
 
-#include "isurface/gcode/program.h"
 #include "isurface/io/trajectory_loading.h"
-#include "isurface/machine/machine.h"
+#include "isurface/workflow/run_inputs.h"
 
 namespace isurface::cli {
 
+// A dump alone (no program), e.g. a machine trace.
 Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels = {});
-// A dump given with its program: refused (InputError naming both) when it does not belong to
-// it (workflow's dumpMismatch), unless `force`.
-Trajectory readProgramDump(const std::string& biipPath, const Program& program, bool force,
-                           const TrajectoryChannels& channels = {});
-Trajectory simulateTrajectory(const Program& program, const Machine& machine);
+
+// `machineOption` is the path given to --machine (empty: the default machine); it is used when
+// there is no dump to read. A dump refused as another program's names --force in its message.
+OpenedRun openRunOnTerminal(const RunFiles& files, const std::string& machineOption, bool force,
+                            const TrajectoryChannels& channels = {});
 
 }  // namespace isurface::cli

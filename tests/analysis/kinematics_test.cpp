@@ -62,7 +62,7 @@ TEST(kinematics, CubicMotionOnARegularGrid) {
       // Velocity: the central difference is exact for quadratics; for a cubic it is off by
       // exactly c3 T^2 inside and -2 c3 T^2 at the one-sided ends.
       const double bias = (i == 0 || i == n - 1) ? -2 * c.c3 * T * T : c.c3 * T * T;
-      EXPECT_NEAR(k.axisVel[ax][i], 60.0 * (c.v(t) + bias), 1e-9) << ax << " " << i;
+      EXPECT_NEAR(k.axisVel[ax][i], c.v(t) + bias, 1e-9) << ax << " " << i;
     }
   }
   for (std::size_t i = 0; i < n; ++i) {
@@ -88,18 +88,18 @@ TEST(kinematics, CircleAtConstantSpeed) {
   for (std::size_t i = 0; i < n; ++i) {
     const bool end = i == 0 || i == n - 1;
     const double tol = end ? 1e-5 : 1e-6;
-    EXPECT_NEAR(k.speed[i] / (v * 60), 1.0, tol) << i;
+    EXPECT_NEAR(k.speed[i] / v, 1.0, tol) << i;  // mm/s
     EXPECT_NEAR(k.accelMagnitude[i] / (v * v / R), 1.0, tol) << i;
     EXPECT_NEAR(k.accel[i] / (v * v / R), 0.0, 1e-5) << i;  // no tangential component
     EXPECT_NEAR(k.jerk[i] / (v * v * v / (R * R)), 1.0, 1e-2) << i;  // T^3 amplifies rounding
     EXPECT_EQ(k.axisVel[2][i], 0.0);
   }
   const KinematicsSummary s = summarizeKinematics(x.data(), y.data(), z.data(), nullptr, n, T);
-  EXPECT_NEAR(s.maxSpeed_mm_min, 3000, 3000 * 1e-5);
-  EXPECT_NEAR(s.maxAccel_mm_s2, 50, 50 * 1e-5);
-  EXPECT_NEAR(s.axis[0].speed_mm_min, 3000, 3000 * 1e-5);
-  EXPECT_NEAR(s.axis[1].accel_mm_s2, 50, 50 * 1e-5);
-  EXPECT_EQ(s.axis[2].speed_mm_min, 0.0);
+  EXPECT_NEAR(s.maxSpeed, 50, 50 * 1e-5);  // mm/s
+  EXPECT_NEAR(s.maxAccel, 50, 50 * 1e-5);
+  EXPECT_NEAR(s.axis[0].speed, 50, 50 * 1e-5);
+  EXPECT_NEAR(s.axis[1].accel, 50, 50 * 1e-5);
+  EXPECT_EQ(s.axis[2].speed, 0.0);
 }
 
 TEST(kinematics, IrregularTimes) {
@@ -118,7 +118,7 @@ TEST(kinematics, IrregularTimes) {
       if (i > 0 && i + 1 < n) {
         // The quadratic through three samples misses a cubic's slope by c3 h1 h2.
         const double h1 = times[i] - times[i - 1], h2 = times[i + 1] - times[i];
-        EXPECT_NEAR(k.axisVel[ax][i], 60.0 * (c.v(t) + c.c3 * h1 * h2), 1e-7) << ax << " " << i;
+        EXPECT_NEAR(k.axisVel[ax][i], c.v(t) + c.c3 * h1 * h2, 1e-7) << ax << " " << i;
       }
     }
   }
@@ -132,8 +132,8 @@ TEST(kinematics, IrregularTimes) {
   }
   const Kinematics q = deriveKinematics(x.data(), y.data(), z.data(), times.data(), n, T);
   for (std::size_t i = 0; i < n; ++i) {
-    EXPECT_NEAR(q.axisVel[0][i], 60.0 * (5 - 8 * times[i]), 1e-7) << i;
-    EXPECT_NEAR(q.axisVel[1][i], 60.0 * times[i], 1e-7) << i;
+    EXPECT_NEAR(q.axisVel[0][i], 5 - 8 * times[i], 1e-7) << i;
+    EXPECT_NEAR(q.axisVel[1][i], times[i], 1e-7) << i;
     EXPECT_NEAR(q.axisAcc[0][i], -8, 1e-6) << i;
     EXPECT_NEAR(q.axisJerk[0][i], 0, 1e-4) << i;
   }
@@ -219,15 +219,15 @@ TEST(kinematics, ShortSeries) {
   EXPECT_EQ(one.speed, std::vector<double>{0.0});
   EXPECT_EQ(one.jerk, std::vector<double>{0.0});
   const Kinematics two = deriveKinematics(x, y, z, nullptr, 2, 0.1);
-  EXPECT_NEAR(two.speed[0], 600, 1e-9);  // 1 mm in 0.1 s
-  EXPECT_NEAR(two.speed[1], 600, 1e-9);
+  EXPECT_NEAR(two.speed[0], 10, 1e-9);  // mm/s: 1 mm in 0.1 s
+  EXPECT_NEAR(two.speed[1], 10, 1e-9);
   EXPECT_EQ(two.accelMagnitude[1], 0.0);
   const Kinematics three = deriveKinematics(x, y, z, nullptr, 3, 0.1);
   for (int i = 0; i < 3; ++i) {
     EXPECT_NEAR(three.axisAcc[0][i], 100, 1e-9);  // (3 - 2 + 0) / 0.01
     EXPECT_EQ(three.jerk[i], 0.0);
   }
-  EXPECT_NEAR(three.axisVel[0][1], 60 * 15, 1e-9);
+  EXPECT_NEAR(three.axisVel[0][1], 15, 1e-9);
   const Kinematics four = deriveKinematics(x, y, z, nullptr, 4, 0.1);
   for (int i = 0; i < 4; ++i) EXPECT_NEAR(four.axisJerk[0][i], 0, 1e-6);  // x is quadratic
   const double cubic[] = {0, 1, 8, 27};
@@ -284,10 +284,10 @@ TEST(kinematics, StreamingSummaryMatchesTheArrays) {
       for (const KinematicsSummary& sum : {s, direct}) {
         EXPECT_EQ(sum.samples, n);
         EXPECT_EQ(sum.finiteSamples, finite);
-        EXPECT_EQ(sum.maxSpeed_mm_min, maxSpeed) << n << withTime;
-        EXPECT_EQ(sum.maxAccel_mm_s2, maxAccel) << n << withTime;
-        EXPECT_EQ(sum.maxJerk_mm_s3, maxJerk) << n << withTime;
-        EXPECT_EQ(sum.axis[1].jerk_mm_s3, maxAxisJerk) << n << withTime;
+        EXPECT_EQ(sum.maxSpeed, maxSpeed) << n << withTime;
+        EXPECT_EQ(sum.maxAccel, maxAccel) << n << withTime;
+        EXPECT_EQ(sum.maxJerk, maxJerk) << n << withTime;
+        EXPECT_EQ(sum.axis[1].jerk, maxAxisJerk) << n << withTime;
         if (n > 0) {
           EXPECT_EQ(k.speed[sum.maxSpeedIndex], maxSpeed);
         }
@@ -301,7 +301,7 @@ TEST(kinematics, PathOnlyLeavesAxisArraysEmpty) {
   const Kinematics k = deriveKinematics(x, y, y, nullptr, 5, 0.5, false);
   EXPECT_EQ(k.speed.size(), 5u);
   EXPECT_TRUE(k.axisVel[0].empty());
-  EXPECT_NEAR(k.speed[2], 120, 1e-12);
+  EXPECT_NEAR(k.speed[2], 2, 1e-12);  // mm/s
 }
 
 }  // namespace

@@ -66,17 +66,21 @@ Trajectory wavyPath(std::size_t n) {
 TEST(quantities, SampleValuesAreTheWholeDerivation) {
   const Trajectory t = wavyPath(200'000);
   const Kinematics k = deriveKinematics(t.x.data(), t.y.data(), t.z.data(), nullptr, t.size(), t.cycle, true);
+  // Speeds are shown in mm/min, everything else in the unit it is derived in.
   const struct {
     Quantity q;
     const std::vector<double>* expected;
-  } cases[] = {{Quantity::Speed, &k.speed},          {Quantity::Acceleration, &k.accel},
-               {Quantity::AccelerationMagnitude, &k.accelMagnitude}, {Quantity::Jerk, &k.jerk},
-               {Quantity::VelocityY, &k.axisVel[1]}, {Quantity::AccelerationZ, &k.axisAcc[2]},
-               {Quantity::JerkX, &k.axisJerk[0]}};
+    double toDisplay;
+  } cases[] = {{Quantity::Speed, &k.speed, 60},          {Quantity::Acceleration, &k.accel, 1},
+               {Quantity::AccelerationMagnitude, &k.accelMagnitude, 1}, {Quantity::Jerk, &k.jerk, 1},
+               {Quantity::VelocityY, &k.axisVel[1], 60}, {Quantity::AccelerationZ, &k.axisAcc[2], 1},
+               {Quantity::JerkX, &k.axisJerk[0], 1}};
   for (const auto& c : cases) {
     const std::vector<double> v = sampleQuantity(c.q, t);
     ASSERT_EQ(v.size(), t.size());
-    for (std::size_t i = 0; i < v.size(); ++i) ASSERT_EQ(v[i], (*c.expected)[i]) << quantityInfo(c.q).name << " " << i;
+    ASSERT_STREQ(quantityInfo(c.q).unit, c.toDisplay == 60 ? "mm/min" : quantityInfo(c.q).unit);
+    for (std::size_t i = 0; i < v.size(); ++i)
+      ASSERT_EQ(v[i], c.toDisplay * (*c.expected)[i]) << quantityInfo(c.q).name << " " << i;
   }
   const std::vector<double> lines = sampleQuantity(Quantity::Line, t);
   EXPECT_EQ(lines[123456], 124.0);
@@ -89,7 +93,7 @@ TEST(quantities, IrregularTimeUsesDividedDifferences) {
   t.irregularTime = true;
   const Kinematics k = deriveKinematics(t.x.data(), t.y.data(), t.z.data(), t.time.data(), t.size(), t.cycle, false);
   const std::vector<double> v = sampleQuantity(Quantity::Speed, t);
-  for (std::size_t i = 0; i < v.size(); ++i) ASSERT_EQ(v[i], k.speed[i]);
+  for (std::size_t i = 0; i < v.size(); ++i) ASSERT_EQ(v[i], 60 * k.speed[i]);  // mm/s -> mm/min
 }
 
 TEST(quantities, VertexValuesAreTheSamples) {

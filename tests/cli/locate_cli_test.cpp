@@ -101,10 +101,10 @@ TEST(locate, CommandPrintsTheMotion) {
   const std::size_t k = t.size() / 2;
   const nlohmann::json j = locate("--sample " + std::to_string(k));
   const SampleMotion m = motionAtSample(t, k);
-  EXPECT_DOUBLE_EQ(j["speed_mm_min"].get<double>(), m.speed);
+  EXPECT_DOUBLE_EQ(j["speed_mm_min"].get<double>(), 60 * m.speed);  // mm/s inside, mm/min in the report
   EXPECT_DOUBLE_EQ(j["accel_mm_s2"].get<double>(), m.accel);
   EXPECT_DOUBLE_EQ(j["jerk_mm_s3"].get<double>(), m.jerk);
-  EXPECT_DOUBLE_EQ(j["velocity_mm_min"][0].get<double>(), m.velocity.x());
+  EXPECT_DOUBLE_EQ(j["velocity_mm_min"][0].get<double>(), 60 * m.velocity.x());
   EXPECT_DOUBLE_EQ(j["acceleration_mm_s2"][2].get<double>(), m.acceleration.z());
   EXPECT_DOUBLE_EQ(j["jerk_axes_mm_s3"][1].get<double>(), m.jerkAxes.y());
   EXPECT_DOUBLE_EQ(j["time_s"].get<double>(), t.time[k]);

@@ -8,10 +8,12 @@
 #include <cstring>
 #include <fstream>
 #include <thread>
+#include <utility>
 
 #include "inspector_state.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_scene.h"
+#include "isurface/workflow/run_inputs.h"
 
 namespace isurface::panels {
 
@@ -38,8 +40,18 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
   result->replaces = replaces;
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
-  job.start(label, [result, programPath, dumpPath, request](app_model::JobControl& control) {
-    result->document = loadDocument(programPath, dumpPath, request, control);
+  const bool programOpen = replaces < documents.size();
+  job.start(label, [result, programPath, dumpPath, request, programOpen](app_model::JobControl& control) {
+    try {
+      result->document = loadDocument(programPath, dumpPath, request, control);
+    } catch (const DumpMismatchError& e) {
+      // Not joined: the dump opens as a document of its own, saying why, and the program
+      // stays (or opens) by itself.
+      result->document = loadDocument("", dumpPath, request, control);
+      result->document->warnings.insert(result->document->warnings.begin(), std::string("not joined: ") + e.what());
+      result->replaces = ~std::size_t(0);
+      if (!programOpen) result->programAlone = programPath;
+    }
   });
   status = label;
 }
@@ -65,6 +77,7 @@ void Inspector::State::startRecolour() {
 void Inspector::State::takeJobResult() {
   if (!job.takeFinished()) return;
   std::shared_ptr<JobResult> result = std::move(pending);
+  const std::string notice = std::exchange(joinNotice, std::string());
   if (job.wasCancelled()) {
     status = job.label() + ": cancelled";
     return;
@@ -100,6 +113,12 @@ void Inspector::State::takeJobResult() {
       settings.quantity = Quantity::Speed;
     status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
     for (const std::string& w : doc.warnings) status += " | " + w;
+    if (!notice.empty()) status += " | " + notice;
+    if (!result->programAlone.empty()) {
+      // The program opens next, by itself; its status keeps the reason in sight.
+      queuedRuns.push_front(RunFiles{result->programAlone, ""});
+      joinNotice = doc.warnings.front();
+    }
     if (result->replaces < documents.size()) {
       documents[result->replaces] = std::move(result->document);
       activate(result->replaces);

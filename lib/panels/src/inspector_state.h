@@ -94,9 +94,9 @@ struct JobResult {
   std::shared_ptr<RunComparisonView> runComparison;  // a second run compared
   std::unique_ptr<Document> document;        // a newly loaded document
   std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
+  std::string programAlone;                  // a program whose dump was refused, to open by itself next
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
   vis::QualityMap map;
-  std::vector<std::string> messages;
 };
 
 struct Inspector::State {
@@ -117,6 +117,7 @@ struct Inspector::State {
   char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
   std::deque<RunFiles> queuedRuns;  // files opened together, loaded one run after another
+  std::string joinNotice;           // why a dump was not joined, shown with the next result
   std::size_t active = 0;
   app_model::SelectionModel selection;
   std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows

@@ -45,6 +45,10 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
     status = "Optimise needs a G-code program: open the program of this dump first";
     return;
   }
+  if (!doc->map.mesh) {
+    status = "Optimise needs a surface: " + doc->name + " has no cutting passes";
+    return;
+  }
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
@@ -52,16 +56,15 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   const std::string path = doc->programPath;
   std::shared_ptr<const Program> program = doc->program;
   std::shared_ptr<const Trajectory> before = doc->samples;
-  const PassSet beforePasses = doc->map.passes;
+  // The surface the map shows, as `optimize` measures on its own.
+  const SurfaceRun beforeRun{doc->samples, doc->map.passes, doc->map.mesh};
   const Machine machine = doc->machine;  // the document's own, as the CLI's --machine
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, before, beforePasses, request, first, last, measuredBox,
+            [result, path, program, before, beforeRun, request, first, last, measuredBox,
              machine](app_model::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
-              SurfaceRun beforeRun{before, beforePasses,
-                                   std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*before, beforePasses))};
               RegionRequest region;
               region.lines = LineRange{first, last};
               region.box = measuredBox;
@@ -115,8 +118,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
     try {
       // As `optimize --auto`: whole passes around the region, its figures taken inside its box.
-      const SurfaceRun run{doc->samples, doc->map.passes,
-                           std::shared_ptr<const SurfaceMesh>(doc->map.mesh.get(), [](const SurfaceMesh*) {})};
+      const SurfaceRun run{doc->samples, doc->map.passes, doc->map.mesh};
       const ChosenRegion worst = worstRegion(run, doc->name);
       s.optimiseFirst = static_cast<int>(worst.lines.first);
       s.optimiseLast = static_cast<int>(worst.lines.last);

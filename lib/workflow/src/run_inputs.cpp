@@ -146,8 +146,8 @@ OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progres
     auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), request.channels));
     if (run.program && !request.force)
       if (const auto why = dumpMismatch(reader, *samples, *run.program))
-        throw InputError(Diagnostic{request.files.dump, 0, 0,
-                                    "is not a dump of " + request.files.program + ": " + *why});
+        throw DumpMismatchError(Diagnostic{request.files.dump, 0, 0,
+                                           "is not a dump of " + request.files.program + ": " + *why});
     const std::optional<Machine> own = machineOfDump(reader);
     run.machineKnown = own.has_value();
     if (own) run.machine = *own;

@@ -137,7 +137,7 @@ void deriveDivided(std::size_t i, std::size_t n, const Pos& P, const Gap& H, Der
 }
 
 struct PathValues {
-  double speed, accel, accelMagnitude, jerk;  // mm/min, mm/s^2 (signed), mm/s^2, mm/s^3
+  double speed, accel, accelMagnitude, jerk;  // mm/s, mm/s^2 (signed), mm/s^2, mm/s^3
 };
 
 PathValues pathValues(const Derivatives& d) {
@@ -145,48 +145,47 @@ PathValues pathValues(const Derivatives& d) {
   const double vmag = std::sqrt(v2);
   const double dot = d.v[0] * d.a[0] + d.v[1] * d.a[1] + d.v[2] * d.a[2];
   PathValues p;
-  p.speed = mmPerSToMmPerMin(vmag);
+  p.speed = vmag;
   p.accelMagnitude = std::sqrt(d.a[0] * d.a[0] + d.a[1] * d.a[1] + d.a[2] * d.a[2]);
   p.accel = vmag == 0 ? 0.0 : dot / vmag;
   p.jerk = std::sqrt(d.j[0] * d.j[0] + d.j[1] * d.j[1] + d.j[2] * d.j[2]);
   return p;
 }
 
-// While accumulating, the path maxima are held squared and in mm/s (one square root per new
-// maximum rather than three per sample) and the axis speeds in mm/s; finished() converts.
+// While accumulating, the path maxima are held squared (one square root per new maximum rather
+// than three per sample); finished() takes the roots.
 void accumulate(KinematicsSummary& s, std::size_t i, const Derivatives& d) {
   const double v2 = d.v[0] * d.v[0] + d.v[1] * d.v[1] + d.v[2] * d.v[2];
   const double a2 = d.a[0] * d.a[0] + d.a[1] * d.a[1] + d.a[2] * d.a[2];
   const double j2 = d.j[0] * d.j[0] + d.j[1] * d.j[1] + d.j[2] * d.j[2];
   ++s.samples;
   // NaN compares false: non-finite values never become maxima.
-  if (v2 > s.maxSpeed_mm_min) {
-    s.maxSpeed_mm_min = v2;
+  if (v2 > s.maxSpeed) {
+    s.maxSpeed = v2;
     s.maxSpeedIndex = i;
   }
-  if (a2 > s.maxAccel_mm_s2) {
-    s.maxAccel_mm_s2 = a2;
+  if (a2 > s.maxAccel) {
+    s.maxAccel = a2;
     s.maxAccelIndex = i;
   }
-  if (j2 > s.maxJerk_mm_s3) {
-    s.maxJerk_mm_s3 = j2;
+  if (j2 > s.maxJerk) {
+    s.maxJerk = j2;
     s.maxJerkIndex = i;
   }
   for (int ax = 0; ax < 3; ++ax) {
     KinematicsMaxima& m = s.axis[ax];
     const double v = std::fabs(d.v[ax]), a = std::fabs(d.a[ax]), j = std::fabs(d.j[ax]);
-    if (v > m.speed_mm_min) m.speed_mm_min = v;
-    if (a > m.accel_mm_s2) m.accel_mm_s2 = a;
-    if (j > m.jerk_mm_s3) m.jerk_mm_s3 = j;
+    if (v > m.speed) m.speed = v;
+    if (a > m.accel) m.accel = a;
+    if (j > m.jerk) m.jerk = j;
   }
   s.finiteSamples += static_cast<std::size_t>((v2 - v2) + (a2 - a2) + (j2 - j2) == 0);
 }
 
 KinematicsSummary finished(KinematicsSummary s) {
-  s.maxSpeed_mm_min = mmPerSToMmPerMin(std::sqrt(s.maxSpeed_mm_min));
-  s.maxAccel_mm_s2 = std::sqrt(s.maxAccel_mm_s2);
-  s.maxJerk_mm_s3 = std::sqrt(s.maxJerk_mm_s3);
-  for (auto& m : s.axis) m.speed_mm_min = mmPerSToMmPerMin(m.speed_mm_min);
+  s.maxSpeed = std::sqrt(s.maxSpeed);
+  s.maxAccel = std::sqrt(s.maxAccel);
+  s.maxJerk = std::sqrt(s.maxJerk);
   return s;
 }
 
@@ -236,7 +235,7 @@ Kinematics deriveKinematics(const double* x, const double* y, const double* z, c
     k.jerk[i] = p.jerk;
     if (perAxis) {
       for (int ax = 0; ax < 3; ++ax) {
-        k.axisVel[ax][i] = mmPerSToMmPerMin(d.v[ax]);
+        k.axisVel[ax][i] = d.v[ax];
         k.axisAcc[ax][i] = d.a[ax];
         k.axisJerk[ax][i] = d.j[ax];
       }

@@ -9,6 +9,7 @@
 
 #include "isurface/base/diagnostic.h"
 #include "isurface/analysis/kinematics.h"
+#include "isurface/base/units.h"
 
 namespace isurface {
 
@@ -43,15 +44,16 @@ bool isKinematic(Quantity q) {
 
 bool isPerAxis(Quantity q) { return isKinematic(q) && q >= Quantity::VelocityX; }
 
+// Speeds leave here in mm/min, the unit they are shown in (quantities are display values).
 double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
   switch (q) {
-    case Quantity::Speed: return k.speed[i];
+    case Quantity::Speed: return mmPerSToMmPerMin(k.speed[i]);
     case Quantity::Acceleration: return k.accel[i];
     case Quantity::AccelerationMagnitude: return k.accelMagnitude[i];
     case Quantity::Jerk: return k.jerk[i];
-    case Quantity::VelocityX: return k.axisVel[0][i];
-    case Quantity::VelocityY: return k.axisVel[1][i];
-    case Quantity::VelocityZ: return k.axisVel[2][i];
+    case Quantity::VelocityX: return mmPerSToMmPerMin(k.axisVel[0][i]);
+    case Quantity::VelocityY: return mmPerSToMmPerMin(k.axisVel[1][i]);
+    case Quantity::VelocityZ: return mmPerSToMmPerMin(k.axisVel[2][i]);
     case Quantity::AccelerationX: return k.axisAcc[0][i];
     case Quantity::AccelerationY: return k.axisAcc[1][i];
     case Quantity::AccelerationZ: return k.axisAcc[2][i];

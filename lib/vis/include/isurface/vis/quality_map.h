@@ -38,9 +38,10 @@ struct QualityMapRequest {
   std::string caption;                       // prefix of the caption (e.g. the file name)
 };
 
-// Held by pointer so that `data` keeps pointing at them when the map is moved.
+// Held by pointer so that `data` keeps pointing at them when the map is moved; shared so that
+// picking and region optimisation use the surface the map shows.
 struct QualityMap {
-  std::unique_ptr<SurfaceMesh> mesh, coarseMesh;
+  std::shared_ptr<const SurfaceMesh> mesh, coarseMesh;
   PassSet passes;
   SurfaceData data;
   MapStyle style;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "isurface/base/diagnostic.h"
 #include "isurface/base/progress.h"
 #include "isurface/base/trajectory.h"
 #include "isurface/gcode/gcode_interpreter.h"
@@ -45,6 +46,13 @@ std::optional<Machine> machineOfDump(const BiipReader& reader);
 std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory& samples, const Program& program);
 constexpr double kJoinDistance = 1.0;  // mm
 
+// A dump refused as another program's: the message names both files and why. A caller may
+// offer an override (the CLI's --force) or open the program alone (the application).
+class DumpMismatchError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 struct OpenRunRequest {
   RunFiles files;
   // The machine to simulate with when there is no dump; when empty, the default machine.
@@ -63,8 +71,8 @@ struct OpenedRun {
   std::vector<std::string> warnings;
 };
 
-// Throws InputError for a bad file, and for a dump that does not belong to its program (the
-// message names both files) unless request.force.
+// Throws InputError for a bad file, and DumpMismatchError for a dump that does not belong to
+// its program unless request.force.
 OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress = {});
 
 // Simulates a program in memory with a machine (progress 0..1).

@@ -24,11 +24,11 @@
 namespace isurface {
 
 struct Kinematics {
-  std::vector<double> speed;           // mm/min, path speed |v|
+  std::vector<double> speed;           // mm/s, path speed |v|
   std::vector<double> accel;           // mm/s^2, tangential v.a/|v| (signed; 0 where |v| = 0)
   std::vector<double> accelMagnitude;  // mm/s^2, |a|
   std::vector<double> jerk;            // mm/s^3, |j|
-  std::array<std::vector<double>, 3> axisVel;   // mm/min (empty unless asked for)
+  std::array<std::vector<double>, 3> axisVel;   // mm/s (empty unless asked for)
   std::array<std::vector<double>, 3> axisAcc;   // mm/s^2
   std::array<std::vector<double>, 3> axisJerk;  // mm/s^3
 };
@@ -39,16 +39,16 @@ Kinematics deriveKinematics(const double* x, const double* y, const double* z, c
                             double cycleSeconds, bool perAxis = true);
 
 struct KinematicsMaxima {
-  double speed_mm_min = 0;  // max |v| (path) or |v_axis|
-  double accel_mm_s2 = 0;   // max |a|
-  double jerk_mm_s3 = 0;    // max |j|
+  double speed = 0;  // mm/s, max |v| (path) or |v_axis|
+  double accel = 0;  // mm/s^2, max |a|
+  double jerk = 0;   // mm/s^3, max |j|
 };
 
 // Maxima over the samples whose derived value is finite (NaN samples are skipped).
 struct KinematicsSummary {
   std::size_t samples = 0;        // samples seen
   std::size_t finiteSamples = 0;  // samples whose velocity, acceleration and jerk are all finite
-  double maxSpeed_mm_min = 0, maxAccel_mm_s2 = 0, maxJerk_mm_s3 = 0;  // path (vector magnitudes)
+  double maxSpeed = 0, maxAccel = 0, maxJerk = 0;  // mm/s, mm/s^2, mm/s^3: path (vector magnitudes)
   std::size_t maxSpeedIndex = 0, maxAccelIndex = 0, maxJerkIndex = 0;  // where they occur
   std::array<KinematicsMaxima, 3> axis;                                // x, y, z
 };

@@ -18,11 +18,11 @@ std::optional<std::size_t> nearestSample(const Trajectory& samples, const Vec3& 
 // Motion parameters at one sample, from the samples around it with kinematics.h's formulas
 // (the values deriveKinematics gives for the whole trajectory).
 struct SampleMotion {
-  double speed = 0;           // mm/min, path
+  double speed = 0;           // mm/s, path
   double accel = 0;           // mm/s^2, tangential (signed)
   double accelMagnitude = 0;  // mm/s^2
   double jerk = 0;            // mm/s^3, |j|
-  Vec3 velocity = Vec3::Zero();      // mm/min, per axis
+  Vec3 velocity = Vec3::Zero();      // mm/s, per axis
   Vec3 acceleration = Vec3::Zero();  // mm/s^2, per axis
   Vec3 jerkAxes = Vec3::Zero();      // mm/s^3, per axis
 };

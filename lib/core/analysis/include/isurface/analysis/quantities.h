@@ -1,6 +1,8 @@
 #pragma once
 // What a quality map can be coloured by: motion parameters per sample, and the two scalars on
 // the surface (adjacent-pass inconsistency, predicted deviation).
+// Values are in the unit each is shown in (QuantityInfo::unit: mm/min for speeds, um for
+// deviations): the one place where internal units (mm, s, mm/s) become display units.
 #include <optional>
 #include <string>
 #include <vector>
