@@ -31,13 +31,13 @@ struct OptimizeCliOptions {
   double chordTolerance = 0.002;
 };
 
-nlohmann::json metricsJson(const RegionMetrics& m) {
-  return {{"samples", m.samples},
-          {"time_s", m.time},
-          {"speed_fluctuation_mm_min", m.speedFluctuation},
-          {"max_speed_inconsistency_mm_min", m.maxSpeedInconsistency},
-          {"max_jerk_mm_s3", m.maxJerk},
-          {"max_predicted_deviation_um", m.maxDeviation}};
+nlohmann::json figuresJson(const QualityFigures& f) {
+  return {{"samples", f.samples},
+          {"speed_fluctuation_mm_min", f.speedFluctuation},
+          {"speed_inconsistency_p99_mm_min", f.inconsistencyP99},
+          {"speed_inconsistency_mean_mm_min", f.inconsistencyMean},
+          {"jerk_p99_mm_s3", f.jerkP99},
+          {"predicted_deviation_p99_um", f.hasDeviation ? nlohmann::json(f.deviationP99) : nlohmann::json(nullptr)}};
 }
 
 // A top view of the run's surface coloured as the request says.
@@ -82,12 +82,12 @@ int runOptimize(const OptimizeCliOptions& o) {
   const RegionOptimisation r =
       optimiseRegion(text.str(), program, before, machine, request, [&](double f) { progress.update(f); });
   progress.finish();
-  writeFileAtomically(o.output, r.result.text);
+  // A candidate that is worse is not written: the program goes out as it came in, byte for byte.
+  writeFileAtomically(o.output, r.kept ? r.result.text : text.str());
   const OptimizeResult& result = r.result;
   const LineRange range = r.lines;
   const SurfaceRun& after = r.after;
   const Program& newProgram = *r.program;
-  const RegionMetrics &old = r.before, &now = r.afterMetrics;
   const Vec3 &lower = r.lower, &upper = r.upper;
   const double distance = r.maxPathDistance, timeBefore = r.timeBefore, timeAfter = r.timeAfter;
 
@@ -96,10 +96,12 @@ int runOptimize(const OptimizeCliOptions& o) {
     passes.push_back({{"lines", {p.firstLine, p.lastLine}}, {"new_lines", {p.newFirstLine, p.newLastLine}},
                       {"old_moves", p.oldMoves}, {"new_moves", p.newMoves}, {"interval_feeds_mm_min", p.intervalFeeds}});
   const nlohmann::json report = {
-      {"source", o.input}, {"output", o.output}, {"lines", {range.first, range.last}},
+      {"source", o.input}, {"output", o.output}, {"kept", r.kept}, {"reason", r.reason},
+      {"lines", {range.first, range.last}},
       {"new_lines", {result.newRange.first, result.newRange.last}},
       {"machining_time_s", {{"before", timeBefore}, {"after", timeAfter}}},
-      {"region", {{"before", metricsJson(old)}, {"after", metricsJson(now)}}},
+      {"region", {{"before", figuresJson(r.regionBefore)}, {"after", figuresJson(r.regionAfter)}}},
+      {"whole_program", {{"before", figuresJson(r.wholeBefore)}, {"after", figuresJson(r.wholeAfter)}}},
       {"max_path_distance_mm", distance}, {"passes", passes},
       {"compared_box_mm", {{"min", {lower.x(), lower.y()}}, {"max", {upper.x(), upper.y()}}}}};
   if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
@@ -114,11 +116,7 @@ int runOptimize(const OptimizeCliOptions& o) {
     renderTop(before, program, vis::regionDifferenceMapRequest(difference, *before.samples, range),
               o.output + " against " + o.input, o.pngDifference);
   }
-  std::printf("%s: lines %u-%u, %zu passes re-fitted\n", o.output.c_str(), range.first, range.last, result.passes.size());
-  std::printf("machining time %s -> %s; in the region: speed fluctuation %.1f -> %.1f mm/min, "
-              "max inconsistency between passes %.1f -> %.1f mm/min, max jerk %.0f -> %.0f mm/s^3; path moved %.4f mm at most\n",
-              formatDuration(timeBefore).c_str(), formatDuration(timeAfter).c_str(), old.speedFluctuation,
-              now.speedFluctuation, old.maxSpeedInconsistency, now.maxSpeedInconsistency, old.maxJerk, now.maxJerk, distance);
+  std::printf("%s: %s\n", o.output.c_str(), regionSummary(r).c_str());
   return kExitOk;
 }
 

@@ -54,10 +54,10 @@ TEST(regionOptimisation, TheSelectedLinesPassIsTheWholePassHoldingIt) {
 TEST(regionOptimisation, ATypedRangeOfOnePassIsMeasuredNotReportedAsZero) {
   const LineRange lines = *passOfLine(transition().before, 150);
   const RegionOptimisation r = optimise(lines);
-  EXPECT_GT(r.before.samples, 10u);
-  EXPECT_GT(r.afterMetrics.samples, 10u);
-  EXPECT_GT(r.before.speedFluctuation, 0.0);
-  EXPECT_GT(r.afterMetrics.speedFluctuation, 0.0);
+  EXPECT_GT(r.regionBefore.samples, 10u);
+  EXPECT_GT(r.regionAfter.samples, 10u);
+  EXPECT_GT(r.regionBefore.speedFluctuation, 0.0);
+  EXPECT_GT(r.regionAfter.speedFluctuation, 0.0);
 }
 
 TEST(regionOptimisation, MachiningTimeIsTheSameFormulaOnBothSides) {
@@ -75,4 +75,48 @@ TEST(regionOptimisation, TheWorstRegionIsWholePassesWithTheDefectsBox) {
   EXPECT_LT(worst.lines.first, worst.lines.last);
   EXPECT_GT(worst.vertices, 0u);
   EXPECT_LT(worst.lower.x(), worst.upper.x());
+}
+
+TEST(regionOptimisation, ACandidateWorseThanTheProgramIsNotKept) {
+  // One pass re-fitted alone runs at other speeds than its unchanged neighbours: the region's
+  // inconsistency between passes grows, so the candidate is reported and not kept.
+  const RegionOptimisation r = optimise(*passOfLine(transition().before, 150));
+  EXPECT_FALSE(r.kept);
+  EXPECT_NE(r.reason.find("inconsistency between passes"), std::string::npos) << r.reason;
+  EXPECT_GT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99 * (1 + kWorseningAllowed));
+  EXPECT_NE(regionSummary(r).find("Not kept"), std::string::npos);
+  EXPECT_TRUE(worsening(r).has_value());
+}
+
+TEST(regionOptimisation, ACandidateNoWorseOnAnyFigureIsKept) {
+  // The worst region of another sample, as --auto takes it: better on every figure, not slower.
+  const std::string path = sourcePath("samples/wuzhishan.nc");
+  const Program program = readProgram(path);
+  const SurfaceRun before = surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+  const ChosenRegion worst = worstRegion(before, path);
+  RegionRequest request;
+  request.lines = worst.lines;
+  request.box = std::make_pair(worst.lower, worst.upper);
+  const RegionOptimisation r = optimiseRegion(readFile(path), program, before, defaultMachine(), request);
+  EXPECT_TRUE(r.kept) << r.reason;
+  EXPECT_FALSE(worsening(r).has_value());
+  EXPECT_LE(r.timeAfter, r.timeBefore);
+  EXPECT_LT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99);
+}
+
+TEST(regionOptimisation, TheFiguresJudgeEveryFigureByTheSameRule) {
+  QualityFigures before;
+  before.speedFluctuation = 100, before.inconsistencyP99 = 200, before.inconsistencyMean = 20, before.jerkP99 = 1e4,
+  before.deviationP99 = 5;
+  EXPECT_EQ(worseFigure(before, before, kWorseningAllowed), "");
+  QualityFigures slightly = before;
+  slightly.deviationP99 = 5.09;  // +1.8 %
+  EXPECT_EQ(worseFigure(before, slightly, kWorseningAllowed), "");
+  for (double QualityFigures::*figure : {&QualityFigures::speedFluctuation, &QualityFigures::inconsistencyP99,
+                                         &QualityFigures::inconsistencyMean, &QualityFigures::jerkP99,
+                                         &QualityFigures::deviationP99}) {
+    QualityFigures worse = before;
+    worse.*figure *= 1.03;
+    EXPECT_NE(worseFigure(before, worse, kWorseningAllowed), "");
+  }
 }

@@ -67,6 +67,7 @@ struct Comparison {
   std::uint32_t first = 0, last = 0;        // the region's lines in the old program
   double timeBefore = 0, timeAfter = 0;     // s
   std::string summary;                      // the region's figures before and after
+  bool kept = true;                         // false: worse than the old program, not to be saved
   // The new run aligned to the old one pass by pass, and the speed difference (after - before)
   // on the old surface, shown in place of the new map on request.
   RunComparison difference;

@@ -84,6 +84,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
                                   *before, program.get(), c->differenceMap, c->differenceScene);
               c->timeBefore = r.timeBefore;
               c->timeAfter = r.timeAfter;
+              c->kept = r.kept;
               c->summary = regionSummary(r) + passDifferenceText(c->difference, r.result);
               result->comparison = c;
             });
@@ -177,7 +178,9 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   ImGui::SetNextItemWidth(w * 0.5f);
   ImGui::InputText("##save", s.savePath, sizeof s.savePath);
   ImGui::SameLine();
-  if (ImGui::Button("Save program") && s.savePath[0]) {
+  if (!c.kept) {
+    ImGui::TextUnformatted("not kept: worse than the program as it is");
+  } else if (ImGui::Button("Save program") && s.savePath[0]) {
     try {
       writeFileAtomically(s.savePath, c.text);
       s.status = std::string("saved ") + s.savePath;

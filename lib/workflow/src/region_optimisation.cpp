@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/quality_regions.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/workflow/run_inputs.h"
@@ -69,8 +70,11 @@ std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
   return std::nullopt;
 }
 
-RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
-                                  const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
+namespace {
+
+// One candidate: re-fitted, simulated on the machine, measured and judged.
+RegionOptimisation evaluateCandidate(const std::string& text, const Program& program, const SurfaceRun& before,
+                                     const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
   RegionOptimisation r;
   r.lines = request.lines;
   r.result = optimizeRegion(text, program, request.lines, machine, request.options);
@@ -83,32 +87,79 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // The figures look where the defect was found (a box), else where the path was re-fitted; a
   // re-fitted part that holds no surface sample (one pass, a flat box) gives way to the region.
   std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
-  r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
-  if (!request.box && r.before.samples == 0) {
+  const auto window = [&](LineRange lines) { return FigureWindow{lines, r.lower, r.upper}; };
+  r.regionBefore = measureQualityFigures(*before.samples, *before.mesh, window(request.lines));
+  if (!request.box && r.regionBefore.samples == 0) {
     std::tie(r.lower, r.upper) = boundingBox(regionPoints(program, request.lines));
     // Only the region's lines are measured: the margin takes in no other line, and gives the
     // box of a single straight pass the height its samples need.
     r.lower -= Vec3::Constant(kRegionMarginMm);
     r.upper += Vec3::Constant(kRegionMarginMm);
-    r.before = measureRegion(*before.samples, *before.mesh, request.lines, r.lower, r.upper);
+    r.regionBefore = measureQualityFigures(*before.samples, *before.mesh, window(request.lines));
   }
-  r.afterMetrics = measureRegion(*r.after.samples, *r.after.mesh, r.result.newRange, r.lower, r.upper);
+  r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, window(r.result.newRange));
+  r.wholeBefore = measureQualityFigures(*before.samples, *before.mesh);
+  r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);
   r.maxPathDistance =
       polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
   r.timeBefore = machiningTime(*before.samples);
   r.timeAfter = machiningTime(*r.after.samples);
+  if (const auto why = worsening(r)) {
+    r.kept = false;
+    r.reason = *why;
+  }
   if (progress) progress(1.0);
   return r;
 }
 
+}  // namespace
+
+RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
+                                  const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
+  // The closed loop: the planned interval feeds first, then a little below them (servo lag
+  // grows with speed), each simulated and judged; the first candidate no worse than the
+  // program is kept. When none is, the first one's figures and reason are reported.
+  constexpr double kFeedShares[] = {1.0, 0.95, 0.9};
+  constexpr std::size_t kCandidates = std::size(kFeedShares);
+  std::optional<RegionOptimisation> first;
+  for (std::size_t k = 0; k < kCandidates; ++k) {
+    RegionRequest candidate = request;
+    candidate.options.feedScale = request.options.feedScale * kFeedShares[k];
+    RegionOptimisation r = evaluateCandidate(
+        text, program, before, machine, candidate,
+        progressStage(progress, double(k) / kCandidates, double(k + 1) / kCandidates));
+    if (r.kept) {
+      if (progress) progress(1.0);
+      return r;
+    }
+    if (!first) first = std::move(r);
+  }
+  if (progress) progress(1.0);
+  return std::move(*first);
+}
+
+std::optional<std::string> worsening(const RegionOptimisation& r) {
+  // Half a cycle of slack: the two runs are whole numbers of cycles.
+  const double cycle = r.after.samples ? r.after.samples->cycle : 0.0;
+  if (r.timeAfter > r.timeBefore + 0.5 * cycle)
+    return fmt::format("the program would take longer ({:.3f} -> {:.3f} s)", r.timeBefore, r.timeAfter);
+  if (const std::string worse = worseFigure(r.regionBefore, r.regionAfter, kWorseningAllowed); !worse.empty())
+    return "in the region, " + worse;
+  if (const std::string worse = worseFigure(r.wholeBefore, r.wholeAfter, kWorseningAllowed); !worse.empty())
+    return "over the whole program, " + worse;
+  return std::nullopt;
+}
+
 std::string regionSummary(const RegionOptimisation& r) {
+  const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
   return fmt::format(
       "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
-      "{:.1f} -> {:.1f} mm/min, largest inconsistency between passes {:.1f} -> {:.1f} mm/min, jerk peak "
-      "{:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most",
-      r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, r.before.speedFluctuation,
-      r.afterMetrics.speedFluctuation, r.before.maxSpeedInconsistency, r.afterMetrics.maxSpeedInconsistency,
-      r.before.maxJerk, r.afterMetrics.maxJerk, r.maxPathDistance);
+      "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
+      "jerk p99 {:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most",
+      r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, a.speedFluctuation,
+      b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
+      b.jerkP99, r.maxPathDistance) +
+         (r.kept ? "" : ". Not kept: " + r.reason + "; the program is left as it was");
 }
 
 }  // namespace isurface

@@ -224,21 +224,6 @@ std::vector<PathSection> splitByDistance(const PathSection& run, double threshol
 
 }  // namespace
 
-LineRange parseLineRange(const std::string& text) {
-  const auto number = [&](const std::string& part) -> std::uint32_t {
-    if (part.empty() || part.size() > 9 || part.find_first_not_of("0123456789") != std::string::npos)
-      badParameter("line range must be A-B with 1-based line numbers, got '" + text + "'");
-    return static_cast<std::uint32_t>(std::stoul(part));
-  };
-  const std::size_t dash = text.find('-');
-  LineRange r;
-  r.first = number(text.substr(0, dash));
-  r.last = dash == std::string::npos ? r.first : number(text.substr(dash + 1));
-  if (r.first == 0) badParameter("line numbers start at 1, got '" + text + "'");
-  if (r.first > r.last) badParameter("line range '" + text + "' ends before it starts");
-  return r;
-}
-
 std::vector<PathSection> collectSections(const Program& program, std::uint32_t firstLine,
                                          std::uint32_t lastLine, const SectionOptions& options) {
   if (!(options.distanceThreshold > 0)) badParameter("the section distance threshold must be > 0 mm");

@@ -167,7 +167,7 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
 // curvature (interval_speed_plan.h), but no more than the NC allows over most of the new
 // points (the median of its limits), so that the machine holds it rather than braking and
 // speeding up at every point.
-std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
+std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
                                   const IntervalPartition& partition, double feed, const Machine& machine) {
   Program probe;
   probe.start = points.front();
@@ -199,7 +199,7 @@ std::vector<double> intervalFeeds(const std::vector<Vec3>& points, const std::ve
     std::sort(limits.begin(), limits.end());
     const double v = std::min(limits.empty() ? feedMmS : limits[limits.size() / 2],
                               mmPerMinToMmPerS(planned[k].plannedFeedMmMin));
-    feeds.push_back(std::clamp(std::floor(mmPerSToMmPerMin(v)), 0.2 * feed, feed));
+    feeds.push_back(std::clamp(std::floor(feedScale * mmPerSToMmPerMin(v)), 0.2 * feed, feed));
   }
   return feeds;
 }
@@ -263,7 +263,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
       }
     }
     const double feed = first.feed;
-    const std::vector<double> feeds = intervalFeeds(fitted, dataIndex, partition, feed, machine);
+    const std::vector<double> feeds = intervalFeeds(options.feedScale, fitted, dataIndex, partition, feed, machine);
     copyUntil(first.line - 1);
     OptimizedPass pass;
     pass.firstLine = first.line;
@@ -324,41 +324,6 @@ LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passSet, 
   const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
   const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
   return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
-}
-
-RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
-                            const Vec3& upper) {
-  RegionMetrics m;
-  const std::vector<double> speed = sampleQuantity(Quantity::Speed, samples);
-  const std::vector<double> jerk = sampleQuantity(Quantity::Jerk, samples);
-  const std::size_t n = samples.size();
-  auto inRegion = [&](std::size_t i) {
-    return samples.line[i] >= lines.first && samples.line[i] <= lines.last && samples.x[i] >= lower.x() &&
-           samples.x[i] <= upper.x() && samples.y[i] >= lower.y() && samples.y[i] <= upper.y();
-  };
-  const std::size_t half = static_cast<std::size_t>(std::lround(0.05 / samples.cycle));  // 100 ms window
-  double sumSquares = 0;
-  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
-  std::vector<float> deviation;
-  if (samples.hasFeedback()) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
-  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
-    const std::size_t i = mesh.vertexSample[v];
-    if (!inRegion(i) || !std::isfinite(speed[i])) continue;
-    ++m.samples;
-    const std::size_t a = i > half ? i - half : 0, b = std::min(n - 1, i + half);
-    double mean = 0;
-    std::size_t count = 0;
-    for (std::size_t k = a; k <= b; ++k)
-      if (std::isfinite(speed[k])) mean += speed[k], ++count;
-    mean /= std::max<std::size_t>(count, 1);
-    sumSquares += (speed[i] - mean) * (speed[i] - mean);
-    if (std::isfinite(jerk[i])) m.maxJerk = std::max(m.maxJerk, jerk[i]);
-    if (std::isfinite(inconsistency[v])) m.maxSpeedInconsistency = std::max<double>(m.maxSpeedInconsistency, inconsistency[v]);
-    if (!deviation.empty() && std::isfinite(deviation[v])) m.maxDeviation = std::max<double>(m.maxDeviation, std::abs(deviation[v]));
-  }
-  m.time = m.samples * samples.cycle;
-  m.speedFluctuation = m.samples ? std::sqrt(sumSquares / m.samples) : 0;
-  return m;
 }
 
 double polylineDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {

@@ -7,6 +7,7 @@
 #include <string>
 #include <utility>
 
+#include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/run_comparison.h"
 #include "isurface/base/progress.h"
 #include "isurface/optimise/region_optimizer.h"
@@ -49,18 +50,32 @@ struct RegionOptimisation {
   SurfaceRun after;
   LineRange lines;                         // the region in the old program
   Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // the box measured, mm
-  RegionMetrics before, afterMetrics;
+  QualityFigures regionBefore, regionAfter;  // in the box, on the region's lines
+  QualityFigures wholeBefore, wholeAfter;    // over the whole program
   double timeBefore = 0, timeAfter = 0;    // s, machining time of the whole program
   double maxPathDistance = 0;              // mm, new path to old over the region
+  // The new program is kept only when it is no slower and no figure, of the region or of the
+  // whole program, is worse by more than kWorseningAllowed; otherwise `reason` says which, and
+  // the program stays as it was.
+  bool kept = true;
+  std::string reason;
 };
 
+// How much worse (relative) a figure of the region may get for the new program to be kept.
+constexpr double kWorseningAllowed = 0.02;
+
+// Why the new program is worse than the old one by the rule above, or nothing when it is not.
+std::optional<std::string> worsening(const RegionOptimisation& r);
+
 // `text` is the program's source, `program` its interpretation, `before` its run on `machine`.
-// Progress: 0..1 over re-fitting and simulating the new program.
+// Progress: 0..1 over re-fitting and simulating the new program. The candidate is simulated and
+// judged (`worsening`); one that is worse is reported, not kept (`kept`, `reason`).
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
                                   const Machine& machine, const RegionRequest& request,
                                   const ProgressCallback& progress = {});
 
-// One line of figures: machining time, speed fluctuation, inconsistency, jerk (mm/min, mm/s^3).
+// One line of figures: machining time, speed fluctuation, inconsistency, jerk (mm/min, mm/s^3),
+// and, for a candidate that was not kept, why.
 std::string regionSummary(const RegionOptimisation& r);
 
 }  // namespace isurface

@@ -30,6 +30,7 @@
 #include <string>
 #include <vector>
 
+#include "isurface/base/line_range.h"
 #include "isurface/base/geometry.h"
 #include "isurface/gcode/program.h"
 
@@ -91,13 +92,6 @@ struct PathSection {
   std::vector<double> feeds;         // mm/min, programmed feed of the move that ends there
 };
 
-// A range of 1-based source lines, inclusive.
-struct LineRange {
-  std::uint32_t first = 1, last = 0;
-};
-
-// Parses "A-B" (or "A" for one line); malformed text, zero or A > B throw InputError.
-LineRange parseLineRange(const std::string& text);
 
 // CL points of the feed moves (G1, G2, G3) whose source lines lie in [firstLine, lastLine]
 // (1-based, inclusive), split into sections at raster pass boundaries, or, on a path with no such

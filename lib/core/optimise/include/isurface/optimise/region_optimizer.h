@@ -23,6 +23,7 @@ struct OptimizeOptions {
   double maximumDeviation = 0.008; // mm, a fit that strays further from the old path is not used
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
+  double feedScale = 1.0;         // share of each interval's planned feed that is programmed
 };
 
 struct OptimizedPass {
@@ -50,20 +51,6 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
 // part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
 // unchanged neighbour) inside the region. Lines outside every pass are returned unchanged.
 LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passes, LineRange lines);
-
-// What changes in a region between two runs of a program.
-struct RegionMetrics {
-  std::size_t samples = 0;
-  double time = 0;                     // s spent on the region's lines
-  double speedFluctuation = 0;         // mm/min, RMS of speed about its 100 ms moving average
-  double maxSpeedInconsistency = 0;    // mm/min, largest difference to a neighbouring pass
-  double maxJerk = 0;                  // mm/s^3
-  double maxDeviation = 0;             // um, predicted (0 without feedback)
-};
-
-// Over the surface's samples on the given lines that lie inside the box (XY, mm).
-RegionMetrics measureRegion(const Trajectory& samples, const SurfaceMesh& mesh, LineRange lines, const Vec3& lower,
-                            const Vec3& upper);
 
 // The largest distance from any point of `a`'s polyline vertices to `b`'s polyline, both ways
 // (a Hausdorff distance over vertices), mm.

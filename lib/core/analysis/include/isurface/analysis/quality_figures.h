@@ -1,0 +1,42 @@
+#pragma once
+// The figures a run is judged by (defined in the README, "Quality figures"): measured on the
+// samples of the surface alone, whatever made the program, so that a re-optimised program is
+// judged by the same rule as the one it replaces and the optimiser cannot flatter itself (it
+// makes its choices with the planner's own limits, never with these).
+#include <cstddef>
+#include <limits>
+#include <string>
+
+#include "isurface/base/line_range.h"
+#include "isurface/base/trajectory.h"
+#include "isurface/surface/surface_mesh.h"
+
+namespace isurface {
+
+// Where figures are taken: samples of these lines inside this XY box (mm). By default the whole run.
+struct FigureWindow {
+  LineRange lines{0, std::numeric_limits<std::uint32_t>::max()};
+  Vec3 lower = Vec3::Constant(-std::numeric_limits<double>::infinity());
+  Vec3 upper = Vec3::Constant(std::numeric_limits<double>::infinity());
+};
+
+struct QualityFigures {
+  std::size_t samples = 0;         // surface samples measured
+  double speedFluctuation = 0;     // mm/min, RMS of the path speed about its 100 ms moving average
+  double inconsistencyP99 = 0;     // mm/min, 99th percentile of the adjacent-pass speed inconsistency
+  double inconsistencyMean = 0;    // mm/min, its mean
+  double jerkP99 = 0;              // mm/s^3, 99th percentile of |j|
+  double deviationP99 = 0;         // um, 99th percentile of |predicted deviation| (0 without feedback)
+  bool hasDeviation = false;
+};
+
+QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window = {});
+
+// The nearest-rank percentile (0..100) of finite values; 0 when there are none. Reorders `values`.
+double percentileOf(std::vector<double>& values, double percent);
+
+// How `after` is worse than `before` by more than `allowed` (relative, 0.02 = 2 %) on any
+// figure, naming the figure and both values; empty when it is not.
+std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed);
+
+}  // namespace isurface

@@ -1,0 +1,111 @@
+#include "isurface/analysis/quality_figures.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "isurface/analysis/quantities.h"
+#include "isurface/base/tolerances.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr double kFluctuationWindow = 0.1;  // s, the moving average's span
+
+// The mean of the finite values within `half` samples of each sample, from running sums.
+class MovingMean {
+ public:
+  MovingMean(const std::vector<double>& values, std::size_t half) : half_(half), sum_(values.size() + 1), count_(values.size() + 1) {
+    for (std::size_t i = 0; i < values.size(); ++i) {
+      const bool finite = std::isfinite(values[i]);
+      sum_[i + 1] = sum_[i] + (finite ? values[i] : 0.0);
+      count_[i + 1] = count_[i] + (finite ? 1 : 0);
+    }
+  }
+  double at(std::size_t i) const {
+    const std::size_t a = i > half_ ? i - half_ : 0, b = std::min(sum_.size() - 1, i + half_ + 1);
+    const std::size_t n = count_[b] - count_[a];
+    return n ? (sum_[b] - sum_[a]) / static_cast<double>(n) : 0.0;
+  }
+
+ private:
+  std::size_t half_;
+  std::vector<double> sum_;
+  std::vector<std::size_t> count_;
+};
+
+bool inside(const Trajectory& s, std::size_t i, const FigureWindow& w) {
+  return w.lines.contains(s.line[i]) && s.x[i] >= w.lower.x() && s.x[i] <= w.upper.x() && s.y[i] >= w.lower.y() &&
+         s.y[i] <= w.upper.y();
+}
+
+}  // namespace
+
+double percentileOf(std::vector<double>& values, double percent) {
+  values.erase(std::remove_if(values.begin(), values.end(), [](double v) { return !std::isfinite(v); }), values.end());
+  if (values.empty()) return 0.0;
+  const double rank = std::ceil(percent / 100.0 * static_cast<double>(values.size()));
+  const std::size_t k = static_cast<std::size_t>(std::clamp(rank, 1.0, static_cast<double>(values.size()))) - 1;
+  std::nth_element(values.begin(), values.begin() + static_cast<std::ptrdiff_t>(k), values.end());
+  return values[k];
+}
+
+QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window) {
+  QualityFigures f;
+  if (samples.size() == 0 || mesh.vertexSample.empty()) return f;
+  const std::vector<double> speed = sampleQuantity(Quantity::Speed, samples);
+  const std::vector<double> jerk = sampleQuantity(Quantity::Jerk, samples);
+  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
+  std::vector<float> deviation;
+  f.hasDeviation = samples.hasFeedback();
+  if (f.hasDeviation) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
+  const double cycle = samples.cycle > 0 ? samples.cycle : 0.001;
+  const MovingMean mean(speed, static_cast<std::size_t>(std::lround(0.5 * kFluctuationWindow / cycle)));
+
+  std::vector<double> jerks, inconsistencies, deviations;
+  double sumSquares = 0, inconsistencySum = 0;
+  std::size_t inconsistencyCount = 0;
+  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
+    const std::size_t i = mesh.vertexSample[v];
+    if (!inside(samples, i, window) || !std::isfinite(speed[i])) continue;
+    ++f.samples;
+    const double d = speed[i] - mean.at(i);
+    sumSquares += d * d;
+    jerks.push_back(jerk[i]);
+    if (std::isfinite(inconsistency[v])) {
+      inconsistencies.push_back(inconsistency[v]);
+      inconsistencySum += inconsistency[v];
+      ++inconsistencyCount;
+    }
+    if (f.hasDeviation) deviations.push_back(std::fabs(deviation[v]));
+  }
+  f.speedFluctuation = f.samples ? std::sqrt(sumSquares / static_cast<double>(f.samples)) : 0.0;
+  f.inconsistencyMean = inconsistencyCount ? inconsistencySum / static_cast<double>(inconsistencyCount) : 0.0;
+  f.inconsistencyP99 = percentileOf(inconsistencies, 99);
+  f.jerkP99 = percentileOf(jerks, 99);
+  f.deviationP99 = percentileOf(deviations, 99);
+  return f;
+}
+
+std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed) {
+  const struct {
+    const char* name;
+    double before, after;
+    const char* unit;
+  } figures[] = {
+      {"speed fluctuation", before.speedFluctuation, after.speedFluctuation, "mm/min"},
+      {"inconsistency between passes (p99)", before.inconsistencyP99, after.inconsistencyP99, "mm/min"},
+      {"inconsistency between passes (mean)", before.inconsistencyMean, after.inconsistencyMean, "mm/min"},
+      {"jerk (p99)", before.jerkP99, after.jerkP99, "mm/s^3"},
+      {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "um"},
+  };
+  for (const auto& f : figures)
+    if (f.after > f.before * (1 + allowed) + kRoundingSlack)
+      return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit);
+  return {};
+}
+
+}  // namespace isurface
