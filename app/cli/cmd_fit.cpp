@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "json_output.h"
 #include "inputs.h"
 #include "isurface/base/units.h"
 #include "isurface/fitting/akima_spline.h"
@@ -15,18 +16,13 @@
 namespace isurface::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 struct FitOptions {
   std::string input, lines;
   double tolerance = 0.001;
 };
 
-[[noreturn]] void badOption(const std::string& file, const std::string& message) {
-  throw InputError(Diagnostic{file, 0, 0, message});
-}
 
-Json triple(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
 double distanceToPolyline(const Vec3& x, const std::vector<Vec3>& q) {
   double best = q.empty() ? 0.0 : (x - q.front()).norm();

@@ -6,6 +6,7 @@
 #include <string>
 
 #include "command.h"
+#include "json_output.h"
 #include "isurface/base/units.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/io/biip.h"
@@ -16,7 +17,6 @@ namespace isurface::cli {
 
 namespace {
 
-nlohmann::ordered_json numberOrNull(double v) { return std::isfinite(v) ? nlohmann::ordered_json(v) : nlohmann::ordered_json(nullptr); }
 
 nlohmann::ordered_json describe(const BiipReader& reader) {
   const BiipHeader& h = reader.header();

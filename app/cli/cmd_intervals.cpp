@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "json_output.h"
 #include "inputs.h"
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/fitting/interval_speed_plan.h"
@@ -14,19 +15,13 @@
 namespace isurface::cli {
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 struct IntervalsOptions {
   std::string input, lines, machine;
   double error = 0.1, distanceRatio = 5, curvatureRatio = 2, sectionLength = 50;
 };
 
-Json numberOrNull(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
-Json triple(const Vec3& v) { return Json::array({v.x(), v.y(), v.z()}); }
 
-[[noreturn]] void badOption(const std::string& file, const std::string& message) {
-  throw InputError(Diagnostic{file, 0, 0, message});
-}
 
 // The feed an interval is programmed at: the slowest of the moves that reach its points.
 double programmedFeed(const PathSection& s, const ConstantSpeedInterval& i) {

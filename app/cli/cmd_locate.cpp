@@ -9,6 +9,7 @@
 #include <string>
 
 #include "command.h"
+#include "json_output.h"
 #include "isurface/base/units.h"
 #include "inputs.h"
 #include "isurface/io/biip.h"
@@ -19,7 +20,6 @@ namespace isurface::cli {
 
 namespace {
 
-using Json = nlohmann::ordered_json;
 
 struct LocateOptions {
   std::string file;
@@ -33,10 +33,7 @@ struct LocateOptions {
   throw CommandExit{kExitInputError};
 }
 
-Json numberOrNull(double v) { return std::isfinite(v) ? Json(v) : Json(nullptr); }
 
-Json triple(double a, double b, double c) { return Json::array({numberOrNull(a), numberOrNull(b), numberOrNull(c)}); }
-Json triple(const Vec3& v) { return triple(v.x(), v.y(), v.z()); }
 
 // "X,Y,Z" in mm.
 Vec3 parsePoint(const std::string& text) {

@@ -1,6 +1,8 @@
 // isurface-cli optimize: re-optimise a region of a program (constant speed intervals, Akima
 // fitting, interval speed planning), write the new program, re-simulate both and compare.
 #include <algorithm>
+#include <cmath>
+#include <limits>
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
@@ -26,8 +28,8 @@ namespace isurface::cli {
 namespace {
 
 struct OptimizeCliOptions {
-  std::string input, output, lines, report, pngBefore, pngAfter, pngDifference, machine;
-  bool automatic = false;
+  std::string input, output, lines, box, report, pngBefore, pngAfter, pngDifference, machine;
+  bool automatic = false, all = false;
   double chordTolerance = 0.002;
 };
 
@@ -58,8 +60,37 @@ void renderSpeed(const SurfaceRun& run, const Program& program, const std::strin
   renderTop(run, program, request, caption, path);
 }
 
+// "X0,Y0,X1,Y1" in mm.
+std::pair<Vec3, Vec3> parseBox(const std::string& text) {
+  double v[4];
+  char extra = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf,%lf%c", &v[0], &v[1], &v[2], &v[3], &extra) != 4 ||
+      !std::all_of(std::begin(v), std::end(v), [](double x) { return std::isfinite(x); }) || v[0] == v[2] || v[1] == v[3])
+    throw InputError(Diagnostic{"", 0, 0, "bad --box '" + text + "': expected X0,Y0,X1,Y1 in mm, a box of some width and height"});
+  return {Vec3(v[0], v[1], -std::numeric_limits<double>::infinity()), Vec3(v[2], v[3], std::numeric_limits<double>::infinity())};
+}
+
+// The region the options name: lines as given, or chosen on the program's surface.
+RegionRequest regionOf(const OptimizeCliOptions& o, const SurfaceRun& before) {
+  RegionRequest request;
+  request.options.chordTolerance = o.chordTolerance;
+  if (!o.lines.empty()) {
+    request.lines = parseLineRange(o.lines);
+    return request;
+  }
+  const auto box = o.box.empty() ? std::pair<Vec3, Vec3>() : parseBox(o.box);
+  const ChosenRegion chosen = o.automatic ? worstRegion(before, o.input)
+                              : o.all     ? wholeProgramRegion(before, o.input)
+                                          : regionInBox(before, box.first, box.second, o.input);
+  request.lines = chosen.lines;
+  request.box = std::make_pair(chosen.lower, chosen.upper);
+  return request;
+}
+
 int runOptimize(const OptimizeCliOptions& o) {
-  if (o.automatic == !o.lines.empty()) throw InputError(Diagnostic{"", 0, 0, "give either --lines A-B or --auto"});
+  if (int(!o.lines.empty()) + int(!o.box.empty()) + int(o.automatic) + int(o.all) != 1)
+    throw InputError(Diagnostic{"", 0, 0, "give one of --lines A-B, --box X0,Y0,X1,Y1, --auto or --all"});
+  if (!o.box.empty()) parseBox(o.box);  // a malformed box fails before any work
   if (!(o.chordTolerance > 0)) throw InputError(Diagnostic{"", 0, 0, "--tolerance must be greater than 0"});
   const OpenedRun opened = openRunOnTerminal({o.input, ""}, o.machine, false);
   const Machine& machine = opened.machine;
@@ -69,15 +100,7 @@ int runOptimize(const OptimizeCliOptions& o) {
   text << in.rdbuf();
 
   const SurfaceRun before = surfaceRun(opened.samples, &program);
-  RegionRequest request;
-  request.options.chordTolerance = o.chordTolerance;
-  if (o.automatic) {
-    const ChosenRegion worst = worstRegion(before, o.input);
-    request.lines = worst.lines;
-    request.box = std::make_pair(worst.lower, worst.upper);
-  } else {
-    request.lines = parseLineRange(o.lines);
-  }
+  const RegionRequest request = regionOf(o, before);
   ProgressLine progress("optimising");
   const RegionOptimisation r =
       optimiseRegion(text.str(), program, before, machine, request, [&](double f) { progress.update(f); });
@@ -90,6 +113,8 @@ int runOptimize(const OptimizeCliOptions& o) {
   const Program& newProgram = *r.program;
   const Vec3 &lower = r.lower, &upper = r.upper;
   const double distance = r.maxPathDistance, timeBefore = r.timeBefore, timeAfter = r.timeAfter;
+  // The maps of a candidate that was not kept show what was tried, and say so.
+  const std::string afterName = r.kept ? o.output : "the candidate not kept";
 
   nlohmann::json passes = nlohmann::json::array();
   for (const OptimizedPass& p : result.passes)
@@ -109,14 +134,15 @@ int runOptimize(const OptimizeCliOptions& o) {
     const std::vector<float> speeds = vertexQuantity(Quantity::Speed, *before.samples, *before.mesh);
     const ValueRange span = percentileRange(speeds, 1, 99);
     if (!o.pngBefore.empty()) renderSpeed(before, program, o.input + " before", span, o.pngBefore);
-    if (!o.pngAfter.empty()) renderSpeed(after, newProgram, o.output + " after", span, o.pngAfter);
+    if (!o.pngAfter.empty()) renderSpeed(after, newProgram, afterName + " after", span, o.pngAfter);
   }
   if (!o.pngDifference.empty()) {
     const RunComparison difference = compareOptimizedRuns(*before.samples, *after.samples, result);
     renderTop(before, program, vis::regionDifferenceMapRequest(difference, *before.samples, range),
-              o.output + " against " + o.input, o.pngDifference);
+              afterName + " against " + o.input, o.pngDifference);
   }
   std::printf("%s: %s\n", o.output.c_str(), regionSummary(r).c_str());
+  if (!r.kept) std::fprintf(stderr, "warning: %s: not kept (%s); written unchanged\n", o.output.c_str(), r.reason.c_str());
   return kExitOk;
 }
 
@@ -128,7 +154,9 @@ Command optimizeCommand() {
       sub.add_option("gcode", o->input, "G-code program")->required();
       sub.add_option("-o,--output", o->output, "new G-code program to write")->required();
       sub.add_option("--lines", o->lines, "the region as a line range A-B");
+      sub.add_option("--box", o->box, "the passes crossing a box X0,Y0,X1,Y1 (mm, top view), measured inside it");
       sub.add_flag("--auto", o->automatic, "the most severe region that analyze finds");
+      sub.add_flag("--all", o->all, "every pass of the program");
       sub.add_option("--report", o->report, "comparison report (JSON)");
       sub.add_option("--png-before", o->pngBefore, "speed map before (top view)");
       sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range");

@@ -2,6 +2,7 @@
 // Loading what commands share: a G-code program (with its diagnostics printed) and a machine.
 #include <string>
 
+#include "isurface/base/diagnostic.h"
 #include "isurface/machine/machine.h"
 #include "isurface/gcode/program.h"
 
@@ -18,6 +19,11 @@ Program loadProgram(const std::string& path, bool keepGoing, bool showProgress =
 
 // The machine of --machine, or the built-in default when the path is empty.
 Machine loadMachineOption(const std::string& path);
+
+// Stops a command on a bad option value, naming the file it was given for.
+[[noreturn]] inline void badOption(const std::string& file, const std::string& message) {
+  throw InputError(Diagnostic{file, 0, 0, message});
+}
 
 // Machine time as m:ss.mmm.
 std::string formatDuration(double seconds);

@@ -78,7 +78,9 @@ TEST(quantities, SampleValuesAreTheWholeDerivation) {
   for (const auto& c : cases) {
     const std::vector<double> v = sampleQuantity(c.q, t);
     ASSERT_EQ(v.size(), t.size());
-    ASSERT_STREQ(quantityInfo(c.q).unit, c.toDisplay == 60 ? "mm/min" : quantityInfo(c.q).unit);
+    if (c.toDisplay == 60) {
+      ASSERT_STREQ(quantityInfo(c.q).unit, "mm/min");
+    }
     for (std::size_t i = 0; i < v.size(); ++i)
       ASSERT_EQ(v[i], c.toDisplay * (*c.expected)[i]) << quantityInfo(c.q).name << " " << i;
   }

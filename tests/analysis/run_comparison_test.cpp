@@ -137,8 +137,11 @@ TEST(runComparison, linesOnlyOneRunHasAreReportedAndSplitRanges) {
   EXPECT_EQ(c.onlyInB.front().samples, 10u);
   EXPECT_LT(c.coverageA, 0.95);
   for (const RangeDifference& r : c.ranges) EXPECT_FALSE(r.firstLine < 5 && r.lastLine > 5);
-  for (std::size_t i = 0; i < a.size(); ++i)
-    if (a.line[i] == 5) EXPECT_TRUE(std::isnan(c.speedDifference[i]));
+  for (std::size_t i = 0; i < a.size(); ++i) {
+    if (a.line[i] == 5) {
+      EXPECT_TRUE(std::isnan(c.speedDifference[i]));
+    }
+  }
 }
 
 TEST(runComparison, degenerateLinesGiveFiniteFigures) {

@@ -4,8 +4,12 @@
 
 #include <nlohmann/json.hpp>
 
+#include "isurface/analysis/quality_figures.h"
+#include "isurface/workflow/region_optimisation.h"
+#include "isurface/workflow/run_inputs.h"
 #include "test_support.h"
 
+using namespace isurface;
 using namespace isurface::test;
 
 TEST(regionOptimizer, CommandWritesTheProgramAndTheComparison) {
@@ -54,5 +58,47 @@ TEST(regionOptimizer, AutoOnTheTransitionSampleHalvesFluctuationAndInconsistency
     EXPECT_EQ(readFile(out), readFile(input));
     EXPECT_FALSE(cmp["reason"].get<std::string>().empty());
     EXPECT_NE(r.out.find("Not kept"), std::string::npos) << r.out;
+  }
+}
+
+TEST(regionOptimizer, ModesAreExclusiveAndABoxMustCrossThePasses) {
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  const std::string out = (scratchDir() / "modes.nc").string();
+  for (const char* modes : {"--auto --all", "--lines 11-20 --box 0,0,10,10", ""})
+    EXPECT_EQ(runCli("optimize " + program + " " + modes + " -o " + out).exitCode, 2) << modes;
+  for (const char* box : {"1,2,3", "0,0,0,5", "a,b,c,d", "0,0,5,5,6"})
+    EXPECT_EQ(runCli("optimize " + program + " --box " + box + " -o " + out).exitCode, 2) << box;
+  const CommandResult outside = runCli("optimize " + program + " --box 500,500,600,600 -o " + out);
+  EXPECT_EQ(outside.exitCode, 2);
+  EXPECT_NE(outside.err.find("no cutting pass crosses the box"), std::string::npos) << outside.err;
+  EXPECT_FALSE(fileExists(out));
+}
+
+// Whatever the mode, what `optimize` writes is never worse than what it was given: either the
+// program byte for byte, or one that, simulated and measured again here (not the report's
+// numbers), is not longer and no figure of the whole program is worse by more than 2 %.
+TEST(regionOptimizer, NoModeWritesAWorseProgram) {
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  const auto figuresOf = [](const std::string& nc, double& time) {
+    const Program p = readProgram(nc);
+    const SurfaceRun run = surfaceRun(std::make_shared<const Trajectory>(simulateRun(p, defaultMachine())), &p);
+    time = machiningTime(*run.samples);
+    return measureQualityFigures(*run.samples, *run.mesh);
+  };
+  double timeBefore = 0;
+  const QualityFigures before = figuresOf(program, timeBefore);
+  for (const char* mode : {"--all", "--box 20,0,30,27", "--auto"}) {
+    const std::string out = (scratchDir() / "never-worse.nc").string(), report = (scratchDir() / "never-worse.json").string();
+    const CommandResult r = runCli("optimize " + program + " " + mode + " -o " + out + " --report " + report);
+    ASSERT_EQ(r.exitCode, 0) << mode << ": " << r.err;
+    if (!nlohmann::json::parse(readFile(report))["kept"].get<bool>()) {
+      EXPECT_EQ(readFile(out), readFile(program)) << mode;
+      EXPECT_NE(r.err.find("not kept"), std::string::npos) << r.err;
+      continue;
+    }
+    double timeAfter = 0;
+    const QualityFigures after = figuresOf(out, timeAfter);
+    EXPECT_LE(timeAfter, timeBefore + 0.0005) << mode;
+    EXPECT_EQ(worseFigure(before, after, 0.02), "") << mode;
   }
 }

@@ -45,12 +45,17 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
     try {
       result->document = loadDocument(programPath, dumpPath, request, control);
     } catch (const DumpMismatchError& e) {
-      // Not joined: the dump opens as a document of its own, saying why, and the program
-      // stays (or opens) by itself.
-      result->document = loadDocument("", dumpPath, request, control);
-      result->document->warnings.insert(result->document->warnings.begin(), std::string("not joined: ") + e.what());
-      result->replaces = ~std::size_t(0);
+      // Not joined: the program stays (or opens) by itself, and the dump opens as a document
+      // of its own, saying why; a dump that cannot stand alone says both.
+      const std::string notJoined = std::string("not joined: ") + e.what();
       if (!programOpen) result->programAlone = programPath;
+      result->replaces = ~std::size_t(0);
+      try {
+        result->document = loadDocument("", dumpPath, request, control);
+      } catch (const InputError& alone) {
+        throw InputError(Diagnostic{"", 0, 0, notJoined + "; by itself: " + alone.what()});
+      }
+      result->document->warnings.insert(result->document->warnings.begin(), notJoined);
     }
   });
   status = label;
@@ -77,13 +82,17 @@ void Inspector::State::startRecolour() {
 void Inspector::State::takeJobResult() {
   if (!job.takeFinished()) return;
   std::shared_ptr<JobResult> result = std::move(pending);
+  // The reason a dump was not joined goes with the program that opens by itself next, and
+  // with nothing else.
   const std::string notice = std::exchange(joinNotice, std::string());
   if (job.wasCancelled()) {
     status = job.label() + ": cancelled";
     return;
   }
+  if (result && !result->programAlone.empty()) queuedRuns.push_front(RunFiles{result->programAlone, ""});
   if (!job.error().empty()) {
     status = "error: " + job.error();
+    if (result && !result->programAlone.empty()) joinNotice = job.error(), noticeProgram = result->programAlone;
     return;
   }
   if (!result) return;
@@ -113,11 +122,10 @@ void Inspector::State::takeJobResult() {
       settings.quantity = Quantity::Speed;
     status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
     for (const std::string& w : doc.warnings) status += " | " + w;
-    if (!notice.empty()) status += " | " + notice;
+    if (!notice.empty() && doc.dumpPath.empty() && doc.programPath == noticeProgram) status += " | " + notice;
     if (!result->programAlone.empty()) {
-      // The program opens next, by itself; its status keeps the reason in sight.
-      queuedRuns.push_front(RunFiles{result->programAlone, ""});
       joinNotice = doc.warnings.front();
+      noticeProgram = result->programAlone;
     }
     if (result->replaces < documents.size()) {
       documents[result->replaces] = std::move(result->document);

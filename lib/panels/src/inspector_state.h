@@ -118,7 +118,8 @@ struct Inspector::State {
   char savePath[1024] = "";
   std::vector<std::unique_ptr<Document>> documents;
   std::deque<RunFiles> queuedRuns;  // files opened together, loaded one run after another
-  std::string joinNotice;           // why a dump was not joined, shown with the next result
+  std::string joinNotice;           // why a dump was not joined, shown when its program opens
+  std::string noticeProgram;        // that program
   std::size_t active = 0;
   app_model::SelectionModel selection;
   std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows

@@ -15,6 +15,7 @@
 #include "isurface/io/atomic_file.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/workflow/region_optimisation.h"
+#include "isurface/workflow/run_inputs.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
 
@@ -55,16 +56,20 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   pending = result;
   const std::string path = doc->programPath;
   std::shared_ptr<const Program> program = doc->program;
-  std::shared_ptr<const Trajectory> before = doc->samples;
-  // The surface the map shows, as `optimize` measures on its own.
-  const SurfaceRun beforeRun{doc->samples, doc->map.passes, doc->map.mesh};
+  // A trace is measured, not simulated: the program is simulated for "before" too, so that
+  // both sides are judged alike (as `optimize` does).
+  std::shared_ptr<const Trajectory> documentSamples = doc->machineKnown ? doc->samples : nullptr;
   const Machine machine = doc->machine;  // the document's own, as the CLI's --machine
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, before, beforeRun, request, first, last, measuredBox,
+            [result, path, program, documentSamples, request, first, last, measuredBox,
              machine](app_model::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
+              // The whole surface, not the map's (thinned on large programs), as `optimize`.
+              const std::shared_ptr<const Trajectory> before =
+                  documentSamples ? documentSamples : std::make_shared<const Trajectory>(simulateRun(*program, machine));
+              const SurfaceRun beforeRun = surfaceRun(before, program.get());
               RegionRequest region;
               region.lines = LineRange{first, last};
               region.box = measuredBox;

@@ -4,6 +4,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <limits>
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/quality_regions.h"
@@ -56,6 +57,48 @@ ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source) {
           worst->vertices};
 }
 
+namespace {
+
+// The lines and the extent of the surface's samples inside a box (XY, mm).
+ChosenRegion surfaceInside(const SurfaceRun& run, const Vec3& lower, const Vec3& upper) {
+  const Trajectory& t = *run.samples;
+  ChosenRegion region;
+  region.lines = {std::numeric_limits<std::uint32_t>::max(), 0};
+  region.lower = Vec3::Constant(std::numeric_limits<double>::infinity());
+  region.upper = -region.lower;
+  for (const std::uint32_t i : run.mesh->vertexSample) {
+    if (t.line[i] == 0 || t.x[i] < lower.x() || t.x[i] > upper.x() || t.y[i] < lower.y() || t.y[i] > upper.y()) continue;
+    const Vec3 p(t.x[i], t.y[i], t.z[i]);
+    region.lines.first = std::min(region.lines.first, t.line[i]);
+    region.lines.last = std::max(region.lines.last, t.line[i]);
+    region.lower = region.lower.cwiseMin(p);
+    region.upper = region.upper.cwiseMax(p);
+    ++region.vertices;
+  }
+  return region;
+}
+
+}  // namespace
+
+ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& upper, const std::string& source) {
+  ChosenRegion region = surfaceInside(run, lower.cwiseMin(upper), lower.cwiseMax(upper));
+  if (region.vertices == 0)
+    throw InputError(Diagnostic{source, 0, 0,
+                                fmt::format("no cutting pass crosses the box X {:g}..{:g} Y {:g}..{:g} mm", lower.x(),
+                                            upper.x(), lower.y(), upper.y())});
+  region.lines = widenToWholePasses(*run.samples, run.passes, region.lines);
+  region.lower = lower.cwiseMin(upper);
+  region.upper = lower.cwiseMax(upper);
+  return region;
+}
+
+ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source) {
+  const Vec3 everywhere = Vec3::Constant(std::numeric_limits<double>::infinity());
+  const ChosenRegion region = surfaceInside(run, -everywhere, everywhere);
+  if (region.vertices == 0) throw InputError(Diagnostic{source, 0, 0, "no cutting passes to optimise"});
+  return region;
+}
+
 std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
   const Trajectory& t = *run.samples;
   for (const Pass& pass : run.passes.passes) {
@@ -72,9 +115,17 @@ std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
 
 namespace {
 
-// One candidate: re-fitted, simulated on the machine, measured and judged.
+bool slower(const RegionOptimisation& r) {
+  // Half a cycle of slack: the two runs are whole numbers of cycles.
+  const double cycle = r.after.samples ? r.after.samples->cycle : 0.0;
+  return r.timeAfter > r.timeBefore + 0.5 * cycle;
+}
+
+// One candidate: re-fitted, simulated on the machine, measured and judged. `wholeBefore`: the
+// program's own figures, the same for every candidate.
 RegionOptimisation evaluateCandidate(const std::string& text, const Program& program, const SurfaceRun& before,
-                                     const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
+                                     const QualityFigures& wholeBefore, const Machine& machine,
+                                     const RegionRequest& request, const ProgressCallback& progress) {
   RegionOptimisation r;
   r.lines = request.lines;
   r.result = optimizeRegion(text, program, request.lines, machine, request.options);
@@ -98,7 +149,7 @@ RegionOptimisation evaluateCandidate(const std::string& text, const Program& pro
     r.regionBefore = measureQualityFigures(*before.samples, *before.mesh, window(request.lines));
   }
   r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, window(r.result.newRange));
-  r.wholeBefore = measureQualityFigures(*before.samples, *before.mesh);
+  r.wholeBefore = wholeBefore;
   r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);
   r.maxPathDistance =
       polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
@@ -121,28 +172,30 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // program is kept. When none is, the first one's figures and reason are reported.
   constexpr double kFeedShares[] = {1.0, 0.95, 0.9};
   constexpr std::size_t kCandidates = std::size(kFeedShares);
+  const QualityFigures wholeBefore = measureQualityFigures(*before.samples, *before.mesh);
   std::optional<RegionOptimisation> first;
   for (std::size_t k = 0; k < kCandidates; ++k) {
     RegionRequest candidate = request;
     candidate.options.feedScale = request.options.feedScale * kFeedShares[k];
     RegionOptimisation r = evaluateCandidate(
-        text, program, before, machine, candidate,
+        text, program, before, wholeBefore, machine, candidate,
         progressStage(progress, double(k) / kCandidates, double(k + 1) / kCandidates));
     if (r.kept) {
       if (progress) progress(1.0);
       return r;
     }
+    const bool tooSlow = slower(r);
     if (!first) first = std::move(r);
+    if (tooSlow) break;  // lower feeds can only take longer still
   }
   if (progress) progress(1.0);
   return std::move(*first);
 }
 
 std::optional<std::string> worsening(const RegionOptimisation& r) {
-  // Half a cycle of slack: the two runs are whole numbers of cycles.
-  const double cycle = r.after.samples ? r.after.samples->cycle : 0.0;
-  if (r.timeAfter > r.timeBefore + 0.5 * cycle)
-    return fmt::format("the program would take longer ({:.3f} -> {:.3f} s)", r.timeBefore, r.timeAfter);
+  if (slower(r)) return fmt::format("the program would take longer ({:.3f} -> {:.3f} s)", r.timeBefore, r.timeAfter);
+  // A region that cannot be measured after cannot be said to be no worse.
+  if (r.regionBefore.samples > 0 && r.regionAfter.samples == 0) return std::string("the region has no surface after");
   if (const std::string worse = worseFigure(r.regionBefore, r.regionAfter, kWorseningAllowed); !worse.empty())
     return "in the region, " + worse;
   if (const std::string worse = worseFigure(r.wholeBefore, r.wholeAfter, kWorseningAllowed); !worse.empty())

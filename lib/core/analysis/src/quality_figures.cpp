@@ -7,7 +7,6 @@
 #include <vector>
 
 #include "isurface/analysis/quantities.h"
-#include "isurface/base/tolerances.h"
 
 namespace isurface {
 
@@ -91,19 +90,22 @@ QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMes
 }
 
 std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed) {
+  // Below its floor a change is no change (a speed a tenth of a mm/min, a jerk of 1 mm/s^3,
+  // a nanometre): a figure that was 0 does not make every candidate worse.
   const struct {
     const char* name;
     double before, after;
     const char* unit;
+    double floor;
   } figures[] = {
-      {"speed fluctuation", before.speedFluctuation, after.speedFluctuation, "mm/min"},
-      {"inconsistency between passes (p99)", before.inconsistencyP99, after.inconsistencyP99, "mm/min"},
-      {"inconsistency between passes (mean)", before.inconsistencyMean, after.inconsistencyMean, "mm/min"},
-      {"jerk (p99)", before.jerkP99, after.jerkP99, "mm/s^3"},
-      {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "um"},
+      {"speed fluctuation", before.speedFluctuation, after.speedFluctuation, "mm/min", 0.1},
+      {"inconsistency between passes (p99)", before.inconsistencyP99, after.inconsistencyP99, "mm/min", 0.1},
+      {"inconsistency between passes (mean)", before.inconsistencyMean, after.inconsistencyMean, "mm/min", 0.1},
+      {"jerk (p99)", before.jerkP99, after.jerkP99, "mm/s^3", 1.0},
+      {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "um", 0.001},
   };
   for (const auto& f : figures)
-    if (f.after > f.before * (1 + allowed) + kRoundingSlack)
+    if (f.after > f.before * (1 + allowed) + f.floor)
       return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit);
   return {};
 }

@@ -33,6 +33,14 @@ struct ChosenRegion {
 };
 ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source);
 
+// The region a box covers (XY, mm): the lines of the surface's samples inside it, widened to
+// whole passes as worstRegion does, measured inside the box; InputError when it holds none.
+ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& upper, const std::string& source);
+
+// Every pass of the program (`optimize --all`): the first to the last line of the surface's
+// samples, measured over all of them; InputError when the program has no surface.
+ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source);
+
 // The lines of the pass that holds a sample of `line` (first to last line of its samples);
 // nothing when the line is on no pass.
 std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line);

@@ -1,0 +1,1 @@
+// Compiles the shared precompiled headers (cmake/precompiled_headers.cmake).
