@@ -121,7 +121,7 @@ int runOptimize(const OptimizeCliOptions& o) {
     passes.push_back({{"lines", {p.firstLine, p.lastLine}}, {"new_lines", {p.newFirstLine, p.newLastLine}},
                       {"old_moves", p.oldMoves}, {"new_moves", p.newMoves}, {"interval_feeds_mm_min", p.intervalFeeds}});
   const nlohmann::json report = {
-      {"source", o.input}, {"output", o.output}, {"kept", r.kept}, {"reason", r.reason},
+      {"source", o.input}, {"output", o.output}, {"kept", r.kept}, {"reason", r.reason}, {"plan", r.plan},
       {"lines", {range.first, range.last}},
       {"new_lines", {result.newRange.first, result.newRange.last}},
       {"machining_time_s", {{"before", timeBefore}, {"after", timeAfter}}},

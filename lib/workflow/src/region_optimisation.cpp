@@ -167,26 +167,43 @@ RegionOptimisation evaluateCandidate(const std::string& text, const Program& pro
 
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
                                   const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
-  // The closed loop: the planned interval feeds first, then a little below them (servo lag
-  // grows with speed), each simulated and judged; the first candidate no worse than the
-  // program is kept. When none is, the first one's figures and reason are reported.
-  constexpr double kFeedShares[] = {1.0, 0.95, 0.9};
-  constexpr std::size_t kCandidates = std::size(kFeedShares);
+  // The closed loop. The paper's plan first (each pass its own interval feeds); when the
+  // simulation finds it worse, the feeds planned across passes (the median of the passes
+  // around, then their slowest), then a little below the plan (servo lag grows with speed).
+  // Each candidate is simulated and judged; the first no worse than the program is kept. When
+  // none is, the first one's figures and reason are reported.
+  const struct {
+    CrossPassRule rule;
+    double share;
+  } candidates[] = {{CrossPassRule::None, 1.0},
+                    {CrossPassRule::Median, 1.0},
+                    {CrossPassRule::Envelope, 1.0},
+                    {CrossPassRule::None, 0.95},
+                    {CrossPassRule::Median, 0.95}};
+  constexpr std::size_t kCandidates = std::size(candidates);
   const QualityFigures wholeBefore = measureQualityFigures(*before.samples, *before.mesh);
   std::optional<RegionOptimisation> first;
+  std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
   for (std::size_t k = 0; k < kCandidates; ++k) {
+    const auto& c = candidates[k];
+    // Lower feeds can only take longer still.
+    if (std::find(tooSlow.begin(), tooSlow.end(), c.rule) != tooSlow.end()) continue;
     RegionRequest candidate = request;
-    candidate.options.feedScale = request.options.feedScale * kFeedShares[k];
+    candidate.options.feedScale = request.options.feedScale * c.share;
+    candidate.options.crossPass = c.rule;
     RegionOptimisation r = evaluateCandidate(
         text, program, before, wholeBefore, machine, candidate,
         progressStage(progress, double(k) / kCandidates, double(k + 1) / kCandidates));
+    r.plan = fmt::format("{}{}", c.rule == CrossPassRule::None     ? "each pass its own interval feeds"
+                                 : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
+                                                                   : "interval feeds planned across passes (slowest)",
+                         c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
     if (r.kept) {
       if (progress) progress(1.0);
       return r;
     }
-    const bool tooSlow = slower(r);
+    if (slower(r)) tooSlow.push_back(c.rule);
     if (!first) first = std::move(r);
-    if (tooSlow) break;  // lower feeds can only take longer still
   }
   if (progress) progress(1.0);
   return std::move(*first);
@@ -208,10 +225,10 @@ std::string regionSummary(const RegionOptimisation& r) {
   return fmt::format(
       "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
       "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
-      "jerk p99 {:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most",
+      "jerk p99 {:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most ({})",
       r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, a.speedFluctuation,
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
-      b.jerkP99, r.maxPathDistance) +
+      b.jerkP99, r.maxPathDistance, r.plan) +
          (r.kept ? "" : ". Not kept: " + r.reason + "; the program is left as it was");
 }
 

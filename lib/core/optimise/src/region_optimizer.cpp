@@ -15,6 +15,7 @@
 #include "isurface/nc/feed_plan.h"
 #include "isurface/fitting/interval_speed_plan.h"
 #include "isurface/analysis/quantities.h"
+#include "isurface/optimise/cross_pass_feeds.h"
 
 namespace isurface {
 
@@ -204,6 +205,48 @@ std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& poi
   return feeds;
 }
 
+// Where the path was re-fitted: dense, curved intervals (the transition a region is about,
+// not its long straight runs), mm.
+struct FittedBox {
+  bool empty = true;
+  Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();
+  void add(const Vec3& p) {
+    lower = empty ? p : lower.cwiseMin(p);
+    upper = empty ? p : upper.cwiseMax(p);
+    empty = false;
+  }
+};
+
+// One pass re-fitted and its interval feeds planned (the paper's steps, pass by pass).
+PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, const Machine& machine,
+                   const OptimizeOptions& options, FittedBox& fitted) {
+  std::vector<Vec3> points = {program.startOf(run.front())};
+  for (std::size_t i : run) points.push_back(program.moves[i].end);
+  const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
+  // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
+  // interval): a spline across an interval's boundary, where spacing or curvature jumps,
+  // would swing away from the path. An interval whose fit strays from its points by more
+  // than half the tolerance of the check keeps its points.
+  PassFeeds plan;
+  plan.points = {points.front()};
+  std::vector<std::size_t> dataIndex(points.size(), 0);
+  for (const ConstantSpeedInterval& interval : partition.intervals) {
+    const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
+    const std::vector<Vec3> piece = refitInterval(own, options);
+    const std::size_t offset = plan.points.size() - 1;
+    plan.points.insert(plan.points.end(), piece.begin() + 1, piece.end());
+    for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
+      while (j + 1 < piece.size() && (piece[j] - points[i]).norm() > kLengthEpsilon) ++j;
+      dataIndex[i] = offset + j;
+    }
+    plan.intervalEnd.push_back(plan.points.size() - 1);
+    if (own.size() >= 3 && interval.averageCurvature > 1e-3 && interval.length / (own.size() - 1) < 1.0)
+      for (const Vec3& p : own) fitted.add(p);
+  }
+  plan.feeds = intervalFeeds(options.feedScale, plan.points, dataIndex, partition, program.moves[run.front()].feed, machine);
+  return plan;
+}
+
 }  // namespace
 
 OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange range,
@@ -220,7 +263,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
                                 fmt::format("lines {}-{} hold no run of {} or more plain G1 moves to re-optimise",
                                             range.first, range.last, options.minimumMoves)});
   OptimizeResult result;
-  bool haveBox = false;
+  FittedBox fittedBox;
   std::uint32_t written = 0;  // lines of the output so far
   std::size_t nextSource = 1; // next source line to copy
   const char* lineEnd = text.find("\r\n") != std::string::npos ? "\r\n" : "\n";
@@ -230,40 +273,21 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
       ++written;
     }
   };
-  for (const auto& run : runs) {
+  // First every pass is re-fitted and its interval feeds planned; then the feeds are planned
+  // across passes; then the passes are written.
+  std::vector<PassFeeds> plans;
+  for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
+  result.fittedLower = fittedBox.lower;
+  result.fittedUpper = fittedBox.upper;
+  harmonizeFeedsAcrossPasses(plans, options.crossPass);
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const auto& run = runs[r];
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
-    std::vector<Vec3> points = {program.startOf(run.front())};
-    for (std::size_t i : run) points.push_back(program.moves[i].end);
-    const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
-    // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
-    // interval): a spline across an interval's boundary, where spacing or curvature jumps,
-    // would swing away from the path. An interval whose fit strays from its points by more
-    // than half the tolerance of the check keeps its points.
-    std::vector<Vec3> fitted = {points.front()};
-    std::vector<std::size_t> dataIndex(points.size(), 0);
-    std::vector<std::size_t> intervalEnd;  // index in `fitted` of each interval's last point
-    for (const ConstantSpeedInterval& interval : partition.intervals) {
-      const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-      const std::vector<Vec3> piece = refitInterval(own, options);
-      const std::size_t offset = fitted.size() - 1;
-      fitted.insert(fitted.end(), piece.begin() + 1, piece.end());
-      for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
-        while (j + 1 < piece.size() && (piece[j] - points[i]).norm() > kLengthEpsilon) ++j;
-        dataIndex[i] = offset + j;
-      }
-      intervalEnd.push_back(fitted.size() - 1);
-      // Dense, curved intervals are the transition the region is about, not its long straight runs.
-      if (own.size() >= 3 && interval.averageCurvature > 1e-3 && interval.length / (own.size() - 1) < 1.0) {
-        for (const Vec3& p : own) {
-          if (!haveBox) result.fittedLower = result.fittedUpper = p, haveBox = true;
-          result.fittedLower = result.fittedLower.cwiseMin(p);
-          result.fittedUpper = result.fittedUpper.cwiseMax(p);
-        }
-      }
-    }
+    const std::vector<Vec3>& fitted = plans[r].points;
+    const std::vector<std::size_t>& intervalEnd = plans[r].intervalEnd;
     const double feed = first.feed;
-    const std::vector<double> feeds = intervalFeeds(options.feedScale, fitted, dataIndex, partition, feed, machine);
+    const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;
     pass.firstLine = first.line;

@@ -67,6 +67,7 @@ struct RegionOptimisation {
   // the program stays as it was.
   bool kept = true;
   std::string reason;
+  std::string plan;  // the candidate reported: how its interval feeds were planned
 };
 
 // How much worse (relative) a figure of the region may get for the new program to be kept.

@@ -17,6 +17,13 @@
 
 namespace isurface {
 
+// How interval feeds are planned across passes.
+enum class CrossPassRule {
+  None,      // each pass keeps its own interval feeds (the paper's steps, pass by pass)
+  Median,    // an interval runs at the median feed of the passes around it, never above its own
+  Envelope,  // an interval runs at the slowest feed of the passes around it
+};
+
 struct OptimizeOptions {
   IntervalThresholds thresholds;
   double chordTolerance = 0.002;  // mm, resampling of the spline into G1 moves
@@ -24,6 +31,7 @@ struct OptimizeOptions {
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
   double feedScale = 1.0;         // share of each interval's planned feed that is programmed
+  CrossPassRule crossPass = CrossPassRule::None;
 };
 
 struct OptimizedPass {
