@@ -96,3 +96,59 @@ TEST(regionOptimizer, JumpInSpacingDoesNotSwingTheFit) {
   EXPECT_EQ(r.newRange.first, 3u);
   EXPECT_EQ(r.newRange.last, linesOf(r.text).size());
 }
+
+namespace {
+
+// The program with every coordinate and feed word rewritten in inches and G21 made G20.
+std::string inInches(const std::string& text) {
+  std::string out;
+  for (std::size_t i = 0; i < text.size();) {
+    const char c = text[i];
+    const bool word = (c == 'X' || c == 'Y' || c == 'Z' || c == 'F' || c == 'I' || c == 'J') && i + 1 < text.size() &&
+                      (std::isdigit(static_cast<unsigned char>(text[i + 1])) || text[i + 1] == '-' || text[i + 1] == '.');
+    if (!word) {
+      out += c;
+      ++i;
+      continue;
+    }
+    std::size_t used = 0;
+    const double value = std::stod(text.substr(i + 1), &used);
+    char number[32];
+    std::snprintf(number, sizeof number, c == 'F' ? "%.3f" : "%.6f", value / 25.4);
+    out += c;
+    out += number;
+    i += 1 + used;
+  }
+  const std::size_t g21 = out.find("G21");
+  if (g21 != std::string::npos) out.replace(g21, 3, "G20");
+  else out = "G20\n" + out;
+  return out;
+}
+
+}  // namespace
+
+TEST(regionOptimizer, AnInchProgramIsRewrittenInInches) {
+  const std::string text = inInches(readFile(sourcePath("samples/transition-surface.nc")));
+  const InterpretResult original = interpretGcode(text, "inch.nc");
+  ASSERT_TRUE(original.ok()) << original.errors.front().str();
+  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{70, 126}, defaultMachine());
+  ASSERT_EQ(r.passes.size(), 1u);
+  const InterpretResult reread = interpretGcode(r.text, "inch-new.nc");
+  ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+  // Read back in inches, the new moves lie on the old path (mm inside) and keep its feed.
+  const OptimizedPass& pass = r.passes.front();
+  double farthest = 0;
+  for (const Move& m : reread.program.moves) {
+    if (m.line < pass.newFirstLine || m.line > pass.newLastLine) continue;
+    double nearest = INFINITY;
+    for (std::size_t i = 0; i < original.program.moves.size(); ++i)
+      if (original.program.moves[i].line >= pass.firstLine && original.program.moves[i].line <= pass.lastLine)
+        nearest = std::min(nearest, distanceToSegment(m.end, original.program.startOf(i), original.program.moves[i].end));
+    farthest = std::max(farthest, nearest);
+    // mm/min inside: the sample's F3000 written as in/min and read back, never above it.
+    EXPECT_GE(m.feed, 0.2 * 3000 - 1);
+    EXPECT_LE(m.feed, 3000 + 1);
+  }
+  EXPECT_LT(farthest, 0.01);  // mm
+  EXPECT_THROW(optimizeRegion("G21\n" + text, original.program, LineRange{70, 126}, defaultMachine()), InputError);
+}

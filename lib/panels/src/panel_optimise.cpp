@@ -135,6 +135,19 @@ void drawOptimiseDialog(Inspector::State& s) {
     }
   }
   ImGui::SameLine();
+  if (ImGui::Button("Whole program") && doc && doc->samples && doc->map.mesh) {
+    try {
+      // As `optimize --all`: every pass, the figures taken over all of them.
+      const ChosenRegion all = wholeProgramRegion(SurfaceRun{doc->samples, doc->map.passes, doc->map.mesh}, doc->name);
+      s.optimiseFirst = static_cast<int>(all.lines.first);
+      s.optimiseLast = static_cast<int>(all.lines.last);
+      s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};
+      s.optimiseBoxOnView = {};
+    } catch (const InputError& e) {
+      s.status = e.what();
+    }
+  }
+  ImGui::SameLine();
   if (ImGui::Button("Selected line's pass") && s.selection.current().line && doc && doc->samples) {
     const SurfaceRun run{doc->samples, doc->map.passes, nullptr};
     if (const auto pass = passOfLine(run, *s.selection.current().line)) {

@@ -10,10 +10,9 @@
 #include "gcode_lexer.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/gcode/gcode_stream.h"
+#include "isurface/base/units.h"
 
 namespace isurface::gcode {
-
-constexpr double kMmPerInch = 25.4;
 
 // G codes in tenths.
 enum GCode : int {

@@ -205,6 +205,18 @@ std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& poi
   return feeds;
 }
 
+// New blocks in the program's own units: mm with 4 decimals and whole mm/min, or inches with
+// 5 decimals (0.25 um) and in/min with 2.
+struct BlockUnits {
+  double perMm;  // program units per mm
+  int positionDecimals, feedDecimals;
+  std::string position(const Vec3& p) const {
+    return fmt::format("X{:.{}f} Y{:.{}f} Z{:.{}f}", p.x() * perMm, positionDecimals, p.y() * perMm, positionDecimals,
+                       p.z() * perMm, positionDecimals);
+  }
+  std::string feed(double mmPerMin) const { return fmt::format("{:.{}f}", mmPerMin * perMm, feedDecimals); }
+};
+
 // Where the path was re-fitted: dense, curved intervals (the transition a region is about,
 // not its long straight runs), mm.
 struct FittedBox {
@@ -252,7 +264,13 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
 OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange range,
                               const Machine& machine, const OptimizeOptions& options) {
   if (mentions(text, "G91")) throw InputError(Diagnostic{program.source, 0, 0, "incremental programs (G91) are not re-optimised"});
-  if (mentions(text, "G20")) throw InputError(Diagnostic{program.source, 0, 0, "inch programs (G20) are not re-optimised"});
+  // An inch program is re-fitted in mm, as it was read, and its new blocks are written back in
+  // inches; one that switches units part way is refused rather than guessed at.
+  const bool inch = mentions(text, "G20");
+  if (inch && mentions(text, "G21"))
+    throw InputError(Diagnostic{program.source, 0, 0,
+                                "programs that switch between inches and millimetres (G20 and G21) are not re-optimised"});
+  const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
   std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range);
@@ -295,7 +313,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     pass.oldMoves = run.size();
     pass.intervalFeeds = feeds;
     std::string feedList;
-    for (double f : feeds) feedList += fmt::format(" F{:.0f}", f);
+    for (double f : feeds) feedList += " F" + units.feed(f);
     result.text += fmt::format("(iSurface: lines {}-{} re-fitted: Akima spline in arc length, constant speed intervals{}){}",
                                first.line, last.line, feedList, lineEnd);
     pass.newFirstLine = ++written;
@@ -304,15 +322,15 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     for (std::size_t k = 1; k < fitted.size(); ++k) {
       while (interval + 1 < intervalEnd.size() && k > intervalEnd[interval]) ++interval;
       const double f = feeds.empty() ? feed : feeds[interval];
-      std::string block = fmt::format("G1 X{:.4f} Y{:.4f} Z{:.4f}", fitted[k].x(), fitted[k].y(), fitted[k].z());
-      if (f != current) block += fmt::format(" F{:.0f}", f), current = f;
+      std::string block = "G1 " + units.position(fitted[k]);
+      if (f != current) block += " F" + units.feed(f), current = f;
       result.text += block + lineEnd;
       ++written;
       ++pass.newMoves;
     }
     // The lines after keep the feed they had.
     if (current != feed) {
-      result.text += fmt::format("F{:.0f}{}", feed, lineEnd);
+      result.text += "F" + units.feed(feed) + lineEnd;
       ++written;
     }
     pass.newLastLine = written;

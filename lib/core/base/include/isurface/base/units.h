@@ -17,6 +17,9 @@ constexpr double kDegreesPerRadian = 180.0 / kPi;
 
 constexpr double kSecondsPerMinute = 60.0;
 
+// Inch programs (G20) are read into mm and, when rewritten, written back in inches.
+constexpr double kMmPerInch = 25.4;  // exact, by definition
+
 // mm/min (an F word, a display) -> mm/s.
 constexpr double mmPerMinToMmPerS(double mmPerMin) { return mmPerMin / kSecondsPerMinute; }
 // mm/s -> mm/min (an F word, a display).
