@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
+#include <map>
 #include <memory>
 #include <optional>
 #include <nlohmann/json.hpp>
@@ -29,6 +30,7 @@ namespace {
 
 struct OptimizeCliOptions {
   std::string input, output, lines, box, report, pngBefore, pngAfter, pngDifference, machine;
+  Objective objective = Objective::Balanced;
   bool automatic = false, all = false;
   double chordTolerance = 0.002;
 };
@@ -40,6 +42,14 @@ nlohmann::json figuresJson(const QualityFigures& f) {
           {"speed_inconsistency_mean_mm_min", f.inconsistencyMean},
           {"jerk_p99_mm_s3", f.jerkP99},
           {"predicted_deviation_p99_um", f.hasDeviation ? nlohmann::json(f.deviationP99) : nlohmann::json(nullptr)}};
+}
+
+nlohmann::json candidatesJson(const RegionOptimisation& r) {
+  nlohmann::json out = nlohmann::json::array();
+  for (const RegionOptimisation::Outcome& c : r.candidates)
+    out.push_back({{"plan", c.plan}, {"kept", c.kept}, {"reason", c.reason}, {"machining_time_s", c.timeAfter},
+                    {"region", figuresJson(c.region)}, {"whole_program", figuresJson(c.whole)}});
+  return out;
 }
 
 // A top view of the run's surface coloured as the request says.
@@ -60,6 +70,15 @@ void renderSpeed(const SurfaceRun& run, const Program& program, const std::strin
   renderTop(run, program, request, caption, path);
 }
 
+const std::map<std::string, Objective> kObjectives = {
+    {"balanced", Objective::Balanced}, {"time", Objective::Time}, {"quality", Objective::Quality}};
+
+std::string objectiveName(Objective objective) {
+  for (const auto& [name, value] : kObjectives)
+    if (value == objective) return name;
+  return "";
+}
+
 // "X0,Y0,X1,Y1" in mm.
 std::pair<Vec3, Vec3> parseBox(const std::string& text) {
   double v[4];
@@ -74,6 +93,7 @@ std::pair<Vec3, Vec3> parseBox(const std::string& text) {
 RegionRequest regionOf(const OptimizeCliOptions& o, const SurfaceRun& before) {
   RegionRequest request;
   request.options.chordTolerance = o.chordTolerance;
+  request.objective = o.objective;
   if (!o.lines.empty()) {
     request.lines = parseLineRange(o.lines);
     return request;
@@ -122,6 +142,7 @@ int runOptimize(const OptimizeCliOptions& o) {
                       {"old_moves", p.oldMoves}, {"new_moves", p.newMoves}, {"interval_feeds_mm_min", p.intervalFeeds}});
   const nlohmann::json report = {
       {"source", o.input}, {"output", o.output}, {"kept", r.kept}, {"reason", r.reason}, {"plan", r.plan},
+      {"objective", objectiveName(r.objective)}, {"candidates", candidatesJson(r)},
       {"lines", {range.first, range.last}},
       {"new_lines", {result.newRange.first, result.newRange.last}},
       {"machining_time_s", {{"before", timeBefore}, {"after", timeAfter}}},
@@ -164,6 +185,11 @@ Command optimizeCommand() {
                      "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description (JSON)");
+      sub.add_option("--objective", o->objective,
+                     "balanced: no figure worse, time not longer (first such candidate); time: the fastest such "
+                     "candidate; quality: the candidate that improves the region most, up to 5 % longer")
+          ->transform(CLI::CheckedTransformer(kObjectives, CLI::ignore_case))
+          ->default_str("balanced");
       return [o] { return runOptimize(*o); };
     }};
 }

@@ -120,3 +120,18 @@ TEST(regionOptimisation, TheFiguresJudgeEveryFigureByTheSameRule) {
     EXPECT_NE(worseFigure(before, worse, kWorseningAllowed), "");
   }
 }
+
+TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedAgain) {
+  // Every interval of the transition's worst region is planned at the programmed feed, so the
+  // feeds planned across passes change nothing: those candidates are the paper's plan again.
+  const ChosenRegion worst = worstRegion(transition().before, "transition-surface.nc");
+  RegionRequest request;
+  request.lines = worst.lines;
+  request.box = std::make_pair(worst.lower, worst.upper);
+  const RegionOptimisation r =
+      optimiseRegion(transition().text, transition().program, transition().before, defaultMachine(), request);
+  ASSERT_FALSE(r.candidates.empty());
+  for (const RegionOptimisation::Outcome& c : r.candidates)
+    EXPECT_EQ(c.plan.find("planned across passes"), std::string::npos) << c.plan;
+  EXPECT_EQ(r.plan, r.candidates.front().plan);  // none kept: the first is reported
+}

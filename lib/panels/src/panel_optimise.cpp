@@ -60,9 +60,10 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   // both sides are judged alike (as `optimize` does).
   std::shared_ptr<const Trajectory> documentSamples = doc->machineKnown ? doc->samples : nullptr;
   const Machine machine = doc->machine;  // the document's own, as the CLI's --machine
+  const auto objective = static_cast<Objective>(std::clamp(optimiseObjective, 0, 2));
   job.start(fmt::format("optimising lines {}-{}", first, last),
-            [result, path, program, documentSamples, request, first, last, measuredBox,
-             machine](app_model::JobControl& control) {
+            [result, path, program, documentSamples, request, first, last, measuredBox, machine,
+             objective](app_model::JobControl& control) {
               std::ifstream in(path, std::ios::binary);
               std::stringstream text;
               text << in.rdbuf();
@@ -73,6 +74,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               RegionRequest region;
               region.lines = LineRange{first, last};
               region.box = measuredBox;
+              region.objective = objective;
               const RegionOptimisation r = optimiseRegion(text.str(), *program, beforeRun, machine, region,
                                                           [&](double f) { control.progress(0.8 * f); });
               auto c = std::make_shared<Comparison>();
@@ -157,6 +159,10 @@ void drawOptimiseDialog(Inspector::State& s) {
       s.status = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
     }
   }
+  // As `optimize --objective`: what the closed loop chooses among candidates no figure of which is worse.
+  ImGui::Combo("objective", &s.optimiseObjective,
+               "balanced: no figure worse, time not longer\0time: the fastest such candidate\0"
+               "quality: the best figures, up to 5 % longer\0");
   if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
     std::optional<std::pair<Vec3, Vec3>> measured;
     if (boxed) measured = std::make_pair(s.optimiseBox->lower, s.optimiseBox->upper);

@@ -4,10 +4,13 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
+#include <tuple>
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/quality_regions.h"
+#include "isurface/analysis/quantities.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/workflow/run_inputs.h"
 
@@ -16,6 +19,8 @@ namespace isurface {
 namespace {
 
 constexpr double kRegionMarginMm = 0.5;
+constexpr double kFineCharacteristicError = 0.01;  // mm
+constexpr int kDeviationRounds = 3;
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -118,42 +123,55 @@ namespace {
 bool slower(const RegionOptimisation& r) {
   // Half a cycle of slack: the two runs are whole numbers of cycles.
   const double cycle = r.after.samples ? r.after.samples->cycle : 0.0;
-  return r.timeAfter > r.timeBefore + 0.5 * cycle;
+  const double allowed = r.objective == Objective::Quality ? kQualitySlowdownAllowed * r.timeBefore : 0.0;
+  return r.timeAfter > r.timeBefore + allowed + 0.5 * cycle;
 }
 
-// One candidate: re-fitted, simulated on the machine, measured and judged. `wholeBefore`: the
-// program's own figures, the same for every candidate.
-RegionOptimisation evaluateCandidate(const std::string& text, const Program& program, const SurfaceRun& before,
-                                     const QualityFigures& wholeBefore, const Machine& machine,
+// What every candidate is judged against: the program's own figures, measured once per box.
+struct Baseline {
+  const Program& program;
+  const SurfaceRun& run;
+  QualityFigures whole;
+  std::optional<std::tuple<Vec3, Vec3, QualityFigures>> region;
+
+  const QualityFigures& regionIn(const Vec3& lower, const Vec3& upper, LineRange lines) {
+    if (!region || std::get<0>(*region) != lower || std::get<1>(*region) != upper)
+      region.emplace(lower, upper, measureQualityFigures(*run.samples, *run.mesh, FigureWindow{lines, lower, upper}));
+    return std::get<2>(*region);
+  }
+};
+
+// One candidate's re-fitted program, simulated on the machine, measured and judged.
+RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, const Machine& machine,
                                      const RegionRequest& request, const ProgressCallback& progress) {
+  const Program& program = before.program;
   RegionOptimisation r;
   r.lines = request.lines;
-  r.result = optimizeRegion(text, program, request.lines, machine, request.options);
-  if (progress) progress(0.2);
+  r.objective = request.objective;
+  r.result = std::move(result);
   InterpretResult reread = interpretGcode(r.result.text, program.source);
   if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
   r.program = std::make_shared<const Program>(std::move(reread.program));
-  r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.2, 0.9))),
+  r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.1, 0.9))),
                        r.program.get());
   // The figures look where the defect was found (a box), else where the path was re-fitted; a
   // re-fitted part that holds no surface sample (one pass, a flat box) gives way to the region.
   std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
-  const auto window = [&](LineRange lines) { return FigureWindow{lines, r.lower, r.upper}; };
-  r.regionBefore = measureQualityFigures(*before.samples, *before.mesh, window(request.lines));
+  r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
   if (!request.box && r.regionBefore.samples == 0) {
     std::tie(r.lower, r.upper) = boundingBox(regionPoints(program, request.lines));
     // Only the region's lines are measured: the margin takes in no other line, and gives the
     // box of a single straight pass the height its samples need.
     r.lower -= Vec3::Constant(kRegionMarginMm);
     r.upper += Vec3::Constant(kRegionMarginMm);
-    r.regionBefore = measureQualityFigures(*before.samples, *before.mesh, window(request.lines));
+    r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
   }
-  r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, window(r.result.newRange));
-  r.wholeBefore = wholeBefore;
+  r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, FigureWindow{r.result.newRange, r.lower, r.upper});
+  r.wholeBefore = before.whole;
   r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);
   r.maxPathDistance =
       polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
-  r.timeBefore = machiningTime(*before.samples);
+  r.timeBefore = machiningTime(*before.run.samples);
   r.timeAfter = machiningTime(*r.after.samples);
   if (const auto why = worsening(r)) {
     r.kept = false;
@@ -163,50 +181,162 @@ RegionOptimisation evaluateCandidate(const std::string& text, const Program& pro
   return r;
 }
 
+// The region's figures after over before, summed (smaller is better): how Objective::Quality
+// ranks the candidates it keeps.
+double qualityScore(const RegionOptimisation& r) {
+  const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
+  auto ratio = [](double before, double after, double floor) { return std::max(after, floor) / std::max(before, floor); };
+  return ratio(a.speedFluctuation, b.speedFluctuation, 0.1) + ratio(a.inconsistencyP99, b.inconsistencyP99, 0.1) +
+         ratio(a.inconsistencyMean, b.inconsistencyMean, 0.1) + ratio(a.jerkP99, b.jerkP99, 1.0) +
+         (a.hasDeviation ? ratio(a.deviationP99, b.deviationP99, 0.001) : 0.0);
+}
+
+// Whether `r` (kept) is a better choice than `best` (kept) for the objective.
+bool betterFor(Objective objective, const RegionOptimisation& r, const RegionOptimisation& best) {
+  if (objective == Objective::Time) return r.timeAfter < best.timeAfter;
+  return qualityScore(r) < qualityScore(best);
+}
+
+struct Candidate {
+  CrossPassRule rule;
+  double share;                   // of the planned feeds
+  bool fine = false;              // characteristic points at kFineCharacteristicError
+  std::vector<double> ceilings;   // mm/min per source line, where deviation was held
+};
+
+std::string describe(const Candidate& c) {
+  return fmt::format("{}{}{}{}",
+                     c.rule == CrossPassRule::None     ? "each pass its own interval feeds"
+                     : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
+                                                       : "interval feeds planned across passes (slowest)",
+                     c.fine ? fmt::format(", characteristic points within {:g} mm", kFineCharacteristicError) : "",
+                     c.ceilings.empty() ? "" : ", slowed where the servo deviated more than before",
+                     c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
+}
+
+// Feed ceilings (mm/min per old source line) that bring the servo's deviation in a candidate's
+// run back to `targetUm`: a move whose samples deviate by d > target is held to its feed times
+// sqrt(target / d) (the lag that deviates the path grows with the square of the speed where it
+// bends), with a margin. `previous` ceilings are kept where they are lower.
+std::vector<double> deviationCeilings(const RegionOptimisation& r, double targetUm, std::vector<double> previous) {
+  constexpr double kMargin = 0.97;
+  const Trajectory& t = *r.after.samples;
+  const std::vector<float> deviation = vertexQuantity(Quantity::Deviation, t, *r.after.mesh);
+  std::vector<double> worst;  // um per new line
+  for (std::size_t v = 0; v < deviation.size(); ++v) {
+    const std::uint32_t line = t.line[r.after.mesh->vertexSample[v]];
+    if (line == 0 || !std::isfinite(deviation[v])) continue;
+    if (line >= worst.size()) worst.resize(line + 1, 0.0);
+    worst[line] = std::max(worst[line], double(std::fabs(deviation[v])));
+  }
+  std::vector<double> feedOfLine;  // mm/min per new line
+  for (const Move& m : r.program->moves) {
+    if (m.line >= feedOfLine.size()) feedOfLine.resize(m.line + 1, 0.0);
+    feedOfLine[m.line] = m.feed;
+  }
+  for (const OptimizedPass& pass : r.result.passes)
+    for (std::size_t k = 0; k < pass.sourceLines.size(); ++k) {
+      const std::size_t line = pass.newFirstLine + k;
+      const std::uint32_t source = pass.sourceLines[k];
+      if (line >= worst.size() || line >= feedOfLine.size() || worst[line] <= targetUm || source == 0) continue;
+      const double ceiling = kMargin * feedOfLine[line] * std::sqrt(targetUm / worst[line]);
+      if (source >= previous.size()) previous.resize(source + 1, 0.0);
+      if (previous[source] == 0 || ceiling < previous[source]) previous[source] = ceiling;
+    }
+  return previous;
+}
+
+}  // namespace
+
+namespace {
+
+// The candidates tried, their outcomes, and the choice among those kept.
+class ClosedLoop {
+ public:
+  ClosedLoop(const std::string& text, Baseline& baseline, const Machine& machine, const RegionRequest& request,
+             const ProgressCallback& progress)
+      : text_(text), baseline_(baseline), machine_(machine), request_(request), progress_(progress) {}
+
+  // Simulates and judges a candidate unless it writes a program already judged; returns it
+  // when it was simulated.
+  const RegionOptimisation* judge(const Candidate& c, bool evenIfRepeated = false) {
+    RegionRequest candidate = request_;
+    candidate.options.feedScale = request_.options.feedScale * c.share;
+    candidate.options.crossPass = c.rule;
+    candidate.options.lineFeedCeiling = c.ceilings;
+    if (c.fine) candidate.options.thresholds.error = std::min(candidate.options.thresholds.error, kFineCharacteristicError);
+    OptimizeResult result = optimizeRegion(text_, baseline_.program, request_.lines, machine_, candidate.options);
+    const bool repeated = std::find(judged_.begin(), judged_.end(), result.text) != judged_.end();
+    if (repeated && !evenIfRepeated) return nullptr;
+    const double step = 1.0 / kExpectedCandidates;
+    const double at = std::min(1.0 - step, step * double(judged_.size()));
+    if (!repeated) judged_.push_back(result.text);
+    last_ = evaluateCandidate(std::move(result), baseline_, machine_, candidate, progressStage(progress_, at, at + step));
+    last_.plan = describe(c);
+    if (!repeated) outcomes_.push_back({last_.plan, last_.kept, last_.reason, last_.timeAfter, last_.regionAfter, last_.wholeAfter});
+    if (last_.kept && (!best_ || betterFor(request_.objective, last_, *best_))) best_ = last_;
+    if (!first_ && !last_.kept) first_ = last_;
+    return &last_;
+  }
+
+  bool done() const { return best_ && request_.objective == Objective::Balanced; }
+
+  RegionOptimisation result() {
+    RegionOptimisation chosen = best_ ? std::move(*best_) : std::move(*first_);
+    chosen.candidates = std::move(outcomes_);
+    return chosen;
+  }
+
+ private:
+  static constexpr std::size_t kExpectedCandidates = 6;
+  const std::string& text_;
+  Baseline& baseline_;
+  const Machine& machine_;
+  const RegionRequest& request_;
+  const ProgressCallback& progress_;
+  std::vector<std::string> judged_;  // texts already simulated: a rule that changes no feed repeats one
+  std::vector<RegionOptimisation::Outcome> outcomes_;
+  RegionOptimisation last_;
+  std::optional<RegionOptimisation> best_, first_;
+};
+
 }  // namespace
 
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
                                   const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
   // The closed loop. The paper's plan first (each pass its own interval feeds); when the
   // simulation finds it worse, the feeds planned across passes (the median of the passes
-  // around, then their slowest), then a little below the plan (servo lag grows with speed).
-  // Each candidate is simulated and judged; the first no worse than the program is kept. When
-  // none is, the first one's figures and reason are reported.
-  const struct {
-    CrossPassRule rule;
-    double share;
-  } candidates[] = {{CrossPassRule::None, 1.0},
-                    {CrossPassRule::Median, 1.0},
-                    {CrossPassRule::Envelope, 1.0},
-                    {CrossPassRule::None, 0.95},
-                    {CrossPassRule::Median, 0.95}};
-  constexpr std::size_t kCandidates = std::size(candidates);
-  const QualityFigures wholeBefore = measureQualityFigures(*before.samples, *before.mesh);
-  std::optional<RegionOptimisation> first;
+  // around, then their slowest). Then, where the servo deviated more than before (the smooth
+  // new path is run faster through bends where the old one braked at every point),
+  // characteristic points at a finer scale, so that a bend between long moves is an interval
+  // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
+  // Then a little below the plan. Each distinct candidate is simulated and judged; the objective
+  // chooses among those no worse than the program. When none is, the first one's figures and
+  // reason are reported.
+  Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), std::nullopt};
+  ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
-  for (std::size_t k = 0; k < kCandidates; ++k) {
-    const auto& c = candidates[k];
-    // Lower feeds can only take longer still.
-    if (std::find(tooSlow.begin(), tooSlow.end(), c.rule) != tooSlow.end()) continue;
-    RegionRequest candidate = request;
-    candidate.options.feedScale = request.options.feedScale * c.share;
-    candidate.options.crossPass = c.rule;
-    RegionOptimisation r = evaluateCandidate(
-        text, program, before, wholeBefore, machine, candidate,
-        progressStage(progress, double(k) / kCandidates, double(k + 1) / kCandidates));
-    r.plan = fmt::format("{}{}", c.rule == CrossPassRule::None     ? "each pass its own interval feeds"
-                                 : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
-                                                                   : "interval feeds planned across passes (slowest)",
-                         c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
-    if (r.kept) {
-      if (progress) progress(1.0);
-      return r;
+  for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median, CrossPassRule::Envelope}) {
+    const RegionOptimisation* r = loop.judge({rule, 1.0});
+    if (r && !r->kept && slower(*r)) tooSlow.push_back(rule);
+    if (loop.done()) break;
+  }
+  const RegionOptimisation* fine = loop.done() ? nullptr : loop.judge({CrossPassRule::None, 1.0, true}, true);
+  if (fine && fine->regionBefore.hasDeviation) {
+    const double target = std::min(fine->regionBefore.deviationP99, fine->wholeBefore.deviationP99);
+    std::vector<double> ceilings;
+    for (int round = 0; round < kDeviationRounds && fine && !loop.done(); ++round) {
+      ceilings = deviationCeilings(*fine, target, ceilings);
+      fine = loop.judge({CrossPassRule::None, 1.0, true, ceilings});
     }
-    if (slower(r)) tooSlow.push_back(c.rule);
-    if (!first) first = std::move(r);
+  }
+  for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median}) {
+    // Lower feeds can only take longer still.
+    if (loop.done() || std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
+    loop.judge({rule, 0.95});
   }
   if (progress) progress(1.0);
-  return std::move(*first);
+  return loop.result();
 }
 
 std::optional<std::string> worsening(const RegionOptimisation& r) {

@@ -4,6 +4,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -168,7 +169,38 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
 // curvature (interval_speed_plan.h), but no more than the NC allows over most of the new
 // points (the median of its limits), so that the machine holds it rather than braking and
 // speeding up at every point.
-std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
+// Per interval, the lowest feed ceiling among the old lines of the bend it belongs to, mm/s
+// (infinite where there is none). A bend is a stretch of intervals of short moves; the servo
+// deviates from a path where it bends, so the whole bend is held alike, whichever way the pass
+// runs (a pass and its neighbour, cut the other way, then slow over the same stretch). A long
+// straight move's corners are the planner's: slowing the whole move would only cost time.
+std::vector<double> bendCeilings(const OptimizeOptions& options, const Program& program, const std::vector<std::size_t>& run,
+                                 const std::vector<ConstantSpeedInterval>& intervals) {
+  constexpr double kLongMove = 1.0;  // mm
+  const double none = std::numeric_limits<double>::infinity();
+  std::vector<double> ceilings(intervals.size(), none);
+  if (options.lineFeedCeiling.empty()) return ceilings;
+  auto shortMoves = [&](const ConstantSpeedInterval& i) {
+    return i.last > i.first && i.length / double(i.last - i.first) < kLongMove;
+  };
+  for (std::size_t begin = 0; begin < intervals.size();) {
+    std::size_t end = begin;
+    while (end < intervals.size() && shortMoves(intervals[end])) ++end;
+    double lowest = none;
+    for (std::size_t k = begin; k < end; ++k)
+      for (std::size_t i = intervals[k].first; i < intervals[k].last; ++i) {
+        const std::uint32_t line = program.moves[run[i]].line;
+        if (line < options.lineFeedCeiling.size() && options.lineFeedCeiling[line] > 0)
+          lowest = std::min(lowest, mmPerMinToMmPerS(options.lineFeedCeiling[line]));
+      }
+    std::fill(ceilings.begin() + begin, ceilings.begin() + end, lowest);
+    begin = std::max(end, begin + 1);
+  }
+  return ceilings;
+}
+
+std::vector<double> intervalFeeds(const OptimizeOptions& options, const Program& program, const std::vector<std::size_t>& run,
+                                  const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
                                   const IntervalPartition& partition, double feed, const Machine& machine) {
   Program probe;
   probe.start = points.front();
@@ -191,6 +223,7 @@ std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& poi
     if (s.move > 0) atPoint[s.move] = std::min(feedMmS, s.entryLimit);
   }
   const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
+  const std::vector<double> ceilings = bendCeilings(options, program, run, partition.intervals);
   std::vector<double> feeds;
   for (std::size_t k = 0; k < partition.intervals.size(); ++k) {
     const ConstantSpeedInterval& interval = partition.intervals[k];
@@ -198,9 +231,9 @@ std::vector<double> intervalFeeds(double feedScale, const std::vector<Vec3>& poi
     std::vector<double> limits(ofSegment.begin() + from, ofSegment.begin() + to);
     for (std::size_t k = from + 1; k < to; ++k) limits.push_back(atPoint[k]);
     std::sort(limits.begin(), limits.end());
-    const double v = std::min(limits.empty() ? feedMmS : limits[limits.size() / 2],
-                              mmPerMinToMmPerS(planned[k].plannedFeedMmMin));
-    feeds.push_back(std::clamp(std::floor(feedScale * mmPerSToMmPerMin(v)), 0.2 * feed, feed));
+    const double v = std::min({limits.empty() ? feedMmS : limits[limits.size() / 2],
+                               mmPerMinToMmPerS(planned[k].plannedFeedMmMin), ceilings[k]});
+    feeds.push_back(std::clamp(std::floor(options.feedScale * mmPerSToMmPerMin(v)), 0.2 * feed, feed));
   }
   return feeds;
 }
@@ -255,7 +288,11 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
     if (own.size() >= 3 && interval.averageCurvature > 1e-3 && interval.length / (own.size() - 1) < 1.0)
       for (const Vec3& p : own) fitted.add(p);
   }
-  plan.feeds = intervalFeeds(options.feedScale, plan.points, dataIndex, partition, program.moves[run.front()].feed, machine);
+  plan.sourceLines.assign(plan.points.size(), 0);
+  for (std::size_t i = 0; i + 1 < points.size(); ++i)
+    for (std::size_t k = dataIndex[i] + 1; k <= dataIndex[i + 1] && k < plan.points.size(); ++k)
+      plan.sourceLines[k] = program.moves[run[i]].line;
+  plan.feeds = intervalFeeds(options, program, run, plan.points, dataIndex, partition, program.moves[run.front()].feed, machine);
   return plan;
 }
 
@@ -325,6 +362,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
       std::string block = "G1 " + units.position(fitted[k]);
       if (f != current) block += " F" + units.feed(f), current = f;
       result.text += block + lineEnd;
+      pass.sourceLines.push_back(plans[r].sourceLines[k]);
       ++written;
       ++pass.newMoves;
     }

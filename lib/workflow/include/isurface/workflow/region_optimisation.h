@@ -6,6 +6,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <vector>
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/run_comparison.h"
@@ -45,11 +46,21 @@ ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source
 // nothing when the line is on no pass.
 std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line);
 
+// What the closed loop chooses for, among candidates no figure of which is worse by more than
+// kWorseningAllowed. Balanced: the first such candidate that is not slower (the paper's plan
+// first). Time: the fastest of them that is not slower. Quality: the one whose figures improve
+// most, even if it takes up to kQualitySlowdownAllowed longer.
+enum class Objective { Balanced, Time, Quality };
+
+// How much longer (relative) the program may take under Objective::Quality.
+constexpr double kQualitySlowdownAllowed = 0.05;
+
 struct RegionRequest {
   LineRange lines;
   // Where the figures are measured (XY, mm); by default the box of the region's programmed path.
   std::optional<std::pair<Vec3, Vec3>> box;
   OptimizeOptions options;
+  Objective objective = Objective::Balanced;
 };
 
 struct RegionOptimisation {
@@ -68,12 +79,23 @@ struct RegionOptimisation {
   bool kept = true;
   std::string reason;
   std::string plan;  // the candidate reported: how its interval feeds were planned
+  Objective objective = Objective::Balanced;  // the rule it was judged by
+  // Every distinct candidate simulated and measured, in the order tried.
+  struct Outcome {
+    std::string plan;
+    bool kept = false;
+    std::string reason;
+    double timeAfter = 0;  // s
+    QualityFigures region, whole;  // after
+  };
+  std::vector<Outcome> candidates;
 };
 
 // How much worse (relative) a figure of the region may get for the new program to be kept.
 constexpr double kWorseningAllowed = 0.02;
 
-// Why the new program is worse than the old one by the rule above, or nothing when it is not.
+// Why the new program is worse than the old one by the rule above (the time allowed depends on
+// r.objective), or nothing when it is not.
 std::optional<std::string> worsening(const RegionOptimisation& r);
 
 // `text` is the program's source, `program` its interpretation, `before` its run on `machine`.

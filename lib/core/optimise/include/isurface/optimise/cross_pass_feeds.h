@@ -2,6 +2,7 @@
 // Interval feeds planned over the surface rather than pass by pass: neighbouring passes over
 // the same stretch of the part get the same speed.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "isurface/base/geometry.h"
@@ -13,6 +14,7 @@ namespace isurface {
 // point and its feed (mm/min).
 struct PassFeeds {
   std::vector<Vec3> points;
+  std::vector<std::uint32_t> sourceLines;  // per point after the first, the old line it stands for
   std::vector<std::size_t> intervalEnd;
   std::vector<double> feeds;
 };

@@ -32,6 +32,9 @@ struct OptimizeOptions {
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
   double feedScale = 1.0;         // share of each interval's planned feed that is programmed
   CrossPassRule crossPass = CrossPassRule::None;
+  // mm/min, indexed by source line (0: none): no interval runs faster than the lowest ceiling
+  // of the old lines it replaces.
+  std::vector<double> lineFeedCeiling;
 };
 
 struct OptimizedPass {
@@ -39,6 +42,7 @@ struct OptimizedPass {
   std::uint32_t newFirstLine = 0, newLastLine = 0;  // where their replacement stands in the output
   std::size_t oldMoves = 0, newMoves = 0;
   std::vector<double> intervalFeeds;                // mm/min, one per constant speed interval
+  std::vector<std::uint32_t> sourceLines;           // per new move, the old line it stands for
 };
 
 struct OptimizeResult {
