@@ -160,9 +160,14 @@ void drawOptimiseDialog(Inspector::State& s) {
     }
   }
   // As `optimize --objective`: what the closed loop chooses among candidates no figure of which is worse.
-  ImGui::Combo("objective", &s.optimiseObjective,
-               "balanced: no figure worse, time not longer\0time: the fastest such candidate\0"
-               "quality: the best figures, up to 5 % longer\0");
+  static const char* const kObjectiveHelp[] = {"no figure worse, time not longer: the first such candidate",
+                                                "no figure worse, time not longer: the fastest such candidate",
+                                                "no figure worse, up to 5 % longer: the best figures"};
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
+  ImGui::Combo("objective", &s.optimiseObjective, "balanced\0time\0quality\0");
+  s.optimiseObjective = std::clamp(s.optimiseObjective, 0, 2);
+  ImGui::SameLine();
+  ImGui::TextDisabled("%s", kObjectiveHelp[s.optimiseObjective]);
   if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
     std::optional<std::pair<Vec3, Vec3>> measured;
     if (boxed) measured = std::make_pair(s.optimiseBox->lower, s.optimiseBox->upper);

@@ -355,10 +355,14 @@ std::string regionSummary(const RegionOptimisation& r) {
   return fmt::format(
       "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
       "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
-      "jerk p99 {:.0f} -> {:.0f} mm/s^3; path moved {:.4f} mm at most ({})",
+      "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; path moved {:.4f} mm at most ({})",
       r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, a.speedFluctuation,
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
-      b.jerkP99, r.maxPathDistance, r.plan) +
+      b.jerkP99,
+      a.hasDeviation && b.hasDeviation
+          ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} um", a.deviationP99, b.deviationP99)
+          : "",
+      r.maxPathDistance, r.plan) +
          (r.kept ? "" : ". Not kept: " + r.reason + "; the program is left as it was");
 }
 
