@@ -227,7 +227,7 @@ const std::vector<Row>& catalogue() {
       {"gcode_number_too_long", "canon {in}/num_long.nc -o {out}/num_long.txt", 2,
        {"num_long.nc:2:4", "Number out of range"}, "num_long.txt"},
       {"gcode_nan_coordinate_expression", "simulate {in}/nan_expr.nc -o {out}/nan_expr.biip", 2,
-       {"nan_expr.nc:2:4", "X word without a number"}, "nan_expr.biip"},
+       {"nan_expr.nc:2:5", "Attempt to divide by zero"}, "nan_expr.biip"},
       {"gcode_unknown_g", "canon {in}/unknown_g.nc -o {out}/unknown_g.txt", 2,
        {"unknown_g.nc:2:1", "Unknown g code used: G77"}, "unknown_g.txt"},
       {"gcode_two_x_words", "canon {in}/two_x.nc -o {out}/two_x.txt", 2,

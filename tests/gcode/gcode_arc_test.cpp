@@ -102,9 +102,23 @@ TEST(gcodeArc, RadiusFormatErrors) {
   EXPECT_EQ(firstError("G2 X10 Y0 F100\n"), "t.ngc:1:1: R, I or J word missing for arc in XY plane");
   EXPECT_EQ(firstError("G18 G2 X10 F100\n"),
             "t.ngc:1:5: R, I or K word missing for arc in XZ plane");
-  EXPECT_EQ(firstError("G2 Z-1 I5 F100\n"), "t.ngc:1:1: X and Y words missing for arc in XY plane");
-  EXPECT_EQ(firstError("G19 G3 X1 J5 F100\n"),
+  // Without an end point, a radius does not say which circle (a centre does: a full circle).
+  EXPECT_EQ(firstError("G2 Z-1 R5 F100\n"), "t.ngc:1:1: X and Y words missing for arc in XY plane");
+  EXPECT_EQ(firstError("G19 G3 X1 R5 F100\n"),
             "t.ngc:1:5: Y and Z words missing for arc in YZ plane");
+}
+
+TEST(gcodeArc, ACentreWithoutAnEndPointIsAFullCircle) {
+  // As rs274 reads `G2 I.5 J.5`: ARC_FEED(1, 0, 1.5, 0.5, -1, 0) from (1, 0).
+  Vec3 start;
+  Move m = lastMove("G0 X1 Y0\nG2 I.5 J.5 F100\n", &start);
+  expectNear(m.end, start);
+  expectNear(m.centre, Vec3(1.5, 0.5, 0));
+  EXPECT_NEAR(ArcGeometry::from(start, m).sweep, -2 * M_PI, 1e-12);
+  // A helix: one turn down to Z-1 about (6, 0).
+  m = lastMove("G0 X1 Y0\nG2 Z-1 I5 F100\n", &start);
+  expectNear(m.end, Vec3(1, 0, -1));
+  expectNear(m.centre, Vec3(6, 0, 0));
 }
 
 TEST(gcodeArc, FullCircleHelixAndTurns) {

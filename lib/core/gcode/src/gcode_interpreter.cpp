@@ -158,14 +158,29 @@ void InterpreterState::run(std::string_view text) {
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
     const char* lineEnd = nl ? static_cast<const char*>(nl) : end;
     ++line_;
+    if (flow_.skipping() && !isOWordLine(p, lineEnd)) {  // inside a construct read past
+      p = lineEnd + 1;
+      continue;
+    }
+    lineStart_ = {p, line_};
+    lineEnd_ = lineEnd;
+    nextLine_ = {lineEnd + 1, line_ + 1};
     runLine(p, lineEnd);
     p = lineEnd + 1;
+    if (jump_) {  // a loop, a call or a return: on from another line
+      p = jump_->at;
+      line_ = jump_->line - 1;
+      jump_.reset();
+    }
     if (sink_) {
       if (moves_.size() > chunkMoves_) deliverMoves(false);
-      if (released_ && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
+      // Once a loop or a call may read lines again, the text stays.
+      if (released_ && !flow_.seen() && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
     }
     if ((line_ & 0xffffu) == 0 && options_.progress) options_.progress((p - begin) / total);
   }
+  if (!ended_)
+    if (const auto open = flow_.unfinished()) result_.errors.push_back(Diagnostic{source_, line_, 0, *open});
   if (sink_) {
     deliverMoves(true);
     // The lines after M2, M30 or a closing '%' still count; read in pieces released behind.
@@ -187,16 +202,20 @@ void InterpreterState::run(std::string_view text) {
 
 void InterpreterState::runLine(const char* begin, const char* end) {
   LexError lexError;
-  if (!lexBlock(begin, end, block_, lexError)) {
+  if (!lexBlock(begin, end, block_, lexError, &parameters_)) {
     errorColumn_ = lexError.column;
     errorMessage_ = std::move(lexError.message);
   } else {
     const ModalState saved = state_;
     const std::size_t movesBefore = moves_.size();
-    if (executeBlock(block_)) return;
+    if (executeBlock(block_)) {
+      if (parameters_.hasStaged()) parameters_.commit();
+      return;
+    }
     state_ = saved;  // a bad block has no effect
     moves_.resize(movesBefore);
   }
+  parameters_.discardStaged();
   result_.errors.push_back(Diagnostic{source_, line_, errorColumn_, std::move(errorMessage_)});
   if (!options_.keepGoing) {
     ended_ = true;
@@ -241,12 +260,18 @@ bool InterpreterState::executeBlock(const Block& block) {
       else if (percentOpened_) ended_ = true;
       seenWords_ = true;
       return true;
-    case BlockKind::OWord:
+    case BlockKind::OWord: {
       seenWords_ = true;
-      if (block.oControlFlow)
-        warnOnce(warnedOWord_, block.oColumn,
-                 "O-word control flow (sub, call, if, while, ...) is not executed: every line is "
-                 "interpreted once, in file order");
+      const ControlFlow::Outcome outcome = flow_.execute(lineStart_, lineEnd_, nextLine_);
+      if (!outcome.ok) return fail(outcome.column, outcome.message);
+      jump_ = outcome.jump;
+      return true;
+    }
+    case BlockKind::SenderCommand:
+      warnOnce(warnedSenderCommand_, 1, "a line for the sender, not G-code (grbl's '$' commands), is skipped");
+      return true;
+    case BlockKind::SenderComment:
+      warnOnce(warnedSenderComment_, 1, "a sender's '#' comment line is skipped");
       return true;
     case BlockKind::Normal: break;
   }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "gcode_parameters.h"
 #include "isurface/base/tolerances.h"
 
 namespace isurface::gcode {
@@ -92,21 +93,6 @@ bool slowParse(const char* start, const char* end, double& value) {
   if (r.ec != std::errc() || r.ptr != buffer + n) return false;
   value = v;
   return true;
-}
-
-bool isControlKeyword(const char* p, const char* end) {
-  static const char* const kKeywords[] = {"sub",   "endsub", "call",   "do",       "while",
-                                          "endwhile", "if",  "elseif", "else",     "endif",
-                                          "break", "continue", "return", "repeat", "endrepeat"};
-  char word[12];
-  std::size_t n = 0;
-  while (p < end && classOf(*p) == kLetter && n < sizeof(word) - 1)
-    word[n++] = static_cast<char>(*p++ | 0x20);
-  if (p < end && classOf(*p) == kLetter) return false;
-  word[n] = 0;
-  for (const char* k : kKeywords)
-    if (std::strcmp(word, k) == 0) return true;
-  return false;
 }
 
 }  // namespace
@@ -215,12 +201,37 @@ bool parseNumber(const char*& p, const char* end, double& value, std::string* me
   return true;
 }
 
-bool lexBlock(const char* begin, const char* end, Block& block, LexError& error) {
+namespace {
+
+// A word's value that is not a plain number: a parameter, an expression or a function, maybe signed.
+bool startsComputedValue(const char* p, const char* end) {
+  while (p < end && (classOf(*p) == kBlank || classOf(*p) == kSign)) ++p;
+  if (p >= end) return false;
+  if (*p == '#' || *p == '[') return true;
+  if (classOf(*p) != kLetter) return false;  // the common case: a number
+  static const char* const kFunctions[] = {"exists", "round", "acos", "asin", "atan", "sqrt", "abs",
+                                           "cos",    "exp",   "fix",  "fup",  "sin",  "tan",  "ln"};
+  for (const char* f : kFunctions) {
+    const std::size_t n = std::strlen(f);
+    if (static_cast<std::size_t>(end - p) < n) continue;
+    bool same = true;
+    for (std::size_t i = 0; i < n && same; ++i) same = (p[i] | 0x20) == f[i];
+    if (same) {
+      const char* q = p + n;
+      while (q < end && classOf(*q) == kBlank) ++q;
+      if (q < end && *q == '[') return true;
+    }
+  }
+  return false;
+}
+
+}  // namespace
+
+bool lexBlock(const char* begin, const char* end, Block& block, LexError& error, Parameters* parameters) {
   block.kind = BlockKind::Normal;
   block.present = 0;
   block.gCount = 0;
   block.mCount = 0;
-  block.oControlFlow = false;
   const char* p = begin;
   while (p < end && classOf(*p) == kBlank) ++p;
   if (p == end) return true;
@@ -230,6 +241,14 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error)
   }
   if (*p == '%') {
     block.kind = BlockKind::Percent;
+    return true;
+  }
+  if (*p == '$') {
+    block.kind = BlockKind::SenderCommand;
+    return true;
+  }
+  if (*p == '#' && (p + 1 == end || !(classOf(p[1]) == kDigit || p[1] == '<' || p[1] == '[' || p[1] == '#'))) {
+    block.kind = BlockKind::SenderComment;
     return true;
   }
   auto fail = [&](const char* at, std::string message) {
@@ -255,23 +274,18 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error)
       if (upper == 'O') {
         if ((block.present & ~letterBit('N')) != 0 || block.gCount || block.mCount)
           return fail(wordStart, "An O-word must start the block");
+        // Its label and what follows are read by the control flow (gcode_control_flow.h).
         block.kind = BlockKind::OWord;
-        block.oColumn = columnOf(begin, wordStart);
-        while (p < end && classOf(*p) == kBlank) ++p;
-        if (p < end && *p == '<') {
-          const void* close = std::memchr(p, '>', static_cast<std::size_t>(end - p));
-          if (!close) return fail(p, "Unclosed O-word name (missing '>')");
-          p = static_cast<const char*>(close) + 1;
-        } else {
-          while (p < end && (classOf(*p) == kDigit || classOf(*p) == kBlank)) ++p;
-        }
-        while (p < end && classOf(*p) == kBlank) ++p;
-        block.oControlFlow = isControlKeyword(p, end);
         return true;
       }
       const char* const numberStart = p;
       double v;
-      if (!parseSimpleNumber(p, end, v) && !parseNumber(p, end, v, &numberMessage)) {
+      if (startsComputedValue(p, end)) {
+        if (!parameters) return fail(p, "Parameters and expressions (#, [ ]) are not supported");
+        const char* const valueStart = p;
+        if (!readRealValue(p, end, *parameters, v, numberMessage)) return fail(valueStart, std::move(numberMessage));
+        if (std::fabs(v) > kMaxMagnitude) return fail(wordStart, fmt::format("{} word value {:g} out of range", upper, v));
+      } else if (!parseSimpleNumber(p, end, v) && !parseNumber(p, end, v, &numberMessage)) {
         if (p == numberStart || numberMessage.find("missing") != std::string::npos)
           return fail(wordStart, fmt::format("Bad number format: {} word without a number", upper));
         return fail(wordStart, std::move(numberMessage));
@@ -317,8 +331,22 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error)
       continue;
     }
     if (c == ';') break;
+    if (c == '#' && parameters) {
+      // A parameter setting: staged, it takes effect after the block.
+      const char* const at = p++;
+      ParameterRef ref;
+      if (!readParameterRef(p, end, *parameters, ref, numberMessage)) return fail(at, std::move(numberMessage));
+      while (p < end && classOf(*p) == kBlank) ++p;
+      if (p >= end || *p != '=') return fail(at, "Equal sign missing in parameter setting");
+      ++p;
+      double v;
+      if (!readRealValue(p, end, *parameters, v, numberMessage)) return fail(at, std::move(numberMessage));
+      parameters->stage(std::move(ref), v);
+      continue;
+    }
     if (c == '#' || c == '[')
-      return fail(p, "Parameters and expressions (#, [ ]) are not supported");
+      return fail(p, parameters ? "An expression must stand where a word's number does (after its letter)"
+                                : "Parameters and expressions (#, [ ]) are not supported");
     if (k == kDigit || k == kDot || k == kSign)
       return fail(p, fmt::format("Number {} without a letter", numberText(p, end)));
     return fail(p, fmt::format("Bad character used: {}", showChar(c)));

@@ -16,7 +16,9 @@ enum class BlockKind : std::uint8_t {
   Normal,   // words (possibly none: a blank or comment-only line)
   Deleted,  // starts with '/': block delete, skipped
   Percent,  // a '%' demarcation line
-  OWord,    // an O-word line (subroutine label or control flow), not executed
+  OWord,    // an O-word line: a program number or control flow (gcode_control_flow.h)
+  SenderCommand,  // a line for the program's sender, not G-code: grbl's `$H`, `$$`, ...
+  SenderComment,  // a sender's `# text` comment line (not a parameter setting)
 };
 
 struct Block {
@@ -31,8 +33,6 @@ struct Block {
   int mCount = 0;
   int m[kMaxMWords];            // M codes in tenths, like G codes
   std::uint32_t mColumn[kMaxMWords];
-  bool oControlFlow = false;    // OWord: sub, call, if, while, ... follows the label
-  std::uint32_t oColumn = 0;
 
   bool has(char upper) const { return (present & letterBit(upper)) != 0; }
   double get(char upper) const { return value[letterIndex(upper)]; }
@@ -45,9 +45,13 @@ struct LexError {
   std::string message;
 };
 
+class Parameters;
+
 // Reads the block in [begin, end) (no line terminator). Returns false and fills `error` when the
-// text is not a valid block. `block` is reset first.
-bool lexBlock(const char* begin, const char* end, Block& block, LexError& error);
+// text is not a valid block. `block` is reset first. Words may take their values from
+// `parameters` and expressions, and the line's parameter assignments are staged in it (see
+// gcode_parameters.h); without parameters, '#' and '[' are refused.
+bool lexBlock(const char* begin, const char* end, Block& block, LexError& error, Parameters* parameters = nullptr);
 
 // Parses an RS274/NGC number starting at `p` (blanks allowed anywhere inside, optional sign,
 // digits with at most one decimal point, no exponent). Advances `p` past it and any trailing

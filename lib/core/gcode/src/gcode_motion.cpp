@@ -105,10 +105,12 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
     return fail(block.col(normalOffset),
                 fmt::format("{} word given for arc in {} plane",
                             static_cast<char>(normalOffset | 0x20), planeName(plane)));
-  if (!block.has(kAxisLetter[ax.u]) && !block.has(kAxisLetter[ax.v]))
+  const bool rFormat = block.has('R');
+  // Without an end point in the plane, a centre-format arc is a full circle back to where it
+  // started (as LinuxCNC draws it); a radius-format one has no circle to choose.
+  if (rFormat && !block.has(kAxisLetter[ax.u]) && !block.has(kAxisLetter[ax.v]))
     return fail(column, fmt::format("{} words missing for arc in {} plane",
                                     planeAxesNames(plane), planeName(plane)));
-  const bool rFormat = block.has('R');
   const bool centreFormat = block.has(kOffsetLetter[ax.u]) || block.has(kOffsetLetter[ax.v]);
   if (rFormat && centreFormat)
     return fail(block.col('R'), "Mixed radius-ijk format for arc");

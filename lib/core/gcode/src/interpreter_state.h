@@ -4,10 +4,13 @@
 // and modal codes), gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp
 // (canned cycles). Not the machine description (isurface/machine/machine.h).
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "gcode_lexer.h"
+#include "gcode_control_flow.h"
+#include "gcode_parameters.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/gcode/gcode_stream.h"
 #include "isurface/base/units.h"
@@ -127,12 +130,18 @@ class InterpreterState {
   bool ended_ = false;            // M2 / M30 / closing '%'
   bool percentOpened_ = false;    // the first line with words was '%'
   bool seenWords_ = false;
-  bool warnedCutterComp_ = false, warnedRotary_ = false, warnedOWord_ = false;
-  bool warnedSpindleMode_ = false;
+  bool warnedCutterComp_ = false, warnedRotary_ = false;
+  bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   // The error of the block being executed.
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
   Block block_;
+  Parameters parameters_;
+  ControlFlow flow_{parameters_};
+  // The line being executed, the one after it, and where an O-word sends execution instead.
+  LinePosition lineStart_, nextLine_;
+  const char* lineEnd_ = nullptr;
+  std::optional<LinePosition> jump_;
   // Streaming (null sink_: every move stays in the program).
   MoveSink* sink_ = nullptr;
   std::size_t chunkMoves_ = 0;

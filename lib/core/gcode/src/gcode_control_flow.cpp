@@ -1,0 +1,342 @@
+// LinuxCNC's O-word control flow (its manual's "O Codes"), executed where the lines stand.
+#include "gcode_control_flow.h"
+
+#include <fmt/format.h>
+
+#include <cctype>
+#include <cmath>
+#include <cstring>
+
+namespace isurface::gcode {
+
+namespace {
+
+bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
+
+const char* skipBlanks(const char* p, const char* end) {
+  while (p < end && isBlank(*p)) ++p;
+  return p;
+}
+
+// Past blanks and an N word: where an O word would stand.
+const char* oWordStart(const char* p, const char* end) {
+  p = skipBlanks(p, end);
+  if (p < end && (*p == 'N' || *p == 'n')) {
+    ++p;
+    while (p < end && (std::isdigit(static_cast<unsigned char>(*p)) || isBlank(*p) || *p == '.')) ++p;
+  }
+  return p;
+}
+
+std::string shown(const std::string& label) { return "o" + label; }
+
+}  // namespace
+
+bool isOWordLine(const char* begin, const char* end) {
+  const char* p = oWordStart(begin, end);
+  return p < end && (*p == 'o' || *p == 'O');
+}
+
+ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, LinePosition next) {
+  // The line: [N..] O label [keyword] [rest].
+  const char* begin = here.at;
+  const char* p = oWordStart(begin, end);
+  OLine o;
+  o.column = static_cast<std::uint32_t>(p - begin + 1);
+  p = skipBlanks(p + 1, end);
+  auto error = [&](std::string message) {
+    Outcome out;
+    out.ok = false;
+    out.column = o.column;
+    out.message = std::move(message);
+    return out;
+  };
+  if (p < end && *p == '<') {
+    const char* close = static_cast<const char*>(std::memchr(p, '>', static_cast<std::size_t>(end - p)));
+    if (!close) return error("Unclosed O-word name (missing '>')");
+    o.label = "<";
+    for (const char* q = p + 1; q < close; ++q)
+      if (!isBlank(*q)) o.label += static_cast<char>(std::tolower(static_cast<unsigned char>(*q)));
+    o.label += ">";
+    p = close + 1;
+  } else {
+    std::string digits;  // without leading zeros: o0100 is o100
+    bool any = false;
+    for (; p < end && (std::isdigit(static_cast<unsigned char>(*p)) || isBlank(*p)); ++p) {
+      if (isBlank(*p)) continue;
+      any = true;
+      if (!(digits.empty() && *p == '0')) digits += *p;
+    }
+    if (!any) return error("O-word without a number or <name>");
+    o.label = digits.empty() ? "0" : digits;
+  }
+  p = skipBlanks(p, end);
+  std::string word;
+  while (p < end && std::isalpha(static_cast<unsigned char>(*p))) word += static_cast<char>(std::tolower(static_cast<unsigned char>(*p++)));
+  static const std::unordered_map<std::string, Keyword> kKeywords = {
+      {"sub", Keyword::Sub},       {"endsub", Keyword::Endsub},     {"call", Keyword::Call},
+      {"do", Keyword::Do},         {"while", Keyword::While},       {"endwhile", Keyword::Endwhile},
+      {"if", Keyword::If},         {"elseif", Keyword::Elseif},     {"else", Keyword::Else},
+      {"endif", Keyword::Endif},   {"break", Keyword::Break},       {"continue", Keyword::Continue},
+      {"return", Keyword::Return}, {"repeat", Keyword::Repeat},     {"endrepeat", Keyword::Endrepeat}};
+  if (word.empty()) return {};  // a program number ("O1000 (name)"): nothing to do
+  const auto found = kKeywords.find(word);
+  if (found == kKeywords.end()) return error(fmt::format("Unknown O-word keyword '{}' after {}", word, shown(o.label)));
+  o.keyword = found->second;
+  o.rest = p;
+  seen_ = true;
+  if (skip_) {
+    bool resume = false;
+    Outcome out = executeSkipping(o, here, end, next, resume);
+    if (!resume) return out;
+  }
+  return run(o, here, end, next);
+}
+
+ControlFlow::Outcome ControlFlow::executeSkipping(const OLine& o, LinePosition here, const char* end, LinePosition next,
+                                                  bool& resume) {
+  (void)here;
+  const Skip& s = *skip_;
+  if (o.label != s.label) {
+    // Looking for a subroutine defined further on: those read past on the way are known too.
+    if (s.target == SkipTo::FindSub && o.keyword == Keyword::Sub) subroutines_[o.label] = next;
+    return {};
+  }
+  switch (s.target) {
+    case SkipTo::EndSub:
+      if (o.keyword == Keyword::Endsub) skip_.reset();
+      return {};
+    case SkipTo::FindSub:
+      if (o.keyword == Keyword::Sub) {
+        subroutines_[o.label] = next;
+        Skip found = std::move(*skip_);
+        skip_.reset();
+        return call(o, end, next, std::move(found.arguments), found.back);
+      }
+      return {};
+    case SkipTo::BranchEnd:
+      if (o.keyword == Keyword::Elseif) {
+        double v = 0;
+        Outcome out;
+        if (!condition(o, end, v, out)) return out;
+        if (v != 0) skip_.reset(), branches_.back().taken = true;
+      } else if (o.keyword == Keyword::Else) {
+        skip_.reset();
+        branches_.back().taken = true;
+      } else if (o.keyword == Keyword::Endif) {
+        skip_.reset();
+        branches_.pop_back();
+      }
+      return {};
+    case SkipTo::EndIf:
+      if (o.keyword == Keyword::Endif) skip_.reset(), branches_.pop_back();
+      return {};
+    case SkipTo::LoopEnd:
+    case SkipTo::LoopContinue:
+      if (o.keyword == Keyword::Endwhile || o.keyword == Keyword::Endrepeat || o.keyword == Keyword::While) {
+        resume = s.target == SkipTo::LoopContinue;
+        skip_.reset();
+      }
+      return {};
+  }
+  return {};
+}
+
+bool ControlFlow::condition(const OLine& o, const char* end, double& value, Outcome& outcome) const {
+  const char* p = skipBlanks(o.rest, end);
+  std::string message;
+  if (p >= end || *p != '[') message = fmt::format("{} needs a condition in [ ]", shown(o.label));
+  else if (readRealValue(p, end, parameters_, value, message)) return true;
+  outcome.ok = false;
+  outcome.column = o.column;
+  outcome.message = std::move(message);
+  return false;
+}
+
+ControlFlow::Loop* ControlFlow::findLoop(const std::string& label) {
+  for (auto it = loops_.rbegin(); it != loops_.rend(); ++it)
+    if (it->label == label) return &*it;
+  return nullptr;
+}
+
+void ControlFlow::beginLoop(const std::string& label, Keyword kind, LinePosition top, double remaining) {
+  Loop loop{label, kind, top, remaining};
+  loop.branches = branches_.size();
+  loops_.push_back(std::move(loop));
+}
+
+ControlFlow::Outcome ControlFlow::call(const OLine& o, const char* end, LinePosition body, std::vector<double> arguments,
+                                       LinePosition back) {
+  (void)end;
+  if (frames_.size() >= kMaxCallDepth) {
+    Outcome out;
+    out.ok = false;
+    out.column = o.column;
+    out.message = fmt::format("Subroutine calls nested deeper than {} (a recursion that never ends?) calling {}",
+                              kMaxCallDepth, shown(o.label));
+    return out;
+  }
+  frames_.push_back(Frame{o.label, back, loops_.size(), branches_.size()});
+  parameters_.pushScope();
+  for (std::size_t i = 0; i < arguments.size(); ++i) parameters_.set(static_cast<int>(i + 1), arguments[i]);
+  Outcome out;
+  out.jump = body;
+  return out;
+}
+
+ControlFlow::Outcome ControlFlow::loopEnd(const OLine& o, LinePosition here, const char* end) {
+  (void)here;
+  (void)end;
+  Outcome out;
+  Loop& loop = loops_.back();
+  if (++loop.iterations > kMaxLoopIterations) {
+    out.ok = false;
+    out.column = o.column;
+    out.message = fmt::format("{} has run {} times: a loop that never ends?", shown(o.label), kMaxLoopIterations);
+    return out;
+  }
+  out.jump = loop.top;
+  return out;
+}
+
+ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const char* end, LinePosition next) {
+  Outcome out;
+  auto error = [&](std::string message) {
+    out.ok = false;
+    out.column = o.column;
+    out.message = std::move(message);
+    return out;
+  };
+  const bool loopOnTop = !loops_.empty() && loops_.back().label == o.label;
+  const bool branchOnTop = !branches_.empty() && branches_.back().label == o.label;
+  double v = 0;
+  switch (o.keyword) {
+    case Keyword::None: return out;
+    case Keyword::Sub:
+      subroutines_[o.label] = next;
+      skip_ = Skip{SkipTo::EndSub, o.label, here.line, {}, {}};
+      return out;
+    case Keyword::Endsub:
+    case Keyword::Return: {
+      if (frames_.empty() || frames_.back().label != o.label)
+        return error(fmt::format("{} {} outside a call of it", shown(o.label),
+                                 o.keyword == Keyword::Return ? "return" : "endsub"));
+      const char* p = skipBlanks(o.rest, end);
+      if (p < end && *p == '[') {
+        double value = 0;
+        std::string message;
+        if (!readRealValue(p, end, parameters_, value, message)) return error(std::move(message));
+        parameters_.set("_value", value);
+        parameters_.set("_value_returned", 1.0);
+      }
+      const Frame frame = frames_.back();
+      frames_.pop_back();
+      loops_.resize(frame.loops);
+      branches_.resize(frame.branches);
+      parameters_.popScope();
+      out.jump = frame.back;
+      return out;
+    }
+    case Keyword::Call: {
+      std::vector<double> arguments;
+      const char* p = skipBlanks(o.rest, end);
+      while (p < end && *p != '(' && *p != ';') {
+        double value = 0;
+        std::string message;
+        if (!readRealValue(p, end, parameters_, value, message)) return error(std::move(message));
+        if (arguments.size() == static_cast<std::size_t>(Parameters::kCallParameters))
+          return error(fmt::format("More than {} arguments in a call of {}", Parameters::kCallParameters, shown(o.label)));
+        arguments.push_back(value);
+      }
+      const auto sub = subroutines_.find(o.label);
+      if (sub != subroutines_.end()) return call(o, end, sub->second, std::move(arguments), next);
+      skip_ = Skip{SkipTo::FindSub, o.label, here.line, std::move(arguments), next};
+      return out;
+    }
+    case Keyword::Do:
+      beginLoop(o.label, Keyword::Do, next);
+      return out;
+    case Keyword::While: {
+      if (!condition(o, end, v, out)) return out;
+      if (loopOnTop && loops_.back().kind == Keyword::Do) {  // the end of a do loop
+        if (v != 0) return loopEnd(o, here, end);
+        loops_.pop_back();
+        return out;
+      }
+      const bool again = loopOnTop && loops_.back().kind == Keyword::While && loops_.back().top.line == here.line;
+      if (v != 0) {
+        if (!again) beginLoop(o.label, Keyword::While, here);
+        return out;
+      }
+      if (again) loops_.pop_back();
+      skip_ = Skip{SkipTo::LoopEnd, o.label, here.line, {}, {}};
+      return out;
+    }
+    case Keyword::Endwhile:
+      if (!loopOnTop || loops_.back().kind != Keyword::While) return error(fmt::format("{} endwhile without its while", shown(o.label)));
+      return loopEnd(o, here, end);
+    case Keyword::Repeat: {
+      if (!condition(o, end, v, out)) return out;
+      const double times = std::round(v);
+      if (times >= 1) beginLoop(o.label, Keyword::Repeat, next, times);
+      else skip_ = Skip{SkipTo::LoopEnd, o.label, here.line, {}, {}};
+      return out;
+    }
+    case Keyword::Endrepeat:
+      if (!loopOnTop || loops_.back().kind != Keyword::Repeat)
+        return error(fmt::format("{} endrepeat without its repeat", shown(o.label)));
+      if (--loops_.back().remaining >= 1) return loopEnd(o, here, end);
+      loops_.pop_back();
+      return out;
+    case Keyword::If:
+      if (!condition(o, end, v, out)) return out;
+      branches_.push_back(Branch{o.label, v != 0});
+      if (v == 0) skip_ = Skip{SkipTo::BranchEnd, o.label, here.line, {}, {}};
+      return out;
+    case Keyword::Elseif:
+    case Keyword::Else:
+      // Reached from the branch that ran: what follows up to the endif is not for this pass.
+      if (!branchOnTop) return error(fmt::format("{} {} without its if", shown(o.label), o.keyword == Keyword::Else ? "else" : "elseif"));
+      skip_ = Skip{SkipTo::EndIf, o.label, here.line, {}, {}};
+      return out;
+    case Keyword::Endif:
+      if (!branchOnTop) return error(fmt::format("{} endif without its if", shown(o.label)));
+      branches_.pop_back();
+      return out;
+    case Keyword::Break:
+    case Keyword::Continue: {
+      Loop* loop = findLoop(o.label);
+      if (!loop) return error(fmt::format("{} {} outside a loop of that name", shown(o.label),
+                                          o.keyword == Keyword::Break ? "break" : "continue"));
+      // Loops and ifs opened inside this one end here.
+      branches_.resize(loop->branches);
+      loops_.resize(static_cast<std::size_t>(loop - loops_.data()) + 1);
+      if (o.keyword == Keyword::Break) loops_.pop_back();
+      skip_ = Skip{o.keyword == Keyword::Break ? SkipTo::LoopEnd : SkipTo::LoopContinue, o.label, here.line, {}, {}};
+      return out;
+    }
+  }
+  return out;
+}
+
+std::optional<std::string> ControlFlow::unfinished() const {
+  if (skip_) {
+    const std::string o = shown(skip_->label);
+    switch (skip_->target) {
+      case SkipTo::EndSub: return fmt::format("{} sub (line {}) has no endsub", o, skip_->fromLine);
+      case SkipTo::FindSub:
+        return fmt::format("{} is called (line {}) but defined nowhere in the file (subroutine files are not searched)",
+                           o, skip_->fromLine);
+      case SkipTo::BranchEnd:
+      case SkipTo::EndIf: return fmt::format("{} (line {}) has no endif", o, skip_->fromLine);
+      case SkipTo::LoopEnd:
+      case SkipTo::LoopContinue: return fmt::format("{} (line {}): the end of its loop is missing", o, skip_->fromLine);
+    }
+  }
+  if (!branches_.empty()) return fmt::format("{} if has no endif", shown(branches_.back().label));
+  if (!loops_.empty()) return fmt::format("{} loop has no end", shown(loops_.back().label));
+  if (!frames_.empty()) return fmt::format("{} was called and never returned", shown(frames_.back().label));
+  return std::nullopt;
+}
+
+}  // namespace isurface::gcode

@@ -1,0 +1,107 @@
+#pragma once
+// LinuxCNC's O-word control flow: subroutines (sub, endsub, return, call with arguments in
+// #1..#30 local to the call, recursion), if/elseif/else/endif, while/endwhile, do/while,
+// repeat/endrepeat, break and continue. Lines are executed where they stand in the file, so
+// every move keeps the physical line that made it; a construct's lines are found by reading
+// on (skipping) as LinuxCNC does, and loops and calls jump back to lines already read.
+// Private to the gcode module.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "gcode_parameters.h"
+
+namespace isurface::gcode {
+
+// The start of a line in the text and its 1-based number.
+struct LinePosition {
+  const char* at = nullptr;
+  std::uint32_t line = 0;
+};
+
+// True when [begin, end) is an O-word line (after blanks, a block delete '/' and an N word).
+bool isOWordLine(const char* begin, const char* end);
+
+class ControlFlow {
+ public:
+  // A subroutine may call others (and itself) this deep; a loop may run this many times.
+  static constexpr std::size_t kMaxCallDepth = 200;
+  static constexpr std::uint64_t kMaxLoopIterations = 1000000;
+
+  explicit ControlFlow(Parameters& parameters) : parameters_(parameters) {}
+
+  // Lines are being read past (a subroutine's body at its definition, a branch not taken, a
+  // loop left): only O-word lines matter until the construct's end.
+  bool skipping() const { return skip_.has_value(); }
+  // Some control flow was met: lines already read may be read again.
+  bool seen() const { return seen_; }
+
+  struct Outcome {
+    bool ok = true;
+    std::uint32_t column = 0;
+    std::string message;
+    std::optional<LinePosition> jump;  // where execution goes on, when not the next line
+  };
+  // Executes the O-word line `here` ending at `end`; `next` is the line after it.
+  Outcome execute(LinePosition here, const char* end, LinePosition next);
+
+  // At the end of the text: what is left open (an if without its endif, a subroutine called but
+  // never defined, ...), or nothing.
+  std::optional<std::string> unfinished() const;
+
+ private:
+  enum class Keyword {
+    None, Sub, Endsub, Call, Do, While, Endwhile, If, Elseif, Else, Endif, Break, Continue, Return, Repeat, Endrepeat
+  };
+  struct OLine {
+    std::string label;  // "123" or "<name>"
+    Keyword keyword = Keyword::None;
+    const char* rest = nullptr;  // what follows the keyword
+    std::uint32_t column = 0;
+  };
+  struct Loop {
+    std::string label;
+    Keyword kind;          // While, Do or Repeat
+    LinePosition top;      // While: its own line (re-evaluated); Do and Repeat: the line after
+    double remaining = 0;  // Repeat
+    std::uint64_t iterations = 0;
+    std::size_t branches = 0;  // ifs open when it began: those opened inside close with it
+  };
+  struct Branch {
+    std::string label;
+    bool taken = false;
+  };
+  struct Frame {
+    std::string label;
+    LinePosition back;  // the line after the call
+    std::size_t loops = 0, branches = 0;
+  };
+  enum class SkipTo { EndSub, BranchEnd, EndIf, LoopEnd, LoopContinue, FindSub };
+  struct Skip {
+    SkipTo target;
+    std::string label;
+    std::uint32_t fromLine = 0;
+    std::vector<double> arguments;  // FindSub: the call's
+    LinePosition back;              // FindSub: the line after the call
+  };
+
+  Outcome executeSkipping(const OLine& o, LinePosition here, const char* end, LinePosition next, bool& resume);
+  Outcome run(const OLine& o, LinePosition here, const char* end, LinePosition next);
+  Outcome call(const OLine& o, const char* end, LinePosition body, std::vector<double> arguments, LinePosition back);
+  Outcome loopEnd(const OLine& o, LinePosition here, const char* end);
+  bool condition(const OLine& o, const char* end, double& value, Outcome& outcome) const;
+  Loop* findLoop(const std::string& label);
+  void beginLoop(const std::string& label, Keyword kind, LinePosition top, double remaining = 0);
+
+  Parameters& parameters_;
+  bool seen_ = false;
+  std::optional<Skip> skip_;
+  std::unordered_map<std::string, LinePosition> subroutines_;  // label -> the line after `sub`
+  std::vector<Loop> loops_;
+  std::vector<Branch> branches_;
+  std::vector<Frame> frames_;
+};
+
+}  // namespace isurface::gcode
