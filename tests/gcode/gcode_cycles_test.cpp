@@ -1,4 +1,5 @@
-// Canned drilling cycles G81 G82 G83 G73 expanded into moves, with G98/G99 retracts.
+// Canned cycles expanded into moves, with G98/G99 retracts: drilling G81 G82 G83 G73, tapping
+// G84 G74, boring G85 G86 G88 G89 (all of them also against rs274: tests/data/rs274/cycles.ngc).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -65,6 +66,38 @@ TEST(gcodeCycles, G82Dwells) {
                {'R', 5, 6, 10}, {'R', 5, 6, 2}, {'F', 5, 6, -3}, {'D', 5, 6, -3}, {'R', 5, 6, 10}});
   EXPECT_DOUBLE_EQ(r.program.moves[4].dwellSeconds(), 0.5);
   EXPECT_DOUBLE_EQ(r.program.moves[9].dwellSeconds(), 0.5);  // P is kept for the next holes
+}
+
+TEST(gcodeCycles, TappingFeedsInStopsAndFeedsOut) {
+  // As rs274 runs G84: feed to Z, reverse the spindle (the motion stops there), feed back out
+  // to the retract level (not to R first).
+  const InterpretResult r = run("G0 X0 Y0 Z10\nS500 M3\nM29 S175\nG98 G84 X5 Y5 Z-3 R2 F100\n");
+  expectMoves(r, 1, {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'F', 5, 5, 10}});
+  EXPECT_NE(r.program.moves[3].flags & kStopAfter, 0);
+  const InterpretResult left = run("G0 X0 Y0 Z10\nS500 M4\nG99 G74 X5 Y5 Z-3 R2 P0.2 F100\n");
+  expectMoves(left, 1, {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}, {'F', 5, 5, 2}});
+}
+
+TEST(gcodeCycles, BoringCycles) {
+  expectMoves(run("G0 X0 Y0 Z10\nG98 G85 X5 Y5 Z-3 R2 F100\n"), 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'F', 5, 5, 2}, {'R', 5, 5, 10}});
+  expectMoves(run("G0 X0 Y0 Z10\nG98 G86 X5 Y5 Z-3 R2 P1 F100\n"), 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}, {'R', 5, 5, 10}});
+  expectMoves(run("G0 X0 Y0 Z10\nG98 G89 X5 Y5 Z-3 R2 P1 F100\n"), 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}, {'F', 5, 5, 10}});
+  // G88 stops at the bottom for the operator to retract by hand.
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG98 G88 X5 Y5 Z-3 R2 P1 F100\n");
+  expectMoves(r, 1, {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}});
+  EXPECT_NE(r.program.moves.back().flags & kStopAfter, 0);
+  EXPECT_EQ(firstError("G0 Z10\nG86 X5 Y5 Z-3 R2 F100\n"), "t.ngc:2:1: Dwell time P word missing with G86");
+}
+
+TEST(gcodeCycles, FanucLookAheadIsAcceptedOnce) {
+  const InterpretResult r = run("G08 P1\nG0 X1\nG08 P0\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.warnings.size(), 1u);
+  EXPECT_NE(r.program.warnings[0].message.find("look-ahead"), std::string::npos);
+  EXPECT_EQ(firstError("G8 X1\n"), "t.ngc:1:1: G8 is not supported");  // LinuxCNC's lathe radius mode
 }
 
 TEST(gcodeCycles, G83PecksBackToR) {

@@ -1,5 +1,6 @@
-// Canned drilling cycles G73, G81, G82, G83 in the XY plane, expanded into rapid and feed moves
-// the way RS274/NGC (LinuxCNC) runs them.
+// Canned cycles in the XY plane, expanded into rapid and feed moves the way RS274/NGC (LinuxCNC's
+// rs274) runs them: drilling G81 G82, pecking G73 G83, tapping G84 (right hand) and G74 (left
+// hand), boring G85 G86 G88 G89.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -60,11 +61,13 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
       return fail(block.has('Q') ? block.col('Q') : column, "Negative or zero Q value used");
   }
   double dwellSeconds = state_.cycleP;
-  if (motion == kG82) {
-    if (first && !block.has('P'))
-      return fail(column, "Dwell time P word missing with G82");
+  const bool dwellNeeded = motion == kG82 || motion == kG86 || motion == kG88 || motion == kG89;
+  if (dwellNeeded || motion == kG84 || motion == kG74) {
+    if (dwellNeeded && first && !block.has('P'))
+      return fail(column, fmt::format("Dwell time P word missing with {}", name));
     if (block.has('P')) dwellSeconds = block.get('P');
-    if (dwellSeconds < 0) return fail(block.col('P'), "Negative dwell time P word used with G82");
+    else if (first) dwellSeconds = 0;  // tapping: no dwell unless given
+    if (dwellSeconds < 0) return fail(block.col('P'), fmt::format("Negative dwell time P word used with {}", name));
   }
 
   const Vec3 start = state_.position;
@@ -137,7 +140,33 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
         feedTo(x, y, bottom);
         rapid(x, y, clear);
         break;
+      case kG84:  // tapping: feed in, reverse the spindle (the motion stops), feed out
+      case kG74:
+      case kG89:  // boring: feed in, dwell, feed out
+        feedTo(x, y, bottom);
+        moves_.back().flags |= kStopAfter;
+        if (dwellSeconds > 0) emit(MoveKind::Dwell, state_.position, static_cast<float>(dwellSeconds), kExactStop);
+        feedTo(x, y, clear);
+        break;
+      case kG85:  // boring: feed in, feed out to R
+        feedTo(x, y, bottom);
+        feedTo(x, y, r);
+        rapid(x, y, clear);  // rs274 makes this move even when it has no length (G99)
+        break;
+      case kG86:  // boring: feed in, dwell, stop the spindle, rapid out
+        feedTo(x, y, bottom);
+        emit(MoveKind::Dwell, state_.position, static_cast<float>(dwellSeconds), kExactStop | kStopAfter);
+        rapid(x, y, clear);
+        break;
+      case kG88:  // boring: feed in, dwell, stop for the operator to retract by hand
+        feedTo(x, y, bottom);
+        emit(MoveKind::Dwell, state_.position, static_cast<float>(dwellSeconds), kExactStop | kStopAfter);
+        break;
       default: break;
+    }
+    if (motion == kG88) {
+      oldZ = bottom;  // the program goes on from where the hand retract is taken to start
+      continue;
     }
     oldZ = clear;
   }

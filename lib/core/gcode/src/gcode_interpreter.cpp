@@ -36,7 +36,8 @@ int groupOf(int code) {
   switch (code) {
     case kG4: case kG10: case kG28: case kG28_1: case kG30: case kG30_1: case kG53:
       return kGroupNonModal;
-    case kG0: case kG1: case kG2: case kG3: case kG73: case kG80: case kG81: case kG82: case kG83:
+    case kG0: case kG1: case kG2: case kG3: case kG73: case kG74: case kG80: case kG81: case kG82: case kG83:
+    case kG84: case kG85: case kG86: case kG88: case kG89:
       return kGroupMotion;
     case kG17: case kG18: case kG19: return kGroupPlane;
     case kG90: case kG91: return kGroupDistance;
@@ -53,7 +54,7 @@ int groupOf(int code) {
     // Known RS274/NGC (LinuxCNC) codes that this interpreter does not model.
     case 50: case 51: case 52: case 53: case 70: case 80: case 171: case 181: case 191:
     case 330: case 331: case 382: case 383: case 384: case 385: case 432: case 760:
-    case 840: case 850: case 860: case 870: case 880: case 890: case 920: case 921: case 922:
+    case 870: case 920: case 921: case 922:
     case 923: case 950: case 700: case 710: case 711: case 720: case 721:
       return -2;
     default: return -1;
@@ -230,6 +231,13 @@ bool InterpreterState::groupCodes(const Block& block, GroupedCodes& groups) {
   std::fill(std::begin(groups.code), std::end(groups.code), -1);
   for (int i = 0; i < block.gCount; ++i) {
     const int code = block.g[i];
+    if (code == kG8 && block.has('P')) {
+      // A Fanuc or Haas control's "G08 P1" / "G08 P0": high-speed look-ahead on or off. (In
+      // LinuxCNC, G8 without P is a lathe's radius mode, not modelled here.)
+      warnOnce(warnedLookAhead_, block.gColumn[i],
+               "G08 P (high-speed look-ahead of Fanuc and Haas controls) does not change the path: ignored");
+      continue;
+    }
     const int group = groupOf(code);
     if (group == -1)
       return fail(block.gColumn[i], fmt::format("Unknown g code used: G{}", block.gValue[i]));

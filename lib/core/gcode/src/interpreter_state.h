@@ -19,13 +19,14 @@ namespace isurface::gcode {
 
 // G codes in tenths.
 enum GCode : int {
-  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG10 = 100,
+  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG8 = 80, kG10 = 100,
   kG17 = 170, kG18 = 180, kG19 = 190, kG20 = 200, kG21 = 210,
   kG28 = 280, kG28_1 = 281, kG30 = 300, kG30_1 = 301,
   kG40 = 400, kG41 = 410, kG41_1 = 411, kG42 = 420, kG42_1 = 421,
   kG43 = 430, kG43_1 = 431, kG49 = 490, kG53 = 530,
   kG61 = 610, kG61_1 = 611, kG64 = 640,
-  kG73 = 730, kG80 = 800, kG81 = 810, kG82 = 820, kG83 = 830,
+  kG73 = 730, kG74 = 740, kG80 = 800, kG81 = 810, kG82 = 820, kG83 = 830, kG84 = 840, kG85 = 850,
+  kG86 = 860, kG88 = 880, kG89 = 890,
   kG90 = 900, kG90_1 = 901, kG91 = 910, kG91_1 = 911,
   kG93 = 930, kG94 = 940, kG96 = 960, kG97 = 970, kG98 = 980, kG99 = 990,
 };
@@ -33,7 +34,7 @@ enum GCode : int {
 // Modal groups of the G codes understood here.
 enum Group : int {
   kGroupNonModal = 0,  // G4 G10 G28 G28.1 G30 G30.1 G53
-  kGroupMotion,        // G0 G1 G2 G3 G73 G80 G81 G82 G83
+  kGroupMotion,        // G0 G1 G2 G3 G73 G74 G80 G81-G86 G88 G89
   kGroupPlane,         // G17 G18 G19
   kGroupDistance,      // G90 G91
   kGroupArcDistance,   // G90.1 G91.1
@@ -49,7 +50,11 @@ enum Group : int {
 };
 
 inline bool isCycle(int motion) {
-  return motion == kG73 || motion == kG81 || motion == kG82 || motion == kG83;
+  switch (motion) {
+    case kG73: case kG74: case kG81: case kG82: case kG83: case kG84: case kG85: case kG86: case kG88: case kG89:
+      return true;
+    default: return false;
+  }
 }
 
 // Everything that persists from block to block. Small, so a block can be undone by copying.
@@ -132,6 +137,7 @@ class InterpreterState {
   bool seenWords_ = false;
   bool warnedCutterComp_ = false, warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
+  bool warnedLookAhead_ = false;
   // The error of the block being executed.
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
