@@ -10,7 +10,9 @@
 #include <vector>
 
 #include "command.h"
+#include "inputs.h"
 #include "isurface/io/canon_writer.h"
+#include "isurface/workflow/run_inputs.h"
 #include "progress.h"
 
 namespace isurface::cli {
@@ -19,7 +21,7 @@ namespace {
 
 std::function<int()> setup(CLI::App& sub) {
   struct Args {
-    std::string input, output;
+    std::string input, output, machine;
     bool keepGoing = false;
   };
   auto args = std::make_shared<Args>();
@@ -27,10 +29,12 @@ std::function<int()> setup(CLI::App& sub) {
   sub.add_flag("--keep-going", args->keepGoing,
                "skip bad blocks, report every error and print all moves that could be made");
   sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout");
+  sub.add_option("--machine", args->machine,
+                 "machine description (JSON) whose control reads the program: its dialect and power-on units");
   sub.footer("Output: one line per move, `LINE G0|G1 X Y Z F`, `LINE G2|G3 X Y Z CX CY CZ PLANE "
              "TURNS F` or `LINE G4 P<seconds>`, in workpiece mm and mm/min (docs/canon-format.md).");
   return [args]() -> int {
-    InterpreterOptions options;
+    InterpreterOptions options = interpreterOptions(loadMachineOption(args->machine));
     options.keepGoing = args->keepGoing;
     ProgressLine progress("canon");
     options.progress = [&progress](double f) { progress.update(f); };

@@ -5,6 +5,7 @@
 #include "command.h"
 #include "inputs.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/workflow/run_inputs.h"
 #include "isurface/workflow/simulation_dump.h"
 #include "progress.h"
 
@@ -19,7 +20,7 @@ struct SimulateOptions {
 int runSimulate(const SimulateOptions& o) {
   const Machine machine = loadMachineOption(o.machine);
   ProgressLine progress("simulating " + o.input);
-  InterpreterOptions options;
+  InterpreterOptions options = interpreterOptions(machine);
   options.keepGoing = o.keepGoing;
   options.progress = [&](double f) { progress.update(f); };
   // Interpreted, planned and interpolated as the file is read: memory does not grow with it.

@@ -57,7 +57,7 @@ TEST(gcodeCanonCli, InchFeedsAndTurns) {
 }
 
 TEST(gcodeCanonCli, ErrorsExitWithTwo) {
-  const std::string path = writeScratch("bad.ngc", "G0 X1\nG0 X2 X3\nG0 X4\nG1 X5\nG0 X6\n");
+  const std::string path = writeScratch("bad.ngc", "G21 G0 X1\nG0 X2 X3\nG0 X4\nG1 X5\nG0 X6\n");
   test::CommandResult r = test::runCli("canon " + path);
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.out, "1 G0 1.0000 0.0000 0.0000 0.0000\n");

@@ -93,7 +93,7 @@ TEST(gcodeCycles, BoringCycles) {
 }
 
 TEST(gcodeCycles, FanucLookAheadIsAcceptedOnce) {
-  const InterpretResult r = run("G08 P1\nG0 X1\nG08 P0\n");
+  const InterpretResult r = run("G08 P1\nG21 G0 X1\nG08 P0\n");
   ASSERT_TRUE(r.ok()) << r.errors[0].str();
   ASSERT_EQ(r.program.warnings.size(), 1u);
   EXPECT_NE(r.program.warnings[0].message.find("look-ahead"), std::string::npos);

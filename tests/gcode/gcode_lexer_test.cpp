@@ -145,12 +145,12 @@ TEST(gcodeLexer, BadWordsAndCharacters) {
 
 TEST(gcodeLexer, OWordLines) {
   // A program number is a label and nothing more.
-  InterpretResult r = run("O1000 (program number)\nG0 X1\n");
+  InterpretResult r = run("O1000 (program number)\nG21 G0 X1\n");
   ASSERT_TRUE(r.ok());
   EXPECT_EQ(r.program.moves.size(), 1u);
   EXPECT_TRUE(r.program.warnings.empty());
   // Control flow is executed (gcode_control_flow_test.cpp): a subroutine never called does not run.
-  r = run("o<square> sub\nG0 X1\no<square> endsub\nO100 if [1 GT 0]\nG0 X2\nO100 endif\n");
+  r = run("G21\no<square> sub\nG0 X1\no<square> endsub\nO100 if [1 GT 0]\nG0 X2\nO100 endif\n");
   ASSERT_TRUE(r.ok()) << r.errors[0].str();
   ASSERT_EQ(r.program.moves.size(), 1u);
   EXPECT_EQ(r.program.moves[0].end.x(), 2.0);

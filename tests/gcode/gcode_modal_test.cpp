@@ -169,12 +169,12 @@ TEST(gcodeModal, HomeMoves) {
 }
 
 TEST(gcodeModal, CutterCompensationIsRecordedWithOneWarning) {
-  const InterpretResult r = runOk("G41 D1 G1 X1 F100\nG42 X2\nG40 X3\nG41.1 D2 X4\n");
+  const InterpretResult r = runOk("G21 G41 D1 G1 X1 F100\nG42 X2\nG40 X3\nG41.1 D2 X4\n");
   ASSERT_EQ(r.program.moves.size(), 4u);
   EXPECT_EQ(r.program.moves[1].end, Vec3(2, 0, 0));
   ASSERT_EQ(r.program.warnings.size(), 1u);
   EXPECT_EQ(r.program.warnings[0].line, 1u);
-  EXPECT_EQ(r.program.warnings[0].column, 1u);
+  EXPECT_EQ(r.program.warnings[0].column, 5u);
   EXPECT_NE(r.program.warnings[0].message.find("G41/G42"), std::string::npos);
 }
 
@@ -208,15 +208,44 @@ TEST(gcodeModal, ZeroLengthMovesAreKept) {
 }
 
 TEST(gcodeModal, RotaryWordsWarnOnce) {
-  const InterpretResult r = runOk("G0 X1 A90\nG0 B10 C5\n");
+  const InterpretResult r = runOk("G21 G0 X1 A90\nG0 B10 C5\n");
   ASSERT_EQ(r.program.moves.size(), 2u);
   EXPECT_EQ(r.program.moves[1].end, Vec3(1, 0, 0));
   ASSERT_EQ(r.program.warnings.size(), 1u);
-  EXPECT_EQ(r.program.warnings[0].column, 7u);
+  EXPECT_EQ(r.program.warnings[0].column, 11u);
 }
 
 TEST(gcodeModal, WordsWithoutACodeToUseThem) {
   EXPECT_EQ(firstError("G1 X1 I2 F100\n"), "t.ngc:1:7: i word with no G2 or G3 to use it");
   EXPECT_EQ(firstError("G0 X1 R2\n"), "t.ngc:1:7: R word with no g code that uses it");
   EXPECT_EQ(firstError("G1 F-1\n"), "t.ngc:1:4: Negative F word used");
+}
+
+TEST(gcodeModal, UnitsComeFromTheControlWhenTheProgramDoesNotSay) {
+  // A Haas program that relies on the control's inch default, as its header says.
+  InterpreterOptions inch;
+  inch.inchAtPowerOn = true;
+  InterpretResult r = run("(UNITS: INCH, SET AT THE CONTROL)\nG0 X1 Y2\nG1 Z-.5 F10.\n", inch);
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  EXPECT_EQ(r.program.moves[0].end, Vec3(25.4, 50.8, 0));
+  EXPECT_FLOAT_EQ(r.program.moves[1].feed, 254.0f);
+  ASSERT_EQ(r.program.warnings.size(), 1u);
+  EXPECT_EQ(r.program.warnings[0].line, 2u);
+  EXPECT_NE(r.program.warnings[0].message.find("power-on units (inch, G20)"), std::string::npos);
+  // A program that says its units gets no warning and its own units.
+  r = run("G21\nG0 X1\n", inch);
+  EXPECT_TRUE(r.program.warnings.empty());
+  EXPECT_EQ(r.program.moves[0].end, Vec3(1, 0, 0));
+}
+
+TEST(gcodeModal, FanucCyclesLeaveG0ToG3AsTheyWere) {
+  const std::string text = "G21 G0 X0 Y0 Z10\nG99 G81 X5 Y5 Z-3 R2 F100\nG80\nZ20\nX1\n";
+  EXPECT_EQ(firstError(text), "t.ngc:4:1: Cannot use axis values without a g code that uses them");  // RS274/NGC
+  InterpreterOptions fanuc;
+  fanuc.fanuc = true;
+  const InterpretResult r = run(text, fanuc);
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_GE(r.program.moves.size(), 2u);
+  EXPECT_EQ(r.program.moves[r.program.moves.size() - 2].kind, MoveKind::Rapid);  // G0 from line 1 goes on
+  EXPECT_EQ(r.program.moves.back().end, Vec3(1, 5, 20));
 }

@@ -96,3 +96,20 @@ TEST(runInputs, AProgramAloneIsSimulatedWithTheGivenMachine) {
   // Machining time is first sample to last: n - 1 cycles.
   EXPECT_DOUBLE_EQ(machiningTime(*run.samples), double(run.samples->size() - 1) * 0.002);
 }
+
+TEST(runInputs, AHaasProgramReadsAsItsControlReadsIt) {
+  // Mastercam output for a Haas control: inch by the control's default (its G20 comes later in
+  // some of its programs), Fanuc's G80 that leaves G0-G3 in effect.
+  const std::string program = realdataPath("nist_827-9999-904_OP1.NC");
+  if (!fileExists(program)) GTEST_SKIP() << program << " is missing";
+  EXPECT_THROW(readProgram(program), InputError);  // RS274/NGC: axis words after G80
+  std::vector<std::string> warnings;
+  const Program p = readProgram(program, {}, &warnings, loadMachine(sourcePath("resources/machines/fanuc-inch.json")));
+  EXPECT_GT(p.moves.size(), 1000u);
+  // N106 G0 G90 G54 X5.787 Y-3.4579: inches, in mm.
+  EXPECT_NEAR(p.moves[2].end.x(), 5.787 * 25.4, 1e-9);
+  EXPECT_NEAR(p.moves[2].end.y(), -3.4579 * 25.4, 1e-9);
+  bool lookAhead = false;
+  for (const std::string& w : warnings) lookAhead |= w.find("G08 P") != std::string::npos;
+  EXPECT_TRUE(lookAhead);
+}

@@ -101,8 +101,18 @@ std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths) {
   return runs;
 }
 
-Program readProgram(const std::string& path, const ProgressCallback& progress, std::vector<std::string>* warnings) {
+InterpreterOptions interpreterOptions(const Machine& machine) {
   InterpreterOptions options;
+  options.inchAtPowerOn = machine.control.inch;
+  options.fanuc = machine.control.fanuc;
+  options.g28Position = machine.g28Position;
+  options.g30Position = machine.g30Position;
+  return options;
+}
+
+Program readProgram(const std::string& path, const ProgressCallback& progress, std::vector<std::string>* warnings,
+                    const Machine& machine) {
+  InterpreterOptions options = interpreterOptions(machine);
   options.progress = progress;
   InterpretResult r = interpretGcodeFile(path, options);
   if (!r.ok()) throw InputError(r.errors.front());
@@ -139,7 +149,7 @@ OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progres
   const bool hasDump = !request.files.dump.empty();
   if (!request.files.program.empty())
     run.program = std::make_shared<const Program>(
-        readProgram(request.files.program, progressStage(progress, 0.0, hasDump ? 0.3 : 0.2), &run.warnings));
+        readProgram(request.files.program, progressStage(progress, 0.0, hasDump ? 0.3 : 0.2), &run.warnings, run.machine));
   if (hasDump) {
     const BiipReader reader(request.files.dump);
     for (const std::string& w : reader.warnings()) run.warnings.push_back(request.files.dump + ": " + w);

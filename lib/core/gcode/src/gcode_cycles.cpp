@@ -70,6 +70,9 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
     if (dwellSeconds < 0) return fail(block.col('P'), fmt::format("Negative dwell time P word used with {}", name));
   }
 
+  if ((motion == kG84 || motion == kG74) && block.has('Q'))
+    warnOnce(warnedPeckTapping_, block.col('Q'),
+             fmt::format("{} with Q (peck tapping on Fanuc and Haas controls) is expanded as one tap to the bottom", name));
   const Vec3 start = state_.position;
   double oldZ = start.z();
   double x, y, r, bottom, dx = 0, dy = 0;

@@ -104,6 +104,7 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   state_.position = options.startPosition;
   state_.g28 = options.g28Position;
   state_.g30 = options.g30Position;
+  state_.inch = options.inchAtPowerOn;
   result_.program.source = source_;
   result_.program.start = options.startPosition;
 }
@@ -325,6 +326,11 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
+  if (groups.has(kGroupUnits)) unitsStated_ = true;
+  if (!unitsStated_ && (hasAxisWords(block) || block.has('F')))
+    warnOnce(unitsStated_, 1,
+             fmt::format("no G20 or G21 before the first length: the control's power-on units ({}) are used",
+                         options_.inchAtPowerOn ? "inch, G20" : "mm, G21"));
 
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
@@ -344,7 +350,9 @@ bool InterpreterState::executeBlock(const Block& block) {
 
   // Motion.
   const bool explicitMotion = groups.has(kGroupMotion);
-  const int motion = explicitMotion ? groups.code[kGroupMotion] : state_.motion;
+  int motion = explicitMotion ? groups.code[kGroupMotion] : state_.motion;
+  // Fanuc: the cycles are a modal group of their own; G80 leaves G0-G3 as they were.
+  if (options_.fanuc && !explicitMotion && motion == kG80) motion = state_.pathMotion;
   const std::uint32_t motionColumn =
       explicitMotion ? groups.column[kGroupMotion] : 0;
   bool arcRan = false, cycleRan = false;
@@ -384,6 +392,7 @@ bool InterpreterState::executeBlock(const Block& block) {
     }
   }
   if (explicitMotion) state_.motion = motion;
+  if (explicitMotion && (motion == kG0 || motion == kG1 || motion == kG2 || motion == kG3)) state_.pathMotion = motion;
 
   // Words that no code of this block used.
   for (char c : {'I', 'J', 'K'}) {

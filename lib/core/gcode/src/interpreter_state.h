@@ -61,6 +61,7 @@ inline bool isCycle(int motion) {
 struct ModalState {
   Vec3 position = Vec3::Zero();  // mm
   int motion = kG80;
+  int pathMotion = kG80;        // the last of G0-G3 given (Fanuc's group 01)
   Plane plane = Plane::XY;
   bool inch = false;
   bool incremental = false;     // G91
@@ -137,7 +138,8 @@ class InterpreterState {
   bool seenWords_ = false;
   bool warnedCutterComp_ = false, warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
-  bool warnedLookAhead_ = false;
+  bool warnedLookAhead_ = false, warnedPeckTapping_ = false;
+  bool unitsStated_ = false;      // G20 or G21 given (or the power-on units' warning made)
   // The error of the block being executed.
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;

@@ -119,6 +119,20 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
         fail(source, where + "velocity_loop_time_constant_s must be >= 0");
     }
   }
+  if (root.contains("control")) {
+    const json& c = root["control"];
+    if (!c.is_object()) fail(source, "control must be an object");
+    if (c.contains("dialect")) {
+      const std::string d = c["dialect"].is_string() ? c["dialect"].get<std::string>() : "";
+      if (d != "linuxcnc" && d != "fanuc") fail(source, "control.dialect must be \"linuxcnc\" or \"fanuc\"");
+      m.control.fanuc = d == "fanuc";
+    }
+    if (c.contains("units_at_power_on")) {
+      const std::string u = c["units_at_power_on"].is_string() ? c["units_at_power_on"].get<std::string>() : "";
+      if (u != "mm" && u != "inch") fail(source, "control.units_at_power_on must be \"mm\" or \"inch\"");
+      m.control.inch = u == "inch";
+    }
+  }
   if (root.contains("reference_positions_mm")) {
     const json& refs = root["reference_positions_mm"];
     if (!refs.is_object()) fail(source, "reference_positions_mm must be an object");

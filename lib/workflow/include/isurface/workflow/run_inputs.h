@@ -31,10 +31,14 @@ struct RunFiles {
 // that program; any other file stands alone.
 std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths);
 
-// Interprets a program; its warnings go to `warnings`, its first error is thrown (with
-// options.keepGoing every error is reported by the caller's printer first, see cli).
+// How `machine`'s control reads a program: its dialect, power-on units and reference positions.
+InterpreterOptions interpreterOptions(const Machine& machine);
+
+// Interprets a program as `machine`'s control reads it; its warnings go to `warnings`, its first
+// error is thrown (with options.keepGoing every error is reported by the caller's printer
+// first, see cli).
 Program readProgram(const std::string& path, const ProgressCallback& progress = {},
-                    std::vector<std::string>* warnings = nullptr);
+                    std::vector<std::string>* warnings = nullptr, const Machine& machine = defaultMachine());
 
 // The machine a dump's metadata says it was made with (a simulation's dump names it), if any.
 std::optional<Machine> machineOfDump(const BiipReader& reader);

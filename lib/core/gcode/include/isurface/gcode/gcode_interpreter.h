@@ -17,6 +17,12 @@ struct InterpreterOptions {
   Vec3 g30Position = Vec3::Zero();
   // Position before the first move, mm.
   Vec3 startPosition = Vec3::Zero();
+  // The control's power-on units (G20 when true); a program that moves before saying G20 or
+  // G21 gets one warning naming them.
+  bool inchAtPowerOn = false;
+  // Fanuc and Haas controls keep G0-G3 apart from the canned cycles: after G80, axis words go
+  // on with the G0-G3 motion that was in effect before the cycle (RS274/NGC: an error).
+  bool fanuc = false;
   // Centre-format arcs (LinuxCNC's rule): an arc whose end radius differs from its start radius
   // by more than arcRadiusTolerance AND by more than arcRadiusRelativeTolerance of the larger
   // radius is an error, and so is any difference over 100 times arcRadiusTolerance. LinuxCNC's

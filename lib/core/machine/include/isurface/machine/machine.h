@@ -17,6 +17,12 @@ struct AxisLimits {
   double velocityLoopTimeConstant = 0.002; // s, first-order lag of the velocity loop
 };
 
+// How the control reads G-code: the dialect, and the units it is in before a program says.
+struct ControlModes {
+  bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
+  bool inch = false;   // G20 at power-on
+};
+
 struct Machine {
   std::string name;
   double cycle = 0.001;           // s, interpolation period
@@ -25,6 +31,7 @@ struct Machine {
   std::array<AxisLimits, 3> axes; // X, Y, Z
   Vec3 g28Position = Vec3::Zero();
   Vec3 g30Position = Vec3::Zero();
+  ControlModes control;
 
   bool jerkLimited() const { return axes[0].maxJerk > 0 && axes[1].maxJerk > 0 && axes[2].maxJerk > 0; }
 };
