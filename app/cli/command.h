@@ -31,8 +31,17 @@ Command simulateCommand();
 Command stsCommand();
 Command uiSnapshotCommand();
 
-// Every command, in the order `isurface-cli --help` lists them.
+// The commands that draw nothing (no VTK, no OpenGL), and every command, in the order
+// `isurface-cli --help` lists them.
+std::vector<Command> plainCommands();
 std::vector<Command> allCommands();
+
+// The names of the commands that draw (render, analyze, ...): isurface-cli hands them to
+// isurface-cli-all.
+bool drawsPictures(const std::string& command);
+
+// Parses the command line against `commands` and runs the one it names; the exit code.
+int runCommands(int argc, char** argv, const std::vector<Command>& commands);
 
 // Exit codes shared by all commands.
 constexpr int kExitOk = 0;

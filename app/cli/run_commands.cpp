@@ -1,0 +1,41 @@
+// Parsing a command line against a list of commands and running the one it names.
+#include <cstdio>
+#include <map>
+
+#include "command.h"
+#include "inputs.h"
+#include "isurface/base/diagnostic.h"
+
+namespace isurface::cli {
+
+int runCommands(int argc, char** argv, const std::vector<Command>& commands) {
+  CLI::App app{"iSurface: NC interpolation quality maps, headless commands"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "isurface-cli 0.1.0");
+  std::map<CLI::App*, std::function<int()>> runners;
+  for (const Command& command : commands) {
+    CLI::App* sub = app.add_subcommand(command.name, command.description);
+    runners[sub] = command.setup(*sub);
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitInputError;
+  }
+  try {
+    for (auto& [sub, run] : runners)
+      if (sub->parsed()) return run();
+  } catch (const CommandExit& e) {
+    return e.code;
+  } catch (const isurface::InputError& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitInputError;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "error: %s\n", e.what());
+    return kExitFailure;
+  }
+  return kExitFailure;
+}
+
+}  // namespace isurface::cli
