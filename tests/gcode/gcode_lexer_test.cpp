@@ -159,7 +159,7 @@ TEST(gcodeLexer, OWordLines) {
 }
 
 TEST(gcodeLexer, UnknownMCodesAreIgnored) {
-  const InterpretResult r = run("M7 M8\nM98 P100\nM123\nG0 X1 M9\nM48 M49\n");
+  const InterpretResult r = run("G21 M7 M8\nM123\nG0 X1 M9\nM48 M49\n");
   ASSERT_TRUE(r.ok()) << r.errors[0].str();
   EXPECT_EQ(r.program.moves.size(), 1u);
 }

@@ -79,7 +79,15 @@ ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, Li
       {"if", Keyword::If},         {"elseif", Keyword::Elseif},     {"else", Keyword::Else},
       {"endif", Keyword::Endif},   {"break", Keyword::Break},       {"continue", Keyword::Continue},
       {"return", Keyword::Return}, {"repeat", Keyword::Repeat},     {"endrepeat", Keyword::Endrepeat}};
-  if (word.empty()) return {};  // a program number ("O1000 (name)"): nothing to do
+  if (word.empty()) {  // a program number ("O1000 (name)"): where a Fanuc subprogram starts
+    programs_[o.label] = next;
+    if (skip_ && skip_->target == SkipTo::FindProgram && skip_->label == o.label) {
+      const Skip request = std::move(*skip_);
+      skip_.reset();
+      return enterProgram(request, next);
+    }
+    return {};
+  }
   const auto found = kKeywords.find(word);
   if (found == kKeywords.end()) return error(fmt::format("Unknown O-word keyword '{}' after {}", word, shown(o.label)));
   o.keyword = found->second;
@@ -97,6 +105,7 @@ ControlFlow::Outcome ControlFlow::executeSkipping(const OLine& o, LinePosition h
                                                   bool& resume) {
   (void)here;
   const Skip& s = *skip_;
+  if (s.target == SkipTo::FindProgram) return {};  // only "O<n>" lines matter (see execute)
   if (o.label != s.label) {
     // Looking for a subroutine defined further on: those read past on the way are known too.
     if (s.target == SkipTo::FindSub && o.keyword == Keyword::Sub) subroutines_[o.label] = next;
@@ -131,6 +140,7 @@ ControlFlow::Outcome ControlFlow::executeSkipping(const OLine& o, LinePosition h
     case SkipTo::EndIf:
       if (o.keyword == Keyword::Endif) skip_.reset(), branches_.pop_back();
       return {};
+    case SkipTo::FindProgram: return {};
     case SkipTo::LoopEnd:
     case SkipTo::LoopContinue:
       if (o.keyword == Keyword::Endwhile || o.keyword == Keyword::Endrepeat || o.keyword == Keyword::While) {
@@ -176,11 +186,83 @@ ControlFlow::Outcome ControlFlow::call(const OLine& o, const char* end, LinePosi
                               kMaxCallDepth, shown(o.label));
     return out;
   }
-  frames_.push_back(Frame{o.label, back, loops_.size(), branches_.size()});
+  Frame frame;
+  frame.label = o.label;
+  frame.back = back;
+  frame.loops = loops_.size();
+  frame.branches = branches_.size();
+  frames_.push_back(std::move(frame));
   parameters_.pushScope();
   for (std::size_t i = 0; i < arguments.size(); ++i) parameters_.set(static_cast<int>(i + 1), arguments[i]);
   Outcome out;
   out.jump = body;
+  return out;
+}
+
+ControlFlow::Outcome ControlFlow::callProgram(const std::string& program,
+                                              const std::vector<std::pair<int, double>>& arguments, bool macro,
+                                              long times, LinePosition here, LinePosition next, std::uint32_t column) {
+  seen_ = true;
+  Skip request = skipTo(SkipTo::FindProgram, program, here.line);
+  request.back = next;
+  request.programArguments = arguments;
+  request.macro = macro;
+  request.times = times;
+  request.column = column;
+  const auto found = programs_.find(program);
+  if (found != programs_.end()) return enterProgram(request, found->second);
+  skip_ = std::move(request);  // further on in the file
+  return {};
+}
+
+ControlFlow::Outcome ControlFlow::enterProgram(const Skip& request, LinePosition body) {
+  Outcome out;
+  if (request.times < 1) return out;
+  if (frames_.size() >= kMaxCallDepth) {
+    out.ok = false;
+    out.column = request.column;
+    out.message = fmt::format("Subprogram calls nested deeper than {} (a recursion that never ends?) calling O{}",
+                              kMaxCallDepth, request.label);
+    return out;
+  }
+  Frame frame;
+  frame.label = "O" + request.label;
+  frame.back = request.back;
+  frame.loops = loops_.size();
+  frame.branches = branches_.size();
+  frame.program = true;
+  frame.scoped = request.macro;
+  frame.timesLeft = request.times - 1;
+  frame.body = body;
+  frames_.push_back(frame);
+  if (request.macro) parameters_.pushScope();
+  for (const auto& [number, value] : request.programArguments) parameters_.set(number, value);
+  out.jump = body;
+  return out;
+}
+
+ControlFlow::Outcome ControlFlow::returnFromProgram(std::uint32_t column, bool& inProgram) {
+  Outcome out;
+  inProgram = !frames_.empty() && frames_.back().program;
+  if (!inProgram) {
+    if (!frames_.empty()) {
+      out.ok = false;
+      out.column = column;
+      out.message = fmt::format("M99 inside {} sub, which returns with endsub or return", shown(frames_.back().label));
+    }
+    return out;
+  }
+  Frame& frame = frames_.back();
+  loops_.resize(frame.loops);
+  branches_.resize(frame.branches);
+  if (frame.timesLeft > 0) {
+    --frame.timesLeft;
+    out.jump = frame.body;
+    return out;
+  }
+  if (frame.scoped) parameters_.popScope();
+  out.jump = frame.back;
+  frames_.pop_back();
   return out;
 }
 
@@ -214,7 +296,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     case Keyword::None: return out;
     case Keyword::Sub:
       subroutines_[o.label] = next;
-      skip_ = Skip{SkipTo::EndSub, o.label, here.line, {}, {}};
+      skip_ = skipTo(SkipTo::EndSub, o.label, here.line);
       return out;
     case Keyword::Endsub:
     case Keyword::Return: {
@@ -250,7 +332,9 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
       }
       const auto sub = subroutines_.find(o.label);
       if (sub != subroutines_.end()) return call(o, end, sub->second, std::move(arguments), next);
-      skip_ = Skip{SkipTo::FindSub, o.label, here.line, std::move(arguments), next};
+      skip_ = skipTo(SkipTo::FindSub, o.label, here.line);
+      skip_->arguments = std::move(arguments);
+      skip_->back = next;
       return out;
     }
     case Keyword::Do:
@@ -269,7 +353,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
         return out;
       }
       if (again) loops_.pop_back();
-      skip_ = Skip{SkipTo::LoopEnd, o.label, here.line, {}, {}};
+      skip_ = skipTo(SkipTo::LoopEnd, o.label, here.line);
       return out;
     }
     case Keyword::Endwhile:
@@ -279,7 +363,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
       if (!condition(o, end, v, out)) return out;
       const double times = std::round(v);
       if (times >= 1) beginLoop(o.label, Keyword::Repeat, next, times);
-      else skip_ = Skip{SkipTo::LoopEnd, o.label, here.line, {}, {}};
+      else skip_ = skipTo(SkipTo::LoopEnd, o.label, here.line);
       return out;
     }
     case Keyword::Endrepeat:
@@ -291,13 +375,13 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     case Keyword::If:
       if (!condition(o, end, v, out)) return out;
       branches_.push_back(Branch{o.label, v != 0});
-      if (v == 0) skip_ = Skip{SkipTo::BranchEnd, o.label, here.line, {}, {}};
+      if (v == 0) skip_ = skipTo(SkipTo::BranchEnd, o.label, here.line);
       return out;
     case Keyword::Elseif:
     case Keyword::Else:
       // Reached from the branch that ran: what follows up to the endif is not for this pass.
       if (!branchOnTop) return error(fmt::format("{} {} without its if", shown(o.label), o.keyword == Keyword::Else ? "else" : "elseif"));
-      skip_ = Skip{SkipTo::EndIf, o.label, here.line, {}, {}};
+      skip_ = skipTo(SkipTo::EndIf, o.label, here.line);
       return out;
     case Keyword::Endif:
       if (!branchOnTop) return error(fmt::format("{} endif without its if", shown(o.label)));
@@ -312,7 +396,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
       branches_.resize(loop->branches);
       loops_.resize(static_cast<std::size_t>(loop - loops_.data()) + 1);
       if (o.keyword == Keyword::Break) loops_.pop_back();
-      skip_ = Skip{o.keyword == Keyword::Break ? SkipTo::LoopEnd : SkipTo::LoopContinue, o.label, here.line, {}, {}};
+      skip_ = skipTo(o.keyword == Keyword::Break ? SkipTo::LoopEnd : SkipTo::LoopContinue, o.label, here.line);
       return out;
     }
   }
@@ -327,6 +411,9 @@ std::optional<std::string> ControlFlow::unfinished() const {
       case SkipTo::FindSub:
         return fmt::format("{} is called (line {}) but defined nowhere in the file (subroutine files are not searched)",
                            o, skip_->fromLine);
+      case SkipTo::FindProgram:
+        return fmt::format("subprogram O{} is called (line {}) but is not in the file (subprogram files are not searched)",
+                           skip_->label, skip_->fromLine);
       case SkipTo::BranchEnd:
       case SkipTo::EndIf: return fmt::format("{} (line {}) has no endif", o, skip_->fromLine);
       case SkipTo::LoopEnd:

@@ -47,6 +47,15 @@ class ControlFlow {
   // Executes the O-word line `here` ending at `end`; `next` is the line after it.
   Outcome execute(LinePosition here, const char* end, LinePosition next);
 
+  // Fanuc subprograms: M98 P<program> L<times> (the caller's parameters are shared) and G65
+  // P<program> with letter arguments (`arguments`: parameter number and value, in a scope of
+  // its own); the program starts after its "O<program>" line, here or further on.
+  Outcome callProgram(const std::string& program, const std::vector<std::pair<int, double>>& arguments, bool macro,
+                      long times, LinePosition here, LinePosition next, std::uint32_t column);
+  // M99: back to the line after the M98 or G65 (or the program's start again for L repeats).
+  // `inProgram` is false when there is no call to return from (M99 ending a main program).
+  Outcome returnFromProgram(std::uint32_t column, bool& inProgram);
+
   // At the end of the text: what is left open (an if without its endif, a subroutine called but
   // never defined, ...), or nothing.
   std::optional<std::string> unfinished() const;
@@ -77,19 +86,35 @@ class ControlFlow {
     std::string label;
     LinePosition back;  // the line after the call
     std::size_t loops = 0, branches = 0;
+    bool program = false;      // a Fanuc subprogram (M98, G65): M99 returns
+    bool scoped = true;        // parameters of its own (O-word calls, G65; not M98)
+    long timesLeft = 0;        // M98 L: runs still to come
+    LinePosition body;
   };
-  enum class SkipTo { EndSub, BranchEnd, EndIf, LoopEnd, LoopContinue, FindSub };
+  enum class SkipTo { EndSub, BranchEnd, EndIf, LoopEnd, LoopContinue, FindSub, FindProgram };
   struct Skip {
-    SkipTo target;
+    SkipTo target = SkipTo::EndSub;
     std::string label;
     std::uint32_t fromLine = 0;
     std::vector<double> arguments;  // FindSub: the call's
-    LinePosition back;              // FindSub: the line after the call
+    LinePosition back;              // FindSub, FindProgram: the line after the call
+    std::vector<std::pair<int, double>> programArguments;  // FindProgram
+    bool macro = false;
+    long times = 1;
+    std::uint32_t column = 0;
   };
 
+  static Skip skipTo(SkipTo target, const std::string& label, std::uint32_t line) {
+    Skip s;
+    s.target = target;
+    s.label = label;
+    s.fromLine = line;
+    return s;
+  }
   Outcome executeSkipping(const OLine& o, LinePosition here, const char* end, LinePosition next, bool& resume);
   Outcome run(const OLine& o, LinePosition here, const char* end, LinePosition next);
   Outcome call(const OLine& o, const char* end, LinePosition body, std::vector<double> arguments, LinePosition back);
+  Outcome enterProgram(const Skip& request, LinePosition body);
   Outcome loopEnd(const OLine& o, LinePosition here, const char* end);
   bool condition(const OLine& o, const char* end, double& value, Outcome& outcome) const;
   Loop* findLoop(const std::string& label);
@@ -99,6 +124,7 @@ class ControlFlow {
   bool seen_ = false;
   std::optional<Skip> skip_;
   std::unordered_map<std::string, LinePosition> subroutines_;  // label -> the line after `sub`
+  std::unordered_map<std::string, LinePosition> programs_;     // Fanuc program number -> the line after "O<n>"
   std::vector<Loop> loops_;
   std::vector<Branch> branches_;
   std::vector<Frame> frames_;

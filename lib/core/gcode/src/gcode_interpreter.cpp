@@ -34,7 +34,7 @@ std::string codeName(char letter, int tenths) {
 // not supported here.
 int groupOf(int code) {
   switch (code) {
-    case kG4: case kG10: case kG28: case kG28_1: case kG30: case kG30_1: case kG53:
+    case kG4: case kG10: case kG28: case kG28_1: case kG30: case kG30_1: case kG53: case kG65:
       return kGroupNonModal;
     case kG0: case kG1: case kG2: case kG3: case kG73: case kG74: case kG80: case kG81: case kG82: case kG83:
     case kG84: case kG85: case kG86: case kG88: case kG89:
@@ -61,13 +61,14 @@ int groupOf(int code) {
   }
 }
 
-enum MGroup { kMStop, kMToolChange, kMSpindle, kMCoolant, kMGroupCount };
+enum MGroup { kMStop, kMToolChange, kMSpindle, kMCoolant, kMSubprogram, kMGroupCount };
 
 int mGroupOf(int tenths) {
   switch (tenths) {
     case 0: case 10: case 20: case 300: case 600: return kMStop;
     case 60: return kMToolChange;
     case 30: case 40: case 50: return kMSpindle;
+    case 980: case 990: return kMSubprogram;
     default: return -1;  // coolant and every other M code: accepted, no effect on motion
   }
 }
@@ -291,7 +292,7 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (!groupCodes(block, groups)) return false;
 
   // M codes: at most one per group among those that matter here.
-  int mCode[kMGroupCount] = {-1, -1, -1, -1};
+  int mCode[kMGroupCount] = {-1, -1, -1, -1, -1};
   for (int i = 0; i < block.mCount; ++i) {
     const int group = mGroupOf(block.m[i]);
     if (group < 0) continue;
@@ -335,7 +336,7 @@ bool InterpreterState::executeBlock(const Block& block) {
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
   const bool axesForNonModal =
-      nonModal == kG10 || nonModal == kG28 || nonModal == kG30;
+      nonModal == kG10 || nonModal == kG28 || nonModal == kG30 || nonModal == kG65;
   const bool axes = hasAxisWords(block);
   if (axesForNonModal && groups.has(kGroupMotion) && groups.code[kGroupMotion] != kG80 && axes)
     return fail(groups.column[kGroupMotion],
@@ -394,6 +395,8 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (explicitMotion) state_.motion = motion;
   if (explicitMotion && (motion == kG0 || motion == kG1 || motion == kG2 || motion == kG3)) state_.pathMotion = motion;
 
+  if (nonModal == kG65) return macroCall(block, groups.column[kGroupNonModal]);
+
   // Words that no code of this block used.
   for (char c : {'I', 'J', 'K'}) {
     if (block.has(c) && !arcRan)
@@ -416,6 +419,7 @@ bool InterpreterState::executeBlock(const Block& block) {
     if (!moves_.empty()) moves_.back().flags |= kStopAfter;
     if (mCode[kMStop] == 20 || mCode[kMStop] == 300) ended_ = true;
   }
+  if (mCode[kMSubprogram] >= 0) return subprogram(block, mCode[kMSubprogram]);
   return true;
 }
 

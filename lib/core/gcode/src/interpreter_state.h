@@ -19,7 +19,7 @@ namespace isurface::gcode {
 
 // G codes in tenths.
 enum GCode : int {
-  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG8 = 80, kG10 = 100,
+  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG8 = 80, kG10 = 100, kG65 = 650,
   kG17 = 170, kG18 = 180, kG19 = 190, kG20 = 200, kG21 = 210,
   kG28 = 280, kG28_1 = 281, kG30 = 300, kG30_1 = 301,
   kG40 = 400, kG41 = 410, kG41_1 = 411, kG42 = 420, kG42_1 = 421,
@@ -125,6 +125,10 @@ class InterpreterState {
   // gcode_cycles.cpp
   bool cycle(const Block& block, int motion, std::uint32_t column);
 
+  // gcode_subprograms.cpp: Fanuc's M98 / M99 (code 980 or 990) and G65 macro calls
+  bool subprogram(const Block& block, int code);
+  bool macroCall(const Block& block, std::uint32_t column);
+
   bool fail(std::uint32_t column, std::string message);
 
   const InterpreterOptions& options_;
@@ -138,7 +142,7 @@ class InterpreterState {
   bool seenWords_ = false;
   bool warnedCutterComp_ = false, warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
-  bool warnedLookAhead_ = false, warnedPeckTapping_ = false;
+  bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
   bool unitsStated_ = false;      // G20 or G21 given (or the power-on units' warning made)
   // The error of the block being executed.
   std::uint32_t errorColumn_ = 0;

@@ -1,0 +1,65 @@
+// Fanuc subprograms (M98/M99) and macro calls (G65), checked against moves worked by hand.
+#include <gtest/gtest.h>
+
+#include "gcode_test_support.h"
+
+using namespace isurface;
+using namespace isurface::gcodetest;
+
+namespace {
+
+const char* const kProgram =
+    "O1000 (MAIN)\n"
+    "G21 G90\n"
+    "G0 X0 Y0\n"
+    "M98 P2000 L2\n"      // twice: X+5 incremental
+    "G65 P3000 A1.5 X2.\n"  // #1 = 1.5, #24 = 2
+    "G0 X90\n"
+    "M30\n"
+    "%\n"
+    "O2000 (STEP)\n"
+    "G91 G1 X5 F100\n"
+    "G90\n"
+    "M99\n"
+    "O3000 (MACRO)\n"
+    "G1 X[#1+#24] Y#1\n"
+    "M99\n";
+
+}  // namespace
+
+TEST(gcodeSubprograms, M98RunsTheSubprogramItsTimesAndM99ComesBack) {
+  const Program p = interpret(kProgram);
+  ASSERT_EQ(p.moves.size(), 5u);
+  EXPECT_EQ(p.moves[1].end, Vec3(5, 0, 0));
+  EXPECT_EQ(p.moves[2].end, Vec3(10, 0, 0));
+  EXPECT_EQ(p.moves[1].line, 10u);  // the subprogram's own line
+  EXPECT_EQ(p.moves[2].line, 10u);
+  EXPECT_EQ(p.moves[3].end, Vec3(3.5, 1.5, 0));  // G65's letters as #1 and #24
+  EXPECT_EQ(p.moves[3].line, 14u);
+  EXPECT_EQ(p.moves[4].end, Vec3(90, 1.5, 0));
+  EXPECT_EQ(p.moves[4].line, 6u);
+}
+
+TEST(gcodeSubprograms, G65ArgumentsBelongToTheCall) {
+  const Program p = interpret("G21\n#1=7\nG65 P10 A2\nG0 X#1\nM30\nO10\n#1=[#1*3]\nG0 Y#1\nM99\n");
+  ASSERT_EQ(p.moves.size(), 2u);
+  EXPECT_EQ(p.moves[0].end.y(), 6);  // inside: A2 tripled
+  EXPECT_EQ(p.moves[1].end.x(), 7);  // after: the caller's #1 again
+}
+
+TEST(gcodeSubprograms, MistakesAreErrors) {
+  EXPECT_EQ(firstError("G21\nM98 P77\nM30\n"), "t.ngc:3: subprogram O77 is called (line 2) but is not in the file (subprogram files are not searched)");
+  EXPECT_EQ(firstError("M98\n"), "t.ngc:1:1: P word (the program number) missing with M98");
+  EXPECT_EQ(firstError("G65 A1\n"), "t.ngc:1:1: P word (the program number) missing with G65");
+  EXPECT_EQ(firstError("M99 P10\n"), "t.ngc:1:5: M99 P (a return to a numbered block) is not supported");
+  const std::string deep = firstError("O5\nM98 P5\n");
+  EXPECT_NE(deep.find("nested deeper than 200"), std::string::npos) << deep;
+}
+
+TEST(gcodeSubprograms, M99EndingAMainProgramIsReadOnce) {
+  const InterpretResult r = run("G21 G0 X1\nM99\nG0 X2\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), 1u);
+  ASSERT_EQ(r.program.warnings.size(), 1u);
+  EXPECT_NE(r.program.warnings[0].message.find("read once"), std::string::npos);
+}
