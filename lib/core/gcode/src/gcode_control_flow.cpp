@@ -1,5 +1,6 @@
 // LinuxCNC's O-word control flow (its manual's "O Codes"), executed where the lines stand.
 #include "gcode_control_flow.h"
+#include "gcode_line_text.h"
 
 #include <fmt/format.h>
 
@@ -11,39 +12,22 @@ namespace isurface::gcode {
 
 namespace {
 
-bool isBlank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\f' || c == '\v'; }
-
-const char* skipBlanks(const char* p, const char* end) {
-  while (p < end && isBlank(*p)) ++p;
-  return p;
-}
-
-// Past blanks and an N word: where an O word would stand.
-const char* oWordStart(const char* p, const char* end) {
-  p = skipBlanks(p, end);
-  if (p < end && (*p == 'N' || *p == 'n')) {
-    ++p;
-    while (p < end && (std::isdigit(static_cast<unsigned char>(*p)) || isBlank(*p) || *p == '.')) ++p;
-  }
-  return p;
-}
-
 std::string shown(const std::string& label) { return "o" + label; }
 
 }  // namespace
 
 bool isOWordLine(const char* begin, const char* end) {
-  const char* p = oWordStart(begin, end);
+  const char* p = pastBlockNumber(begin, end);
   return p < end && (*p == 'o' || *p == 'O');
 }
 
 ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, LinePosition next) {
   // The line: [N..] O label [keyword] [rest].
   const char* begin = here.at;
-  const char* p = oWordStart(begin, end);
+  const char* p = pastBlockNumber(begin, end);
   OLine o;
   o.column = static_cast<std::uint32_t>(p - begin + 1);
-  p = skipBlanks(p + 1, end);
+  p = skipLineBlanks(p + 1, end);
   auto error = [&](std::string message) {
     Outcome out;
     out.ok = false;
@@ -56,21 +40,21 @@ ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, Li
     if (!close) return error("Unclosed O-word name (missing '>')");
     o.label = "<";
     for (const char* q = p + 1; q < close; ++q)
-      if (!isBlank(*q)) o.label += static_cast<char>(std::tolower(static_cast<unsigned char>(*q)));
+      if (!isLineBlank(*q)) o.label += static_cast<char>(std::tolower(static_cast<unsigned char>(*q)));
     o.label += ">";
     p = close + 1;
   } else {
     std::string digits;  // without leading zeros: o0100 is o100
     bool any = false;
-    for (; p < end && (std::isdigit(static_cast<unsigned char>(*p)) || isBlank(*p)); ++p) {
-      if (isBlank(*p)) continue;
+    for (; p < end && (std::isdigit(static_cast<unsigned char>(*p)) || isLineBlank(*p)); ++p) {
+      if (isLineBlank(*p)) continue;
       any = true;
       if (!(digits.empty() && *p == '0')) digits += *p;
     }
     if (!any) return error("O-word without a number or <name>");
     o.label = digits.empty() ? "0" : digits;
   }
-  p = skipBlanks(p, end);
+  p = skipLineBlanks(p, end);
   std::string word;
   while (p < end && std::isalpha(static_cast<unsigned char>(*p))) word += static_cast<char>(std::tolower(static_cast<unsigned char>(*p++)));
   static const std::unordered_map<std::string, Keyword> kKeywords = {
@@ -153,7 +137,7 @@ ControlFlow::Outcome ControlFlow::executeSkipping(const OLine& o, LinePosition h
 }
 
 bool ControlFlow::condition(const OLine& o, const char* end, double& value, Outcome& outcome) const {
-  const char* p = skipBlanks(o.rest, end);
+  const char* p = skipLineBlanks(o.rest, end);
   std::string message;
   if (p >= end || *p != '[') message = fmt::format("{} needs a condition in [ ]", shown(o.label));
   else if (readRealValue(p, end, parameters_, value, message)) return true;
@@ -303,7 +287,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
       if (frames_.empty() || frames_.back().label != o.label)
         return error(fmt::format("{} {} outside a call of it", shown(o.label),
                                  o.keyword == Keyword::Return ? "return" : "endsub"));
-      const char* p = skipBlanks(o.rest, end);
+      const char* p = skipLineBlanks(o.rest, end);
       if (p < end && *p == '[') {
         double value = 0;
         std::string message;
@@ -321,7 +305,7 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     }
     case Keyword::Call: {
       std::vector<double> arguments;
-      const char* p = skipBlanks(o.rest, end);
+      const char* p = skipLineBlanks(o.rest, end);
       while (p < end && *p != '(' && *p != ';') {
         double value = 0;
         std::string message;

@@ -340,7 +340,9 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error,
       if (p >= end || *p != '=') return fail(at, "Equal sign missing in parameter setting");
       ++p;
       double v;
-      if (!readRealValue(p, end, *parameters, v, numberMessage)) return fail(at, std::move(numberMessage));
+      const bool read = parameters->bareSettings ? readBareExpression(p, end, *parameters, v, numberMessage)
+                                                 : readRealValue(p, end, *parameters, v, numberMessage);
+      if (!read) return fail(at, std::move(numberMessage));
       parameters->stage(std::move(ref), v);
       continue;
     }

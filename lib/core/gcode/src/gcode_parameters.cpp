@@ -146,6 +146,11 @@ class Reader {
   // `[ a op b op c ... ]`, by precedence.
   bool expression(double& value) {
     ++p_;  // '['
+    return binary(value, true);
+  }
+
+  // `a op b op c ...` up to ']' (bracketed) or to the end of the line or a comment.
+  bool binary(double& value, bool bracketed) {
     std::vector<double> values;
     std::vector<Op> ops;
     double v = 0;
@@ -153,8 +158,9 @@ class Reader {
     values.push_back(v);
     for (;;) {
       skipBlanks(p_, end_);
-      if (p_ >= end_) return fail("Unclosed expression (missing ']')");
-      if (*p_ == ']') {
+      if (bracketed && p_ >= end_) return fail("Unclosed expression (missing ']')");
+      if (!bracketed && (p_ >= end_ || *p_ == '(' || *p_ == ';')) break;
+      if (bracketed && *p_ == ']') {
         ++p_;
         break;
       }
@@ -368,6 +374,11 @@ void Parameters::commit() {
 
 bool readRealValue(const char*& p, const char* end, const Parameters& parameters, double& value, std::string& message) {
   return Reader(p, end, parameters, message).realValue(value);
+}
+
+bool readBareExpression(const char*& p, const char* end, const Parameters& parameters, double& value,
+                        std::string& message) {
+  return Reader(p, end, parameters, message).binary(value, false);
 }
 
 bool readParameterRef(const char*& p, const char* end, const Parameters& parameters, ParameterRef& ref,

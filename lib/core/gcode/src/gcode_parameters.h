@@ -36,6 +36,9 @@ class Parameters {
   // A subroutine call's own parameters: #1..#30 and the named locals (names without a leading
   // '_') are saved, cleared for the call and restored at its return.
   static constexpr int kCallParameters = 30;
+
+  // Fanuc macro B: a setting's value is an expression without brackets (#3 = #1 + #2).
+  bool bareSettings = false;
   void pushScope();
   void popScope();
 
@@ -62,6 +65,11 @@ class Parameters {
 // Returns false with a message on bad syntax, an undefined parameter or a domain error.
 bool readRealValue(const char*& p, const char* end, const Parameters& parameters, double& value,
                    std::string& message);
+
+// Reads what a Fanuc setting assigns: operands and operators up to the end of the line or a
+// comment, without brackets around them (`#1 + 2 * #3`).
+bool readBareExpression(const char*& p, const char* end, const Parameters& parameters, double& value,
+                        std::string& message);
 
 // Reads a parameter reference after its '#' (`1`, `[expr]`, `#1`, `<name>`); `p` points past
 // the '#'. Returns false with a message when it is malformed or out of range.

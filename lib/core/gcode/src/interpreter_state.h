@@ -10,6 +10,7 @@
 
 #include "gcode_lexer.h"
 #include "gcode_control_flow.h"
+#include "gcode_fanuc_macro.h"
 #include "gcode_parameters.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/gcode/gcode_stream.h"
@@ -101,6 +102,8 @@ class InterpreterState {
  private:
   // gcode_interpreter.cpp
   void runLine(const char* begin, const char* end);
+  // A block's words, lexed and executed (a line, or what follows a Fanuc IF .. THEN).
+  bool runBlock(const char* begin, const char* end);
   // Streaming: hands over every move but the last, which a later block may still mark as
   // ending at rest (M0, M6, a spindle change); all of them when `all`.
   void deliverMoves(bool all);
@@ -150,6 +153,7 @@ class InterpreterState {
   Block block_;
   Parameters parameters_;
   ControlFlow flow_{parameters_};
+  FanucMacro macro_{parameters_};
   // The line being executed, the one after it, and where an O-word sends execution instead.
   LinePosition lineStart_, nextLine_;
   const char* lineEnd_ = nullptr;

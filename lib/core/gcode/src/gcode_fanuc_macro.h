@@ -1,0 +1,51 @@
+#pragma once
+// Fanuc macro B's control statements, read in the Fanuc dialect: GOTO n (to the block numbered
+// N n, searched forward and then from the start), IF [cond] GOTO n, IF [cond] THEN statement,
+// WHILE [cond] DO m ... END m. Lines run where they stand, so every move keeps its physical line.
+// Private to the gcode module.
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gcode_control_flow.h"
+#include "gcode_parameters.h"
+
+namespace isurface::gcode {
+
+class FanucMacro {
+ public:
+  static constexpr std::uint64_t kMaxJumps = 10000000;  // GOTOs and loop rounds: a program that never ends
+
+  explicit FanucMacro(const Parameters& parameters) : parameters_(parameters) {}
+  void setText(const char* begin, const char* end) { begin_ = begin, end_ = end; }
+
+  // True when the line [begin, end) (after an N word) is one of the statements above.
+  static bool isStatement(const char* begin, const char* end);
+
+  struct Outcome {
+    bool ok = true;
+    std::uint32_t column = 0;
+    std::string message;
+    std::optional<LinePosition> jump;
+    const char* then = nullptr;  // IF .. THEN with a true condition: the statement to run
+  };
+  Outcome execute(LinePosition here, const char* end);
+
+ private:
+  struct Loop {
+    int id;
+    LinePosition top;  // the WHILE line, evaluated again each round
+  };
+  std::optional<LinePosition> findBlock(long number, LinePosition from) const;
+  std::optional<LinePosition> findEnd(int id, LinePosition from) const;
+  bool count(Outcome& out, std::uint32_t column);
+
+  const Parameters& parameters_;
+  const char* begin_ = nullptr;
+  const char* end_ = nullptr;
+  std::vector<Loop> loops_;
+  std::uint64_t jumps_ = 0;
+};
+
+}  // namespace isurface::gcode

@@ -1,0 +1,171 @@
+// RS274/NGC interpreter: reading the text line by line (streaming, control flow jumping back and
+// on), and a line's block lexed and executed.
+#include <sys/mman.h>
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cstdint>
+#include <cstring>
+
+#include "interpreter_state.h"
+
+namespace isurface::gcode {
+
+namespace {
+
+// With keepGoing, interpretation stops after this many bad blocks (binary junk, wrong file).
+constexpr std::size_t kMaxErrors = 1000;
+// Streaming releases the text read so far in steps of this many bytes.
+constexpr std::ptrdiff_t kReleaseBytes = std::ptrdiff_t{8} << 20;
+
+// Large move buffers are filled front to back once: huge pages save thousands of page faults.
+void adviseHugePages(const void* data, std::size_t bytes) {
+  constexpr std::uintptr_t kHuge = std::uintptr_t{2} << 20;
+  if (bytes < 4 * kHuge) return;
+  const auto first = (reinterpret_cast<std::uintptr_t>(data) + kHuge - 1) & ~(kHuge - 1);
+  const auto last = (reinterpret_cast<std::uintptr_t>(data) + bytes) & ~(kHuge - 1);
+  if (last > first) ::madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+}
+
+// Physical lines: newlines, plus a last line that has none.
+std::size_t countLines(const char* begin, const char* end) {
+  std::size_t newlines = 0;
+  for (const char* p = begin; p < end;) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    if (!nl) break;
+    ++newlines;
+    p = static_cast<const char*>(nl) + 1;
+  }
+  return newlines + (begin < end && end[-1] != '\n' ? 1 : 0);
+}
+
+std::uint32_t clampToU32(std::size_t n) { return static_cast<std::uint32_t>(std::min<std::size_t>(n, 0xffffffffu)); }
+
+}  // namespace
+
+void InterpreterState::streamTo(MoveSink& sink, std::size_t chunkMoves, std::function<void(const char*)> released) {
+  sink_ = &sink;
+  chunkMoves_ = std::max<std::size_t>(chunkMoves, 1);
+  released_ = std::move(released);
+}
+
+void InterpreterState::deliverMoves(bool all) {
+  const std::size_t last = all ? moves_.size() : moves_.size() - 1;
+  std::size_t first = 0;
+  while (first < last) {
+    const std::size_t count = std::min(chunkMoves_, last - first);
+    sink_->consume(moves_.data() + first, count, delivered_);
+    delivered_ += count;
+    first += count;
+  }
+  moves_.erase(moves_.begin(), moves_.begin() + static_cast<std::ptrdiff_t>(first));
+}
+
+void InterpreterState::run(std::string_view text) {
+  const char* const begin = text.data();
+  const char* const end = begin + text.size();
+  if (sink_) {
+    moves_.reserve(chunkMoves_ + 16);
+  } else {
+    result_.program.lineCount = clampToU32(countLines(begin, end));
+    // One move per line is the common case; a line of a move is rarely under 8 bytes.
+    moves_.reserve(std::min<std::size_t>(result_.program.lineCount, text.size() / 8) + 16);
+    adviseHugePages(moves_.data(), moves_.capacity() * sizeof(Move));
+  }
+
+  const double total = text.empty() ? 1.0 : static_cast<double>(text.size());
+  const char* first = begin;
+  if (text.size() >= 3 && std::memcmp(begin, "\xEF\xBB\xBF", 3) == 0) first += 3;  // UTF-8 BOM
+  macro_.setText(first, end);
+  const char* releasedUpTo = begin;
+  const char* p = first;
+  while (p < end && !ended_) {
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
+    const char* lineEnd = nl ? static_cast<const char*>(nl) : end;
+    ++line_;
+    if (flow_.skipping() && !isOWordLine(p, lineEnd)) {  // inside a construct read past
+      p = lineEnd + 1;
+      continue;
+    }
+    lineStart_ = {p, line_};
+    lineEnd_ = lineEnd;
+    nextLine_ = {lineEnd + 1, line_ + 1};
+    runLine(p, lineEnd);
+    p = lineEnd + 1;
+    if (jump_) {  // a loop, a call or a return: on from another line
+      p = jump_->at;
+      line_ = jump_->line - 1;
+      jump_.reset();
+    }
+    if (sink_) {
+      if (moves_.size() > chunkMoves_) deliverMoves(false);
+      // Once a loop or a call may read lines again, the text stays.
+      if (released_ && !flow_.seen() && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
+    }
+    if ((line_ & 0xffffu) == 0 && options_.progress) options_.progress((p - begin) / total);
+  }
+  if (!ended_)
+    if (const auto open = flow_.unfinished()) result_.errors.push_back(Diagnostic{source_, line_, 0, *open});
+  if (sink_) {
+    deliverMoves(true);
+    // The lines after M2, M30 or a closing '%' still count; read in pieces released behind.
+    std::size_t lines = line_;
+    for (const char* rest = std::min(p, end); rest < end;) {
+      const char* pieceEnd = rest + std::min<std::size_t>(kReleaseBytes, static_cast<std::size_t>(end - rest));
+      lines += countLines(rest, pieceEnd) - (pieceEnd < end && pieceEnd[-1] != '\n' ? 1 : 0);
+      rest = pieceEnd;
+      if (released_) released_(rest);
+    }
+    // Text that is only a byte order mark is one (empty) line, as countLines() says.
+    if (lines == 0 && !text.empty()) lines = 1;
+    result_.program.lineCount = clampToU32(lines);
+  } else if (moves_.capacity() > moves_.size() + moves_.size() / 4 + 64) {
+    moves_.shrink_to_fit();
+  }
+  if (options_.progress) options_.progress(1.0);
+}
+
+bool InterpreterState::runBlock(const char* begin, const char* end) {
+  LexError lexError;
+  if (!lexBlock(begin, end, block_, lexError, &parameters_)) {
+    errorColumn_ = lexError.column + static_cast<std::uint32_t>(begin - lineStart_.at);
+    errorMessage_ = std::move(lexError.message);
+  } else {
+    const ModalState saved = state_;
+    const std::size_t movesBefore = moves_.size();
+    if (executeBlock(block_)) {
+      if (parameters_.hasStaged()) parameters_.commit();
+      return true;
+    }
+    state_ = saved;  // a bad block has no effect
+    moves_.resize(movesBefore);
+  }
+  parameters_.discardStaged();
+  return false;
+}
+
+void InterpreterState::runLine(const char* begin, const char* end) {
+  if (options_.fanuc && FanucMacro::isStatement(begin, end)) {
+    const FanucMacro::Outcome out = macro_.execute(lineStart_, end);
+    if (out.ok) {
+      jump_ = out.jump;
+      if (!out.then || runBlock(out.then, end)) return;
+    } else {
+      errorColumn_ = out.column;
+      errorMessage_ = out.message;
+    }
+  } else if (runBlock(begin, end)) {
+    return;
+  }
+  result_.errors.push_back(Diagnostic{source_, line_, errorColumn_, std::move(errorMessage_)});
+  if (!options_.keepGoing) {
+    ended_ = true;
+  } else if (result_.errors.size() >= kMaxErrors) {
+    result_.errors.push_back(Diagnostic{source_, line_, 0,
+                                        fmt::format("Too many errors ({}), giving up", kMaxErrors)});
+    ended_ = true;
+  }
+}
+
+}  // namespace isurface::gcode
