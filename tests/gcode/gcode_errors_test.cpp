@@ -41,7 +41,7 @@ TEST(gcodeErrors, LocatedAtTheOffendingWord) {
   EXPECT_EQ(firstError("M3 M5\n"), "t.ngc:1:4: Two m codes used from same modal group: M3 and M5");
   EXPECT_EQ(firstError("G1 X1\n"), "t.ngc:1:1: Cannot do G1 with zero feed rate");
   EXPECT_EQ(firstError("G0 X0\nG1 F0\n  X1\n"), "t.ngc:3:3: Cannot do G1 with zero feed rate");
-  EXPECT_EQ(firstError("G92 X0\n"), "t.ngc:1:1: G92 is not supported");
+  EXPECT_EQ(firstError("G33 X1 K1\n"), "t.ngc:1:1: G33 is not supported");
   EXPECT_EQ(firstError("G0 X1 E2\n"), "t.ngc:1:7: Unknown word starting with E");
 }
 

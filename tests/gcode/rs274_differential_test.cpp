@@ -22,10 +22,12 @@ namespace {
 
 // The end points of rs274's STRAIGHT_TRAVERSE, STRAIGHT_FEED and ARC_FEED commands, in order.
 // ARC_FEED(first end, second end, first centre, second centre, rotation, axis end, ...): the
-// plane here is always XY.
+// plane here is always XY. rs274 prints positions in the program's coordinates and G92 / G52
+// offsets apart (SET_G92_OFFSET): they are added, as iSurface's moves are in the workpiece's.
 std::vector<Vec3> motionEnds(const std::string& canon) {
-  static const std::regex motion(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED)\(([^)]*)\))");
+  static const std::regex motion(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_G92_OFFSET)\(([^)]*)\))");
   std::vector<Vec3> ends;
+  Vec3 offset = Vec3::Zero();
   std::istringstream in(canon);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
@@ -33,8 +35,9 @@ std::vector<Vec3> motionEnds(const std::string& canon) {
     std::vector<double> v;
     std::istringstream args(m[2].str());
     for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a));
-    if (m[1] == "ARC_FEED") ends.emplace_back(v.at(0), v.at(1), v.at(5));
-    else ends.emplace_back(v.at(0), v.at(1), v.at(2));
+    if (m[1] == "SET_G92_OFFSET") offset = Vec3(v.at(0), v.at(1), v.at(2));
+    else if (m[1] == "ARC_FEED") ends.push_back(Vec3(v.at(0), v.at(1), v.at(5)) + offset);
+    else ends.push_back(Vec3(v.at(0), v.at(1), v.at(2)) + offset);
   }
   return ends;
 }

@@ -77,10 +77,10 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   double oldZ = start.z();
   double x, y, r, bottom, dx = 0, dy = 0;
   if (!state_.incremental) {
-    r = rWord;
-    bottom = zWord;
-    x = block.has('X') ? length(block.get('X')) : start.x();
-    y = block.has('Y') ? length(block.get('Y')) : start.y();
+    r = rWord + state_.offset.z();
+    bottom = zWord + state_.offset.z();
+    x = block.has('X') ? length(block.get('X')) + state_.offset.x() : start.x();
+    y = block.has('Y') ? length(block.get('Y')) + state_.offset.y() : start.y();
   } else {
     dx = block.has('X') ? length(block.get('X')) : 0.0;
     dy = block.has('Y') ? length(block.get('Y')) : 0.0;

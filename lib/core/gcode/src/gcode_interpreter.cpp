@@ -30,6 +30,7 @@ std::string codeName(char letter, int tenths) {
 int groupOf(int code) {
   switch (code) {
     case kG4: case kG10: case kG28: case kG28_1: case kG30: case kG30_1: case kG53: case kG65:
+    case kG52: case kG92: case kG92_1: case kG92_2: case kG92_3:
       return kGroupNonModal;
     case kG0: case kG1: case kG2: case kG3: case kG73: case kG74: case kG80: case kG81: case kG82: case kG83:
     case kG84: case kG85: case kG86: case kG88: case kG89:
@@ -49,8 +50,7 @@ int groupOf(int code) {
     // Known RS274/NGC (LinuxCNC) codes that this interpreter does not model.
     case 50: case 51: case 52: case 53: case 70: case 80: case 171: case 181: case 191:
     case 330: case 331: case 382: case 383: case 384: case 385: case 432: case 760:
-    case 870: case 920: case 921: case 922:
-    case 923: case 950: case 700: case 710: case 711: case 720: case 721:
+    case 870: case 950: case 700: case 710: case 711: case 720: case 721:
       return -2;
     default: return -1;
   }
@@ -201,13 +201,16 @@ bool InterpreterState::executeBlock(const Block& block) {
 
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
-  const bool axesForNonModal =
-      nonModal == kG10 || nonModal == kG28 || nonModal == kG30 || nonModal == kG65;
+  const bool axesForNonModal = nonModal == kG10 || nonModal == kG28 || nonModal == kG30 || nonModal == kG65 ||
+                               nonModal == kG92 || nonModal == kG52;
+  machineCoordinates_ = nonModal == kG53;
   const bool axes = hasAxisWords(block);
   if (axesForNonModal && groups.has(kGroupMotion) && groups.code[kGroupMotion] != kG80 && axes)
     return fail(groups.column[kGroupMotion],
                 "Cannot use two G codes that both use axis values");
-  if (nonModal == kG28 || nonModal == kG30) {
+  if (nonModal == kG92 || nonModal == kG52 || nonModal == kG92_1 || nonModal == kG92_2 || nonModal == kG92_3) {
+    if (!setOffset(block, nonModal)) return false;
+  } else if (nonModal == kG28 || nonModal == kG30) {
     if (!homeMove(block, nonModal)) return false;
   } else if (nonModal == kG28_1) {
     state_.g28 = state_.position;

@@ -50,9 +50,27 @@ Vec3 InterpreterState::targetOf(const Block& block) const {
     const char c = kAxisLetter[i];
     if (!block.has(c)) continue;
     const double v = length(block.get(c));
-    t[i] = state_.incremental ? t[i] + v : v;
+    t[i] = state_.incremental ? t[i] + v : v + programOffset()[i];
   }
   return t;
+}
+
+bool InterpreterState::setOffset(const Block& block, int code) {
+  switch (code) {
+    case kG92:
+      if (!hasAxisWords(block)) return fail(block.gColumn[0], "G92 needs at least one axis word");
+      for (int i = 0; i < 3; ++i)
+        if (block.has(kAxisLetter[i])) state_.offset[i] = state_.position[i] - length(block.get(kAxisLetter[i]));
+      return true;
+    case kG52:
+      for (int i = 0; i < 3; ++i)
+        if (block.has(kAxisLetter[i])) state_.offset[i] = length(block.get(kAxisLetter[i]));
+      return true;
+    case kG92_1: state_.offset = state_.offsetSuspended = Vec3::Zero(); return true;
+    case kG92_2: state_.offsetSuspended = state_.offset, state_.offset = Vec3::Zero(); return true;
+    case kG92_3: state_.offset = state_.offsetSuspended; return true;
+    default: return true;
+  }
 }
 
 void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags) {
@@ -161,8 +179,8 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
     const char cu = kOffsetLetter[ax.u], cv = kOffsetLetter[ax.v];
     const double iu = block.has(cu) ? length(block.get(cu)) : 0.0;
     const double iv = block.has(cv) ? length(block.get(cv)) : 0.0;
-    centre[ax.u] = state_.arcAbsolute ? iu : su + iu;
-    centre[ax.v] = state_.arcAbsolute ? iv : sv + iv;
+    centre[ax.u] = state_.arcAbsolute ? iu + state_.offset[ax.u] : su + iu;
+    centre[ax.v] = state_.arcAbsolute ? iv + state_.offset[ax.v] : sv + iv;
     const double r1 = std::hypot(su - centre[ax.u], sv - centre[ax.v]);
     const double r2 = std::hypot(eu - centre[ax.u], ev - centre[ax.v]);
     auto where = [&] {

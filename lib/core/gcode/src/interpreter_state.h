@@ -20,7 +20,8 @@ namespace isurface::gcode {
 
 // G codes in tenths.
 enum GCode : int {
-  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG8 = 80, kG10 = 100, kG65 = 650,
+  kG0 = 0, kG1 = 10, kG2 = 20, kG3 = 30, kG4 = 40, kG8 = 80, kG10 = 100, kG52 = 520, kG65 = 650,
+  kG92 = 920, kG92_1 = 921, kG92_2 = 922, kG92_3 = 923,
   kG17 = 170, kG18 = 180, kG19 = 190, kG20 = 200, kG21 = 210,
   kG28 = 280, kG28_1 = 281, kG30 = 300, kG30_1 = 301,
   kG40 = 400, kG41 = 410, kG41_1 = 411, kG42 = 420, kG42_1 = 421,
@@ -77,6 +78,8 @@ struct ModalState {
   // Canned cycle words kept from block to block, mm and seconds.
   double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
   Vec3 g28 = Vec3::Zero(), g30 = Vec3::Zero();
+  // G92 / G52: the program's coordinates plus this are the workpiece's (mm); G92.2 keeps it aside.
+  Vec3 offset = Vec3::Zero(), offsetSuspended = Vec3::Zero();
 };
 
 // One block's G codes sorted by modal group.
@@ -117,6 +120,8 @@ class InterpreterState {
     return state_.inch ? programValue * kMmPerInch : programValue;
   }
   Vec3 targetOf(const Block& block) const;  // axis words applied to the current position
+  Vec3 programOffset() const { return machineCoordinates_ ? Vec3::Zero() : state_.offset; }
+  bool setOffset(const Block& block, int code);  // G92, G92.1-G92.3, G52
   bool hasAxisWords(const Block& block) const;
   bool straight(const Block& block, int motion, std::uint32_t column);
   bool arc(const Block& block, int motion, std::uint32_t column);
@@ -146,7 +151,8 @@ class InterpreterState {
   bool warnedCutterComp_ = false, warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
-  bool unitsStated_ = false;      // G20 or G21 given (or the power-on units' warning made)
+  bool unitsStated_ = false;
+  bool machineCoordinates_ = false;  // this block is G53: no G92 / G52 offset      // G20 or G21 given (or the power-on units' warning made)
   // The error of the block being executed.
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
