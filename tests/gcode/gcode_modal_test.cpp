@@ -249,3 +249,11 @@ TEST(gcodeModal, FanucCyclesLeaveG0ToG3AsTheyWere) {
   EXPECT_EQ(r.program.moves[r.program.moves.size() - 2].kind, MoveKind::Rapid);  // G0 from line 1 goes on
   EXPECT_EQ(r.program.moves.back().end, Vec3(1, 5, 20));
 }
+
+TEST(gcodeModal, ExtendedWorkOffsetsAreRecordedLikeG54) {
+  // Haas and Fanuc "G54.1 P3": like G54-G59, the moves stay in the program's coordinates.
+  const InterpretResult r = run("G21 G90\nG54.1 P3 G0 X1\nG0 X2\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), 2u);
+  EXPECT_EQ(r.program.moves[1].end, Vec3(2, 0, 0));
+}

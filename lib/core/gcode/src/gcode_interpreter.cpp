@@ -43,7 +43,7 @@ int groupOf(int code) {
     case kG40: case kG41: case kG42: case kG41_1: case kG42_1: return kGroupCutterComp;
     case kG43: case kG43_1: case kG49: return kGroupToolLength;
     case kG98: case kG99: return kGroupRetract;
-    case 540: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
+    case 540: case 541: case 550: case 560: case 570: case 580: case 590: case 591: case 592: case 593:
       return kGroupCoordSystem;
     case kG61: case kG61_1: case kG64: return kGroupPathControl;
     case kG96: case kG97: return kGroupSpindleMode;

@@ -45,7 +45,7 @@ enum Group : int {
   kGroupCutterComp,    // G40 G41 G42 G41.1 G42.1
   kGroupToolLength,    // G43 G43.1 G49
   kGroupRetract,       // G98 G99
-  kGroupCoordSystem,   // G54 .. G59.3
+  kGroupCoordSystem,   // G54 .. G59.3, G54.1 P (Fanuc and Haas extended work offsets)
   kGroupPathControl,   // G61 G61.1 G64
   kGroupSpindleMode,   // G96 G97
   kGroupCount
