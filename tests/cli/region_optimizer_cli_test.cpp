@@ -79,8 +79,9 @@ TEST(regionOptimizer, ModesAreExclusiveAndABoxMustCrossThePasses) {
 // Whatever the mode and the objective, what `optimize` writes is never worse than what it was
 // given: either the program byte for byte, or one that, simulated and measured again here (not
 // the report's numbers), is not longer (up to 5 % for --objective quality) and no figure of the
-// whole program is worse by more than 2 %. On the bundled transition sample and on a program
-// written as a CAM system writes one (tests/support/cam_style_transition.h).
+// whole program is worse by more than 2 %. On every bundled sample and on a program written as a
+// CAM system writes one (tests/support/cam_style_transition.h); the realdata programs take
+// minutes each and are measured by bench/optimize_realdata.sh.
 TEST(regionOptimizer, NoModeWritesAWorseProgram) {
   const std::string cam = writeScratch("cam-style-transition.nc", isurface::testing::camStyleTransitionProgram());
   const auto figuresOf = [](const std::string& nc, double& time) {
@@ -89,10 +90,17 @@ TEST(regionOptimizer, NoModeWritesAWorseProgram) {
     time = machiningTime(*run.samples);
     return measureQualityFigures(*run.samples, *run.mesh);
   };
-  for (const std::string& program : {sourcePath("samples/transition-surface.nc"), cam}) {
+  const std::vector<const char*> everyMode = {"--all", "--box 20,0,30,27", "--auto", "--auto --objective quality",
+                                             "--auto --objective time"};
+  const std::pair<std::string, std::vector<const char*>> cases[] = {
+      {sourcePath("samples/transition-surface.nc"), everyMode},
+      {cam, everyMode},
+      {sourcePath("samples/wuzhishan.nc"), {"--auto", "--all"}},
+      {sourcePath("samples/cola-bottle-bottom.nc"), {"--auto"}}};
+  for (const auto& [program, modes] : cases) {
     double timeBefore = 0;
     const QualityFigures before = figuresOf(program, timeBefore);
-    for (const char* mode : {"--all", "--box 20,0,30,27", "--auto", "--auto --objective quality", "--auto --objective time"}) {
+    for (const char* mode : modes) {
       const std::string out = (scratchDir() / "never-worse.nc").string(), report = (scratchDir() / "never-worse.json").string();
       const CommandResult r = runCli("optimize " + program + " " + mode + " -o " + out + " --report " + report);
       ASSERT_EQ(r.exitCode, 0) << mode << ": " << r.err;
