@@ -126,3 +126,27 @@ TEST(gcodeControlFlow, RunawayProgramsStopWithAnError) {
   EXPECT_NE(loop.find("has run 1000000 times"), std::string::npos) << loop;
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(60));  // an error, not a hang
 }
+
+TEST(gcodeControlFlow, ARecursiveCallHasItsOwnLoopsAndReturnValues) {
+  // The inner call's `o101 while` is not its caller's loop, though the label and line are the same.
+  const std::string recursion =
+      "G21 G90 F100\n"
+      "o<r> sub\n"
+      "  #<i> = 0\n"
+      "  o101 while [#<i> LT 2]\n"
+      "    #<i> = [#<i> + 1]\n"
+      "    G1 X[#1 * 10 + #<i>]\n"
+      "    o102 if [#1 GT 0]\n"
+      "      o<r> call [#1 - 1]\n"
+      "    o102 endif\n"
+      "  o101 endwhile\n"
+      "o<r> endsub\n"
+      "o<r> call [1]\n"
+      "M2\n";
+  EXPECT_EQ(xs(recursion), std::vector<double>({11, 1, 2, 12, 1, 2}));  // as rs274
+  // A call that returns nothing leaves nothing of an earlier call's value.
+  EXPECT_EQ(xs("o1 sub\no1 return [5]\no1 endsub\no2 sub\no2 endsub\no1 call\no2 call\nG21 G0 X#<_value_returned> Y#<_value>\n"),
+            std::vector<double>({0}));
+  // A setting may not come before an O word: it would be read as the label.
+  EXPECT_EQ(firstError("G21\n#1=7 o100 sub\nG0 X1\no100 endsub\n"), "t.ngc:2:6: An O-word must start the block");
+}

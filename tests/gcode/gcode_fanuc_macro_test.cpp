@@ -60,3 +60,26 @@ TEST(gcodeFanucMacro, MistakesAreErrorsNamingTheLine) {
   // In LinuxCNC's dialect these are not statements: the words are refused as written.
   EXPECT_NE(firstError("GOTO 10\n"), "<no error>");
 }
+
+TEST(gcodeFanucMacro, GotoStaysInItsProgramAndLoopsEndWithTheirCall) {
+  // GOTO 10 in O100 goes to O100's N10, not O200's.
+  EXPECT_EQ(xs(fanuc("O1\nG21 G90\nM98 P100\nM98 P200\nM30\nO100\n#1=0\nN10 G1 X[#1] F10\n#1=#1+1\n"
+                     "IF [#1 LT 2] GOTO 10\nM99\nO200\nN10 G1 Y5 F10\nM99\n")),
+            std::vector<double>({0, 1, 1}));
+  // M99 from inside a subprogram's loop ends that loop, not the caller's.
+  EXPECT_EQ(xs(fanuc("O1\nG21 G90\n#1=0\nWHILE [#1 LT 2] DO1\nM98 P100\n#1=#1+1\nEND1\nG0 X9\nM30\n"
+                     "O100\nWHILE [1] DO1\nG1 X[#1] F10\nM99\nEND1\nM99\n")),
+            std::vector<double>({0, 1, 9}));
+  // A GOTO out of an inner loop leaves it; the outer loop goes on.
+  EXPECT_EQ(xs(fanuc("G21\n#1=0\nWHILE [#1 LT 2] DO1\n#1=#1+1\nWHILE [1] DO2\nGOTO 50\nEND2\nN50 G0 X#1\nEND1\n")),
+            std::vector<double>({1, 2}));
+}
+
+TEST(gcodeFanucMacro, ALoopNumberAtTheVeryEndOfTheTextIsReadWithinIt) {
+  // No newline after the last END1: its number must be read without running past the text.
+  std::string text = "G21\n#1=0\nWHILE [#1 LT 2] DO1\n#1=#1+1\nG0 X#1\nEND1";
+  EXPECT_EQ(xs(fanuc(text)), std::vector<double>({1, 2}));
+  // Errors after THEN count columns from the line's start.
+  EXPECT_EQ(fanuc("G21\n#1=1\nN10 IF [#1 EQ 1] THEN G1 X1 I5 F10\n").errors.at(0).str(),
+            "t.ngc:3:29: i word with no G2 or G3 to use it");
+}

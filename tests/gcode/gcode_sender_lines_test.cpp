@@ -25,3 +25,10 @@ TEST(gcodeSenderLines, HashCommentLinesAreNotParameterSettings) {
   ASSERT_EQ(r.program.warnings.size(), 1u);
   EXPECT_NE(r.program.warnings[0].message.find("'#' comment"), std::string::npos);
 }
+
+TEST(gcodeSenderLines, ASettingWithABlankAfterItsHashIsASetting) {
+  const InterpretResult r = run("G21\n# 5 = 3\nG0 X#5\n");
+  ASSERT_TRUE(r.ok()) << r.errors.front().str();
+  EXPECT_EQ(r.program.moves.at(0).end.x(), 3);
+  EXPECT_TRUE(r.program.warnings.empty());
+}

@@ -63,3 +63,16 @@ TEST(gcodeSubprograms, M99EndingAMainProgramIsReadOnce) {
   ASSERT_EQ(r.program.warnings.size(), 1u);
   EXPECT_NE(r.program.warnings[0].message.find("read once"), std::string::npos);
 }
+
+TEST(gcodeSubprograms, TheLinesSettingsBelongToTheCallerAndG65LettersAreNotWords) {
+  // "#1=5 G65 P100 A2": the caller's #1 becomes 5, the macro's #1 is its A; "#1=7 M99" is the
+  // macro's own. G65's F is an argument, not the feed.
+  const Program p = interpret(
+      "G21 G90\nG1 F100\n#1=1\n#1=5 G65 P100 A2 F7\nG1 Y[#1]\nM2\nO100\nG1 X[#1] Z#9\n#1=7 M99\n");
+  ASSERT_EQ(p.moves.size(), 2u);
+  EXPECT_EQ(p.moves[0].end, Vec3(2, 0, 7));
+  EXPECT_EQ(p.moves[1].end, Vec3(2, 5, 7));
+  EXPECT_FLOAT_EQ(p.moves[1].feed, 100.0f);
+  // L0 runs nothing, wherever the subprogram stands.
+  EXPECT_EQ(interpret("G21\nM98 P100 L0\nG0 Z1\nM30\nO100\nG0 X1\nM99\n").moves.size(), 1u);
+}

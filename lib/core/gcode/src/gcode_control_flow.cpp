@@ -148,8 +148,9 @@ bool ControlFlow::condition(const OLine& o, const char* end, double& value, Outc
 }
 
 ControlFlow::Loop* ControlFlow::findLoop(const std::string& label) {
-  for (auto it = loops_.rbegin(); it != loops_.rend(); ++it)
-    if (it->label == label) return &*it;
+  const std::size_t base = frames_.empty() ? 0 : frames_.back().loops;
+  for (std::size_t k = loops_.size(); k > base; --k)
+    if (loops_[k - 1].label == label) return &loops_[k - 1];
   return nullptr;
 }
 
@@ -170,6 +171,9 @@ ControlFlow::Outcome ControlFlow::call(const OLine& o, const char* end, LinePosi
                               kMaxCallDepth, shown(o.label));
     return out;
   }
+  // What a call returns is set by its return, or is nothing.
+  parameters_.set("_value", 0.0);
+  parameters_.set("_value_returned", 0.0);
   Frame frame;
   frame.label = o.label;
   frame.back = back;
@@ -187,6 +191,7 @@ ControlFlow::Outcome ControlFlow::callProgram(const std::string& program,
                                               const std::vector<std::pair<int, double>>& arguments, bool macro,
                                               long times, LinePosition here, LinePosition next, std::uint32_t column) {
   seen_ = true;
+  if (times < 1) return {};  // L0: no run at all
   Skip request = skipTo(SkipTo::FindProgram, program, here.line);
   request.back = next;
   request.programArguments = arguments;
@@ -273,8 +278,12 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     out.message = std::move(message);
     return out;
   };
-  const bool loopOnTop = !loops_.empty() && loops_.back().label == o.label;
-  const bool branchOnTop = !branches_.empty() && branches_.back().label == o.label;
+  // Only what this call opened counts: a recursive call meets its caller's loops and ifs, with
+  // the same labels on the same lines.
+  const std::size_t loopBase = frames_.empty() ? 0 : frames_.back().loops;
+  const std::size_t branchBase = frames_.empty() ? 0 : frames_.back().branches;
+  const bool loopOnTop = loops_.size() > loopBase && loops_.back().label == o.label;
+  const bool branchOnTop = branches_.size() > branchBase && branches_.back().label == o.label;
   double v = 0;
   switch (o.keyword) {
     case Keyword::None: return out;

@@ -37,6 +37,7 @@ class ControlFlow {
   bool skipping() const { return skip_.has_value(); }
   // Some control flow was met: lines already read may be read again.
   bool seen() const { return seen_; }
+  std::size_t callDepth() const { return frames_.size(); }
 
   struct Outcome {
     bool ok = true;

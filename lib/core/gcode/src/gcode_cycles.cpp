@@ -75,6 +75,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
              fmt::format("{} with Q (peck tapping on Fanuc and Haas controls) is expanded as one tap to the bottom", name));
   const Vec3 start = state_.position;
   double oldZ = start.z();
+  if (first) state_.cycleStartZ = oldZ;
   double x, y, r, bottom, dx = 0, dy = 0;
   if (!state_.incremental) {
     r = rWord + state_.offset.z();
@@ -84,7 +85,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   } else {
     dx = block.has('X') ? length(block.get('X')) : 0.0;
     dy = block.has('Y') ? length(block.get('Y')) : 0.0;
-    r = rWord + oldZ;
+    r = rWord + state_.cycleStartZ;
     bottom = r + zWord;
     x = start.x();
     y = start.y();
@@ -167,10 +168,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
         break;
       default: break;
     }
-    if (motion == kG88) {
-      oldZ = bottom;  // the program goes on from where the hand retract is taken to start
-      continue;
-    }
+
     oldZ = clear;
   }
   state_.cycleZ = zWord;

@@ -35,6 +35,14 @@ std::optional<long> blockNumberOf(const char* p, const char* end) {
   return digits ? std::optional<long>(n) : std::nullopt;
 }
 
+// A loop number (DO m, END m), read within the line; -1 when there is none.
+int loopNumber(const char* p, const char* end) {
+  int n = 0;
+  bool digits = false;
+  for (; p < end && std::isdigit(static_cast<unsigned char>(*p)) && n < 100000; ++p) n = n * 10 + (*p - '0'), digits = true;
+  return digits ? n : -1;
+}
+
 const char* lineEnd(const char* p, const char* end) {
   const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
   return nl ? static_cast<const char*>(nl) : end;
@@ -51,21 +59,49 @@ bool FanucMacro::isStatement(const char* begin, const char* end) {
   return false;
 }
 
-std::optional<LinePosition> FanucMacro::findBlock(long number, LinePosition from) const {
-  // Forward from `from`, then from the start of the program, as a Fanuc control searches.
+namespace {
+
+// Where one program of a file ends and the next begins: a '%' line or an "O<number>" line.
+bool programBoundary(const char* p, const char* e) {
+  p = skipLineBlanks(p, e);
+  if (p < e && *p == '%') return true;
+  if (p >= e || (*p != 'O' && *p != 'o')) return false;
+  const char* q = skipLineBlanks(p + 1, e);
+  if (q >= e || !std::isdigit(static_cast<unsigned char>(*q))) return false;
+  while (q < e && (std::isdigit(static_cast<unsigned char>(*q)) || isLineBlank(*q))) ++q;
+  return q >= e || !std::isalpha(static_cast<unsigned char>(*q));  // not "o100 if ..."
+}
+
+}  // namespace
+
+std::optional<LinePosition> FanucMacro::findBlock(long number, LinePosition from) {
+  // Within the program the GOTO stands in: forward to its end, then from its start, as a Fanuc
+  // control searches. A GOTO of a line goes where it went before (programs that loop by GOTO).
+  const auto known = found_.find({from.line, number});
+  if (known != found_.end()) return known->second;
+  std::optional<LinePosition> target;
   std::uint32_t line = from.line;
-  for (const char* p = from.at; p < end_; ++line) {
+  for (const char* p = from.at; p < end_ && !target; ++line) {
     const char* e = lineEnd(p, end_);
-    if (blockNumberOf(p, e) == number) return LinePosition{p, line};
+    if (programBoundary(p, e)) break;
+    if (blockNumberOf(p, e) == number) target = LinePosition{p, line};
     p = e + 1;
   }
+  LinePosition start{begin_, 1};  // of this program: after the last boundary before `from`
   line = 1;
-  for (const char* p = begin_; p < from.at && p < end_; ++line) {
+  for (const char* p = begin_; !target && p < from.at && p < end_; ++line) {
     const char* e = lineEnd(p, end_);
-    if (blockNumberOf(p, e) == number) return LinePosition{p, line};
+    if (programBoundary(p, e)) start = LinePosition{e + 1, line + 1};
     p = e + 1;
   }
-  return std::nullopt;
+  line = start.line;
+  for (const char* p = start.at; !target && p < from.at && p < end_; ++line) {
+    const char* e = lineEnd(p, end_);
+    if (blockNumberOf(p, e) == number) target = LinePosition{p, line};
+    p = e + 1;
+  }
+  found_[{from.line, number}] = target;
+  return target;
 }
 
 std::optional<LinePosition> FanucMacro::findEnd(int id, LinePosition from) const {
@@ -73,7 +109,7 @@ std::optional<LinePosition> FanucMacro::findEnd(int id, LinePosition from) const
   for (const char* p = from.at; p < end_; ++line) {
     const char* e = lineEnd(p, end_);
     const char* q = pastBlockNumber(p, e);
-    if (keyword(q, e, "end") && std::isdigit(static_cast<unsigned char>(q < e ? *q : ' ')) && std::atoi(q) == id)
+    if (keyword(q, e, "end") && loopNumber(q, e) == id)
       return LinePosition{e + 1, line + 1};
     p = e + 1;
   }
@@ -136,12 +172,16 @@ FanucMacro::Outcome FanucMacro::execute(LinePosition here, const char* end) {
   if (keyword(p, end, "while")) {
     if (!condition(v)) return out;
     p = skipLineBlanks(p, end);
-    if (!keyword(p, end, "do") || p >= end || !std::isdigit(static_cast<unsigned char>(*p)))
-      return error("WHILE [..] must go on with DO and a loop number");
-    const int id = std::atoi(p);
-    const bool again = !loops_.empty() && loops_.back().id == id && loops_.back().top.line == here.line;
+    const int id = keyword(p, end, "do") ? loopNumber(p, end) : -1;
+    if (id < 0) return error("WHILE [..] must go on with DO and a loop number");
+    // Back at the WHILE of a loop already running (from its END): the same loop, and any loop
+    // opened inside it and left by a GOTO is over.
+    std::size_t k = loops_.size();
+    while (k > 0 && !(loops_[k - 1].top.line == here.line && loops_[k - 1].depth == depth_)) --k;
+    const bool again = k > 0;
+    if (again) loops_.resize(k);
     if (v != 0) {
-      if (!again) loops_.push_back(Loop{id, here});
+      if (!again) loops_.push_back(Loop{id, here, depth_});
       return out;
     }
     if (again) loops_.pop_back();
@@ -151,8 +191,12 @@ FanucMacro::Outcome FanucMacro::execute(LinePosition here, const char* end) {
     return out;
   }
   if (keyword(p, end, "end")) {
-    const int id = p < end ? std::atoi(p) : 0;
-    if (loops_.empty() || loops_.back().id != id) return error(fmt::format("END{} without its WHILE .. DO{}", id, id));
+    const int id = loopNumber(p, end);
+    // Loops left by a GOTO from inside them are over: the innermost loop of this number is the one.
+    std::size_t k = loops_.size();
+    while (k > 0 && !(loops_[k - 1].id == id && loops_[k - 1].depth == depth_)) --k;
+    if (k == 0) return error(fmt::format("END{} without its WHILE .. DO{}", id, id));
+    loops_.resize(k);
     if (!count(out, column)) return out;
     out.jump = loops_.back().top;
     return out;

@@ -4,6 +4,8 @@
 // WHILE [cond] DO m ... END m. Lines run where they stand, so every move keeps its physical line.
 // Private to the gcode module.
 #include <cstdint>
+#include <map>
+#include <utility>
 #include <optional>
 #include <string>
 #include <vector>
@@ -32,12 +34,20 @@ class FanucMacro {
   };
   Outcome execute(LinePosition here, const char* end);
 
+  // Subprogram calls in progress (M98, G65): a loop belongs to the call it began in, and those of
+  // a call that returned (M99) are over.
+  void setCallDepth(std::size_t depth) {
+    depth_ = depth;
+    while (!loops_.empty() && loops_.back().depth > depth_) loops_.pop_back();
+  }
+
  private:
   struct Loop {
     int id;
     LinePosition top;  // the WHILE line, evaluated again each round
+    std::size_t depth;  // subprogram calls it runs inside
   };
-  std::optional<LinePosition> findBlock(long number, LinePosition from) const;
+  std::optional<LinePosition> findBlock(long number, LinePosition from);
   std::optional<LinePosition> findEnd(int id, LinePosition from) const;
   bool count(Outcome& out, std::uint32_t column);
 
@@ -46,6 +56,8 @@ class FanucMacro {
   const char* end_ = nullptr;
   std::vector<Loop> loops_;
   std::uint64_t jumps_ = 0;
+  std::size_t depth_ = 0;
+  std::map<std::pair<std::uint32_t, long>, std::optional<LinePosition>> found_;  // (line after the GOTO, number)
 };
 
 }  // namespace isurface::gcode

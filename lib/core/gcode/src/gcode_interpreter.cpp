@@ -171,6 +171,11 @@ bool InterpreterState::executeBlock(const Block& block) {
 
   const std::size_t movesBefore = moves_.size();
 
+  // A call or a return changes whose parameters #1.. are: the line's settings are the caller's
+  // (or the subprogram's), made before it. G65's letters are its arguments, not words.
+  if (groups.code[kGroupNonModal] == kG65 || mCode[kMSubprogram] >= 0) parameters_.commit();
+  if (groups.code[kGroupNonModal] == kG65) return macroCall(block, groups.column[kGroupNonModal]);
+
   // RS274/NGC order of execution: feed mode, F, S, T, M6, spindle, coolant, dwell, plane, units,
   // cutter compensation, tool length, coordinate system, path control, distance mode, retract
   // mode, home / non-modal codes, motion, stops.
@@ -264,7 +269,6 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (explicitMotion) state_.motion = motion;
   if (explicitMotion && (motion == kG0 || motion == kG1 || motion == kG2 || motion == kG3)) state_.pathMotion = motion;
 
-  if (nonModal == kG65) return macroCall(block, groups.column[kGroupNonModal]);
 
   // Words that no code of this block used.
   for (char c : {'I', 'J', 'K'}) {

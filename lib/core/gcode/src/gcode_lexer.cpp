@@ -247,7 +247,10 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error,
     block.kind = BlockKind::SenderCommand;
     return true;
   }
-  if (*p == '#' && (p + 1 == end || !(classOf(p[1]) == kDigit || p[1] == '<' || p[1] == '[' || p[1] == '#'))) {
+  const char* afterHash = p + 1;
+  while (afterHash < end && classOf(*afterHash) == kBlank) ++afterHash;
+  if (*p == '#' && (afterHash == end || !(classOf(*afterHash) == kDigit || *afterHash == '<' || *afterHash == '[' ||
+                                          *afterHash == '#'))) {
     block.kind = BlockKind::SenderComment;
     return true;
   }
@@ -272,7 +275,8 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error,
       if ((kWordLetters & (1u << index)) == 0)
         return fail(wordStart, fmt::format("Unknown word starting with {}", upper));
       if (upper == 'O') {
-        if ((block.present & ~letterBit('N')) != 0 || block.gCount || block.mCount)
+        if ((block.present & ~letterBit('N')) != 0 || block.gCount || block.mCount ||
+            (parameters && parameters->hasStaged()))
           return fail(wordStart, "An O-word must start the block");
         // Its label and what follows are read by the control flow (gcode_control_flow.h).
         block.kind = BlockKind::OWord;

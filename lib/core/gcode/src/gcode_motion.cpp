@@ -61,14 +61,18 @@ bool InterpreterState::setOffset(const Block& block, int code) {
       if (!hasAxisWords(block)) return fail(block.gColumn[0], "G92 needs at least one axis word");
       for (int i = 0; i < 3; ++i)
         if (block.has(kAxisLetter[i])) state_.offset[i] = state_.position[i] - length(block.get(kAxisLetter[i]));
+      state_.offsetStored = state_.offset;
       return true;
     case kG52:
       for (int i = 0; i < 3; ++i)
         if (block.has(kAxisLetter[i])) state_.offset[i] = length(block.get(kAxisLetter[i]));
+      state_.offsetStored = state_.offset;
       return true;
-    case kG92_1: state_.offset = state_.offsetSuspended = Vec3::Zero(); return true;
-    case kG92_2: state_.offsetSuspended = state_.offset, state_.offset = Vec3::Zero(); return true;
-    case kG92_3: state_.offset = state_.offsetSuspended; return true;
+    // As LinuxCNC keeps the offset in parameters #5211-#5213: G92.2 sets it to zero and leaves
+    // them, G92.3 takes it from them, G92.1 clears both.
+    case kG92_1: state_.offset = state_.offsetStored = Vec3::Zero(); return true;
+    case kG92_2: state_.offset = Vec3::Zero(); return true;
+    case kG92_3: state_.offset = state_.offsetStored; return true;
     default: return true;
   }
 }

@@ -127,9 +127,11 @@ void InterpreterState::run(std::string_view text) {
 }
 
 bool InterpreterState::runBlock(const char* begin, const char* end) {
+  // Columns count from the line's start (the block may be what follows a Fanuc IF .. THEN).
+  const auto shift = static_cast<std::uint32_t>(begin - lineStart_.at);
   LexError lexError;
   if (!lexBlock(begin, end, block_, lexError, &parameters_)) {
-    errorColumn_ = lexError.column + static_cast<std::uint32_t>(begin - lineStart_.at);
+    errorColumn_ = lexError.column + shift;
     errorMessage_ = std::move(lexError.message);
   } else {
     const ModalState saved = state_;
@@ -140,12 +142,14 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     }
     state_ = saved;  // a bad block has no effect
     moves_.resize(movesBefore);
+    if (errorColumn_ > 0 && block_.kind != BlockKind::OWord) errorColumn_ += shift;
   }
   parameters_.discardStaged();
   return false;
 }
 
 void InterpreterState::runLine(const char* begin, const char* end) {
+  if (options_.fanuc) macro_.setCallDepth(flow_.callDepth());
   if (options_.fanuc && FanucMacro::isStatement(begin, end)) {
     const FanucMacro::Outcome out = macro_.execute(lineStart_, end);
     if (out.ok) {

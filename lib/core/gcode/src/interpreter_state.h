@@ -78,8 +78,10 @@ struct ModalState {
   // Canned cycle words kept from block to block, mm and seconds.
   double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
   Vec3 g28 = Vec3::Zero(), g30 = Vec3::Zero();
-  // G92 / G52: the program's coordinates plus this are the workpiece's (mm); G92.2 keeps it aside.
-  Vec3 offset = Vec3::Zero(), offsetSuspended = Vec3::Zero();
+  // G92 / G52: the program's coordinates plus this are the workpiece's (mm); `offsetStored` is
+  // the last one set (G92.3 brings it back).
+  Vec3 offset = Vec3::Zero(), offsetStored = Vec3::Zero();
+  double cycleStartZ = 0;       // mm, where the canned cycle began (its G91 R is measured from it)
 };
 
 // One block's G codes sorted by modal group.
