@@ -92,11 +92,17 @@ TEST(regionOptimizer, NoModeWritesAWorseProgram) {
   };
   const std::vector<const char*> everyMode = {"--all", "--box 20,0,30,27", "--auto", "--auto --objective quality",
                                              "--auto --objective time"};
+#ifdef ISURFACE_SANITIZED
+  // Under the sanitizers, which look for memory errors rather than results, the small CAM-style
+  // program alone runs every path (the samples take minutes there).
+  const std::pair<std::string, std::vector<const char*>> cases[] = {{cam, everyMode}};
+#else
   const std::pair<std::string, std::vector<const char*>> cases[] = {
       {sourcePath("samples/transition-surface.nc"), everyMode},
       {cam, everyMode},
       {sourcePath("samples/wuzhishan.nc"), {"--auto", "--all"}},
       {sourcePath("samples/cola-bottle-bottom.nc"), {"--auto"}}};
+#endif
   for (const auto& [program, modes] : cases) {
     double timeBefore = 0;
     const QualityFigures before = figuresOf(program, timeBefore);
