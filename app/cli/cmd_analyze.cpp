@@ -18,7 +18,8 @@ namespace isurface::cli {
 namespace {
 
 struct AnalyzeOptions {
-  std::string gcode, biip, output, png, machine;
+  std::string gcode, biip, output, png;
+  MachineOption machine;
   bool force = false;
   QualityThresholds thresholds;
   std::size_t top = 20;
@@ -121,7 +122,7 @@ Command analyzeCommand() {
                      "acceleration difference between neighbouring passes, mm/s^2")->capture_default_str();
       sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str();
       sub.add_option("--top", o->top, "regions listed at most")->capture_default_str();
-      sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      o->machine.addTo(sub, "machine description for the simulation (JSON)");
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runAnalyze(*o); };
     }};

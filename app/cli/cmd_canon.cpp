@@ -21,7 +21,8 @@ namespace {
 
 std::function<int()> setup(CLI::App& sub) {
   struct Args {
-    std::string input, output, machine;
+    std::string input, output;
+    MachineOption machine;
     bool keepGoing = false;
   };
   auto args = std::make_shared<Args>();
@@ -29,8 +30,8 @@ std::function<int()> setup(CLI::App& sub) {
   sub.add_flag("--keep-going", args->keepGoing,
                "skip bad blocks, report every error and print all moves that could be made");
   sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout");
-  sub.add_option("--machine", args->machine,
-                 "machine description (JSON) whose control reads the program: its dialect and power-on units");
+  args->machine.addTo(sub, "machine description (JSON) whose control reads the program: its dialect, power-on "
+                           "units and tools");
   sub.footer("Output: one line per move, `LINE G0|G1 X Y Z F`, `LINE G2|G3 X Y Z CX CY CZ PLANE "
              "TURNS F` or `LINE G4 P<seconds>`, in workpiece mm and mm/min (docs/canon-format.md).");
   return [args]() -> int {

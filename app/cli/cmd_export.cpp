@@ -24,7 +24,7 @@ struct ExportOptions {
 int runExport(const ExportOptions& o) {
   if (o.surface != "commanded" && o.surface != "feedback")
     throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
-  const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, "", o.force);
+  const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, MachineOption{}, o.force);
   const Program* program = run.program.get();
   const Trajectory& samples = *run.samples;
   const bool feedback = o.surface == "feedback";

@@ -29,7 +29,8 @@ namespace isurface::cli {
 namespace {
 
 struct OptimizeCliOptions {
-  std::string input, output, lines, box, report, pngBefore, pngAfter, pngDifference, machine;
+  std::string input, output, lines, box, report, pngBefore, pngAfter, pngDifference;
+  MachineOption machine;
   Objective objective = Objective::Balanced;
   bool automatic = false, all = false;
   double chordTolerance = 0.002;
@@ -184,7 +185,7 @@ Command optimizeCommand() {
       sub.add_option("--png-diff", o->pngDifference,
                      "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
-      sub.add_option("--machine", o->machine, "machine description (JSON)");
+      o->machine.addTo(sub, "machine description (JSON)");
       sub.add_option("--objective", o->objective,
                      "balanced: no figure worse, time not longer (first such candidate); time: the fastest such "
                      "candidate; quality: the candidate that improves the region most, up to 5 % longer")

@@ -22,7 +22,8 @@ namespace isurface::cli {
 namespace {
 
 struct RenderOptions {
-  std::string gcode, biip, output, machine;
+  std::string gcode, biip, output;
+  MachineOption machine;
   std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "rainbow";
   std::string range, percentiles = "1:99", surface = "commanded";
   long highlightLine = -1;
@@ -136,7 +137,7 @@ Command renderCommand() {
       sub.add_flag("--color-toolpath", o->colorToolpath, "draw the sampled cutting path coloured by the quantity");
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
-      sub.add_option("--machine", o->machine, "machine description for the simulation (JSON)");
+      o->machine.addTo(sub, "machine description for the simulation (JSON)");
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
       return [o] { return runRender(*o); };

@@ -13,7 +13,8 @@ namespace isurface::cli {
 namespace {
 
 struct SimulateOptions {
-  std::string input, output, machine;
+  std::string input, output;
+  MachineOption machine;
   bool keepGoing = false, json = false;
 };
 
@@ -60,7 +61,7 @@ Command simulateCommand() {
       auto o = std::make_shared<SimulateOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
       sub.add_option("-o,--output", o->output, "Biip file to write")->required();
-      sub.add_option("--machine", o->machine, "machine description (JSON); default: built-in");
+      o->machine.addTo(sub, "machine description (JSON); default: built-in");
       sub.add_flag("--keep-going", o->keepGoing, "report every bad block, not only the first");
       sub.add_flag("--json", o->json, "print the summary as JSON");
       return [o] { return runSimulate(*o); };

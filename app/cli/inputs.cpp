@@ -26,6 +26,19 @@ Machine loadMachineOption(const std::string& path) {
   return path.empty() ? defaultMachine() : loadMachine(path);
 }
 
+void MachineOption::addTo(CLI::App& sub, const std::string& help) {
+  sub.add_option("--machine", description, help);
+  sub.add_option("--tool-table", toolTable,
+                 "tool table for cutter radius compensation (LinuxCNC .tbl; its lengths in the machine's "
+                 "tools.units, mm unless it says inch)");
+}
+
+Machine loadMachineOption(const MachineOption& option) {
+  Machine machine = loadMachineOption(option.description);
+  if (!option.toolTable.empty()) machine.toolDiameters = readToolTable(option.toolTable, machine.toolTableInch);
+  return machine;
+}
+
 std::string formatDuration(double seconds) {
   if (!std::isfinite(seconds) || seconds < 0) seconds = 0;
   const long long ms = std::llround(seconds * 1000.0);

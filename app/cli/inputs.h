@@ -2,6 +2,8 @@
 // Loading what commands share: a G-code program (with its diagnostics printed) and a machine.
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "isurface/base/diagnostic.h"
 #include "isurface/machine/machine.h"
 #include "isurface/gcode/program.h"
@@ -17,8 +19,18 @@ struct CommandExit {
 // Any error throws CommandExit{kExitInputError}: with keepGoing, after reporting them all.
 Program loadProgram(const std::string& path, bool keepGoing, bool showProgress = true);
 
+// --machine and --tool-table, as the commands that read G-code take them.
+struct MachineOption {
+  std::string description;  // JSON; empty: the built-in machine
+  std::string toolTable;    // LinuxCNC .tbl, in the machine's tool table units (tools.units)
+  bool given() const { return !description.empty() || !toolTable.empty(); }
+  void addTo(CLI::App& sub, const std::string& help);
+};
+
 // The machine of --machine, or the built-in default when the path is empty.
 Machine loadMachineOption(const std::string& path);
+// With the tools of --tool-table, when given.
+Machine loadMachineOption(const MachineOption& option);
 
 // Stops a command on a bad option value, naming the file it was given for.
 [[noreturn]] inline void badOption(const std::string& file, const std::string& message) {

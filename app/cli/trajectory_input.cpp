@@ -19,11 +19,11 @@ Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels&
   return t;
 }
 
-OpenedRun openRunOnTerminal(const RunFiles& files, const std::string& machineOption, bool force,
+OpenedRun openRunOnTerminal(const RunFiles& files, const MachineOption& machineOption, bool force,
                             const TrajectoryChannels& channels) {
   OpenRunRequest request;
   request.files = files;
-  if (!machineOption.empty()) request.machine = loadMachineOption(machineOption);
+  if (machineOption.given()) request.machine = loadMachineOption(machineOption);
   request.channels = channels;
   request.force = force;
   const std::string& first = files.program.empty() ? files.dump : files.program;

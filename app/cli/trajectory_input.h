@@ -11,9 +11,9 @@ namespace isurface::cli {
 // A dump alone (no program), e.g. a machine trace.
 Trajectory readTrajectory(const std::string& biipPath, const TrajectoryChannels& channels = {});
 
-// `machineOption` is the path given to --machine (empty: the default machine); it is used when
+// `machineOption` is what --machine and --tool-table gave (none: the default machine); it is used when
 // there is no dump to read. A dump refused as another program's names --force in its message.
-OpenedRun openRunOnTerminal(const RunFiles& files, const std::string& machineOption, bool force,
+OpenedRun openRunOnTerminal(const RunFiles& files, const MachineOption& machineOption, bool force,
                             const TrajectoryChannels& channels = {});
 
 }  // namespace isurface::cli

@@ -74,11 +74,11 @@ TEST(gcodeCanonCli, ErrorsExitWithTwo) {
 }
 
 TEST(gcodeCanonCli, WarningsGoToStderr) {
-  const std::string path = writeScratch("comp.ngc", "G41 D1 G1 X1 F100\n");
+  const std::string path = writeScratch("no-units.ngc", "G1 X1 F100\n");
   const test::CommandResult r = test::runCli("canon " + path);
   EXPECT_EQ(r.exitCode, 0);
   EXPECT_EQ(r.out, "1 G1 1.0000 0.0000 0.0000 100.0000\n");
-  EXPECT_EQ(r.err.rfind("warning: " + path + ":1:1: Cutter radius compensation", 0), 0u) << r.err;
+  EXPECT_EQ(r.err.rfind("warning: " + path + ":1:1: no G20 or G21 before the first length", 0), 0u) << r.err;
 }
 
 TEST(gcodeCanonCli, MissingInput) {

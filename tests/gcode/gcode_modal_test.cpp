@@ -168,14 +168,14 @@ TEST(gcodeModal, HomeMoves) {
             "t.ngc:1:5: Cannot use two G codes that both use axis values");
 }
 
-TEST(gcodeModal, CutterCompensationIsRecordedWithOneWarning) {
-  const InterpretResult r = runOk("G21 G41 D1 G1 X1 F100\nG42 X2\nG40 X3\nG41.1 D2 X4\n");
+TEST(gcodeModal, CutterCompensationWithoutAToolTableLeavesThePathAsProgrammed) {
+  const InterpretResult r = runOk("G21 G41 D1 G1 X1 F100\nG40 X2\nG42 X3\nG40\nG41.1 D0 X4\n");
   ASSERT_EQ(r.program.moves.size(), 4u);
   EXPECT_EQ(r.program.moves[1].end, Vec3(2, 0, 0));
-  ASSERT_EQ(r.program.warnings.size(), 1u);
-  EXPECT_EQ(r.program.warnings[0].line, 1u);
-  EXPECT_EQ(r.program.warnings[0].column, 5u);
-  EXPECT_NE(r.program.warnings[0].message.find("G41/G42"), std::string::npos);
+  EXPECT_EQ(r.program.moves[3].end, Vec3(4, 0, 0));
+  EXPECT_TRUE(r.program.warnings.empty());
+  // Changing sides needs G40 between, as in LinuxCNC.
+  EXPECT_EQ(firstError("G21 G41 D1 G1 X1 F100\nG42 X2\n"), "t.ngc:2:1: Cannot turn cutter radius comp on when already on");
 }
 
 TEST(gcodeModal, AcceptedCodesWithoutEffectOnCoordinates) {

@@ -1,18 +1,23 @@
 // The interpreter against LinuxCNC's rs274 on programs that use parameters and expressions
 // (tests/generators/make_expression_programs.py), O-word control flow
-// (tests/generators/make_control_flow_programs.py), and the LinuxCNC programs of
-// ../shared/realdata: every motion command's end point, in order, as rs274 printed it (4
-// decimals, program units). rs274's output is recorded in tests/data/rs274 so that the
+// (tests/generators/make_control_flow_programs.py), cutter radius compensation
+// (tests/generators/make_cutter_comp_programs.py, with their tool table), and the LinuxCNC
+// programs of ../shared/realdata: every motion command's end point, in order, as rs274 printed it
+// (4 decimals, program units). rs274's output is recorded in tests/data/rs274 so that the
 // comparison runs everywhere; where rs274 is installed, it is run again and must still print
-// what was recorded.
+// what was recorded. A program rs274 refuses keeps its message in a .error file: the interpreter
+// must refuse it too.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <regex>
 #include <sstream>
 
 #include "gcode_test_support.h"
+#include "isurface/machine/tool_table.h"
 #include "test_support.h"
 
 using namespace isurface;
@@ -21,25 +26,55 @@ using namespace isurface::test;
 namespace {
 
 // The end points of rs274's STRAIGHT_TRAVERSE, STRAIGHT_FEED and ARC_FEED commands, in order.
-// ARC_FEED(first end, second end, first centre, second centre, rotation, axis end, ...): the
-// plane here is always XY. rs274 prints positions in the program's coordinates and G92 / G52
-// offsets apart (SET_G92_OFFSET): they are added, as iSurface's moves are in the workpiece's.
+// ARC_FEED(first end, second end, first centre, second centre, rotation, axis end, ...), with
+// the plane's axes in SELECT_PLANE's order: XY, XZ (first Z, second X) or YZ. rs274 prints
+// positions in the program's coordinates and G92 / G52 offsets apart (SET_G92_OFFSET): they are
+// added, as iSurface's moves are in the workpiece's.
 std::vector<Vec3> motionEnds(const std::string& canon) {
-  static const std::regex motion(R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_G92_OFFSET)\(([^)]*)\))");
+  static const std::regex motion(
+      R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_G92_OFFSET|SELECT_PLANE)\(([^)]*)\))");
   std::vector<Vec3> ends;
   Vec3 offset = Vec3::Zero();
+  Plane plane = Plane::XY;
   std::istringstream in(canon);
   for (std::string line; std::getline(in, line);) {
     std::smatch m;
     if (!std::regex_search(line, m, motion)) continue;
+    if (m[1] == "SELECT_PLANE") {
+      plane = m[2] == "CANON_PLANE_XZ" ? Plane::ZX : m[2] == "CANON_PLANE_YZ" ? Plane::YZ : Plane::XY;
+      continue;
+    }
     std::vector<double> v;
     std::istringstream args(m[2].str());
     for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a));
-    if (m[1] == "SET_G92_OFFSET") offset = Vec3(v.at(0), v.at(1), v.at(2));
-    else if (m[1] == "ARC_FEED") ends.push_back(Vec3(v.at(0), v.at(1), v.at(5)) + offset);
-    else ends.push_back(Vec3(v.at(0), v.at(1), v.at(2)) + offset);
+    if (m[1] == "SET_G92_OFFSET") {
+      offset = Vec3(v.at(0), v.at(1), v.at(2));
+    } else if (m[1] == "ARC_FEED") {
+      const PlaneAxes ax = planeAxes(plane);
+      Vec3 end;
+      end[ax.u] = v.at(0);
+      end[ax.v] = v.at(1);
+      end[ax.w] = v.at(5);
+      ends.push_back(end + offset);
+    } else {
+      ends.push_back(Vec3(v.at(0), v.at(1), v.at(2)) + offset);
+    }
   }
   return ends;
+}
+
+// The tool table rs274 was given for a program (none: every tool of radius 0). rs274 reads a
+// tool table in inches.
+std::string toolTableOf(const std::string& program) {
+  const std::filesystem::path p(program);
+  const std::filesystem::path table = p.stem().string().rfind("comp-", 0) == 0
+                                          ? p.parent_path() / "comp.tbl"
+                                          : std::filesystem::path(sourcePath("tests/data/rs274/realdata")) / (p.stem().string() + ".tbl");
+  return std::filesystem::exists(table) ? table.string() : "";
+}
+
+std::string errorPath(const std::string& program) {
+  return std::filesystem::path(program).replace_extension(".error").string();
 }
 
 std::vector<std::string> programs() {
@@ -65,9 +100,18 @@ bool rs274DepartsFromItsManual(const std::string& program) {
 // Our moves (mm) against rs274's end points (program units: inch in a G20 program).
 void expectSameMoves(const std::string& program, const std::string& canon, std::size_t& compared) {
   const std::string text = readFile(program);
-  const InterpretResult ours = interpretGcode(text, program);
+  InterpreterOptions options;
+  if (const std::string table = toolTableOf(program); !table.empty())
+    options.toolDiameters = readToolTable(table, /*inch=*/true);
+  const InterpretResult ours = interpretGcode(text, program, options);
+  if (fileExists(errorPath(program))) {
+    EXPECT_FALSE(ours.ok()) << program << ": rs274 refuses it: " << readFile(errorPath(program));
+    return;
+  }
   ASSERT_TRUE(ours.ok()) << ours.errors.front().str();
-  const double perMm = text.find("G20") != std::string::npos ? 1 / 25.4 : 1.0;
+  std::string upper = text;
+  std::transform(upper.begin(), upper.end(), upper.begin(), [](unsigned char c) { return std::toupper(c); });
+  const double perMm = upper.find("G20") != std::string::npos ? 1 / 25.4 : 1.0;
   std::vector<Vec3> moved;
   for (const Move& m : ours.program.moves)
     if (m.isMotion()) moved.push_back(m.end * perMm);
@@ -93,7 +137,7 @@ TEST(rs274Differential, GeneratedProgramsGiveRs274sMoves) {
 
 TEST(rs274Differential, LinuxCncProgramsGiveRs274sMoves) {
   std::size_t compared = 0;
-  for (const char* name : {"linuxcnc_factorial", "linuxcnc_flowsnake", "linuxcnc_daisy"}) {
+  for (const char* name : {"linuxcnc_factorial", "linuxcnc_flowsnake", "linuxcnc_daisy", "linuxcnc_comp"}) {
     const std::string program = realdataPath(std::string(name) + ".ngc");
     if (!fileExists(program)) GTEST_SKIP() << program << " is missing";
     expectSameMoves(program, sourcePath("tests/data/rs274/realdata/" + std::string(name) + ".canon"), compared);
@@ -105,7 +149,15 @@ TEST(rs274Differential, TheRecordedOutputIsWhatRs274PrintsToday) {
   if (!rs274Installed()) GTEST_SKIP() << "rs274 (Debian package linuxcnc-uspace) is not installed";
   for (const std::string& file : programs()) {
     const std::string out = (scratchDir() / "live.canon").string();
-    ASSERT_EQ(std::system(("rs274 -g '" + file + "' '" + out + "' < /dev/null > /dev/null 2>&1").c_str()), 0) << file;
+    const std::string table = toolTableOf(file);
+    const int status = std::system(
+        ("rs274 " + (table.empty() ? "" : "-t '" + table + "' ") + "-g '" + file + "' '" + out + "' < /dev/null > /dev/null 2>&1")
+            .c_str());
+    if (fileExists(errorPath(file))) {
+      EXPECT_NE(status, 0) << file << " is recorded as refused";
+      continue;
+    }
+    ASSERT_EQ(status, 0) << file;
     const std::vector<Vec3> live = motionEnds(readFile(out)), recorded = motionEnds(readFile(canonPath(file)));
     ASSERT_EQ(live.size(), recorded.size()) << file;
     for (std::size_t i = 0; i < live.size(); ++i) EXPECT_EQ(live[i], recorded[i]) << file << " move " << i;

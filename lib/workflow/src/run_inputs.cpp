@@ -107,6 +107,7 @@ InterpreterOptions interpreterOptions(const Machine& machine) {
   options.fanuc = machine.control.fanuc;
   options.g28Position = machine.g28Position;
   options.g30Position = machine.g30Position;
+  options.toolDiameters = machine.toolDiameters;
   return options;
 }
 

@@ -8,6 +8,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
@@ -195,10 +196,21 @@ bool InterpreterState::executeBlock(const Block& block) {
     return fail(block.col('S'), "Negative spindle speed used");
   const bool stopBefore = mCode[kMToolChange] >= 0 || mCode[kMSpindle] >= 0;
 
+  if (block.has('T')) {
+    const double t = block.get('T');
+    if (t < 0 || std::fabs(t - std::nearbyint(t)) > kWholeNumberTolerance)
+      return fail(block.col('T'), "T word must be a tool number (a whole number, 0 or more)");
+    selectedTool_ = static_cast<int>(std::nearbyint(t));
+  }
+  if (mCode[kMToolChange] == 60) spindleTool_ = selectedTool_;
+  if (!compensationAllows(groups, groups.has(kGroupMotion) ? groups.code[kGroupMotion] : state_.motion)) return false;
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
   if (groups.has(kGroupUnits)) unitsStated_ = true;
+  if (groups.has(kGroupCutterComp) &&
+      !setCutterComp(block, groups.code[kGroupCutterComp], groups.column[kGroupCutterComp]))
+    return false;
   if (!unitsStated_ && (hasAxisWords(block) || block.has('F')))
     warnOnce(unitsStated_, 1,
              fmt::format("no G20 or G21 before the first length: the control's power-on units ({}) are used",
@@ -302,13 +314,6 @@ void InterpreterState::applyModalCodes(const GroupedCodes& groups) {
     state_.plane = code == kG17 ? Plane::XY : code == kG18 ? Plane::ZX : Plane::YZ;
   }
   if (groups.has(kGroupUnits)) state_.inch = groups.code[kGroupUnits] == kG20;
-  if (groups.has(kGroupCutterComp)) {
-    state_.cutterComp = groups.code[kGroupCutterComp];
-    if (state_.cutterComp != kG40)
-      warnOnce(warnedCutterComp_, groups.column[kGroupCutterComp],
-               "Cutter radius compensation (G41/G42) is not applied: moves follow the "
-               "programmed path");
-  }
   if (groups.has(kGroupToolLength)) state_.toolLength = groups.code[kGroupToolLength];
   if (groups.has(kGroupCoordSystem)) state_.coordSystem = groups.code[kGroupCoordSystem];
   if (groups.has(kGroupPathControl)) state_.exactStop = groups.code[kGroupPathControl] != kG64;

@@ -103,10 +103,7 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
 
 bool InterpreterState::straight(const Block& block, int motion, std::uint32_t column) {
   const Vec3 end = targetOf(block);
-  if (motion == kG0) {
-    emit(MoveKind::Rapid, end, 0.0f);
-    return true;
-  }
+  if (motion == kG0) return emitPath(MoveKind::Rapid, end, Vec3::Zero(), 1, 0.0f, column);
   double feed = state_.feed;
   if (state_.inverseTime) {
     if (!block.has('F')) return fail(column, "F word missing with inverse time G1 move");
@@ -115,8 +112,7 @@ bool InterpreterState::straight(const Block& block, int motion, std::uint32_t co
   } else if (feed <= 0) {
     return fail(column, "Cannot do G1 with zero feed rate");
   }
-  emit(MoveKind::Linear, end, static_cast<float>(feed));
-  return true;
+  return emitPath(MoveKind::Linear, end, Vec3::Zero(), 1, static_cast<float>(feed), column);
 }
 
 bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column) {
@@ -214,8 +210,7 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
     probe.turns = static_cast<std::uint16_t>(turns);
     feed = ArcGeometry::from(start, probe).length() * state_.feed;
   }
-  emitArc(kind, end, centre, turns, static_cast<float>(feed));
-  return true;
+  return emitPath(kind, end, centre, turns, static_cast<float>(feed), column);
 }
 
 bool InterpreterState::dwell(const Block& block, std::uint32_t column) {

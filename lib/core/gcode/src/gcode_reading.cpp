@@ -51,7 +51,7 @@ void InterpreterState::streamTo(MoveSink& sink, std::size_t chunkMoves, std::fun
 }
 
 void InterpreterState::deliverMoves(bool all) {
-  const std::size_t last = all ? moves_.size() : moves_.size() - 1;
+  const std::size_t last = all ? moves_.size() : firstHeldMove();
   std::size_t first = 0;
   while (first < last) {
     const std::size_t count = std::min(chunkMoves_, last - first);

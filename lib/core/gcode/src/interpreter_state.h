@@ -10,6 +10,7 @@
 
 #include "gcode_lexer.h"
 #include "gcode_control_flow.h"
+#include "gcode_cutter_comp.h"
 #include "gcode_fanuc_macro.h"
 #include "gcode_parameters.h"
 #include "isurface/gcode/gcode_interpreter.h"
@@ -112,6 +113,8 @@ class InterpreterState {
   // Streaming: hands over every move but the last, which a later block may still mark as
   // ending at rest (M0, M6, a spindle change); all of them when `all`.
   void deliverMoves(bool all);
+  // The first move that a later block may still change: the last one, or the open offset move.
+  std::size_t firstHeldMove() const;
   bool executeBlock(const Block& block);
   bool groupCodes(const Block& block, GroupedCodes& groups);
   void applyModalCodes(const GroupedCodes& groups);
@@ -129,8 +132,15 @@ class InterpreterState {
   bool arc(const Block& block, int motion, std::uint32_t column);
   bool dwell(const Block& block, std::uint32_t column);
   bool homeMove(const Block& block, int code);
+  // Through cutter radius compensation when it is on (gcode_cutter_comp_use.cpp), else as is.
+  bool emitPath(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns, float feed, std::uint32_t column);
   void emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags = 0);
   void emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns, float feed);
+
+  // gcode_cutter_comp_use.cpp: G40 / G41 / G42 / G41.1 / G42.1, and what compensation forbids.
+  bool setCutterComp(const Block& block, int code, std::uint32_t column);
+  bool compensationAllows(const GroupedCodes& groups, int motion);
+  bool compensating() const { return comp_.on(); }
 
   // gcode_cycles.cpp
   bool cycle(const Block& block, int motion, std::uint32_t column);
@@ -150,7 +160,7 @@ class InterpreterState {
   bool ended_ = false;            // M2 / M30 / closing '%'
   bool percentOpened_ = false;    // the first line with words was '%'
   bool seenWords_ = false;
-  bool warnedCutterComp_ = false, warnedRotary_ = false;
+  bool warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
   bool unitsStated_ = false;
@@ -159,6 +169,11 @@ class InterpreterState {
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
   Block block_;
+  // Cutter radius compensation, and the moves that end where its open offset move ends (their
+  // indices counted from the first move made; they are not delivered while it is open).
+  CutterCompensation comp_;
+  std::vector<std::uint64_t> compOpenMoves_;
+  int selectedTool_ = 0, spindleTool_ = 0;  // T word; the tool M6 put in the spindle
   Parameters parameters_;
   ControlFlow flow_{parameters_};
   FanucMacro macro_{parameters_};

@@ -1,6 +1,7 @@
 #include "isurface/machine/machine.h"
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -50,6 +51,37 @@ Machine builtInFallback() {
   Machine m;
   m.name = "built-in";
   return m;
+}
+
+// "tools": {"units": "mm" | "inch", "table": "tools.tbl"} or {"units": .., "diameters": {"1": 6}}.
+void readTools(const json& tools, const std::string& source, Machine& m) {
+  if (!tools.is_object()) fail(source, "tools must be an object");
+  if (tools.contains("units")) {
+    const std::string u = tools["units"].is_string() ? tools["units"].get<std::string>() : "";
+    if (u != "mm" && u != "inch") fail(source, "tools.units must be \"mm\" or \"inch\"");
+    m.toolTableInch = u == "inch";
+  }
+  if (tools.contains("table") && tools.contains("diameters"))
+    fail(source, "tools: give a \"table\" file or \"diameters\", not both");
+  if (tools.contains("table")) {
+    if (!tools["table"].is_string()) fail(source, "tools.table must be a file name");
+    std::filesystem::path table = tools["table"].get<std::string>();
+    if (table.is_relative()) table = std::filesystem::path(source).parent_path() / table;
+    m.toolDiameters = readToolTable(table.string(), m.toolTableInch);
+  }
+  if (tools.contains("diameters")) {
+    const json& d = tools["diameters"];
+    if (!d.is_object()) fail(source, "tools.diameters must map tool numbers to diameters");
+    m.toolDiameters.clear();
+    for (const auto& [key, value] : d.items()) {
+      const std::string where = "tools.diameters." + key;
+      if (key.empty() || key.find_first_not_of("0123456789") != std::string::npos || key.size() > 9)
+        fail(source, where + ": a tool number must be a whole number");
+      if (!value.is_number() || !std::isfinite(value.get<double>()) || value.get<double>() < 0)
+        fail(source, where + " must be a diameter, 0 or more");
+      m.toolDiameters[std::stoi(key)] = m.toolTableInch ? value.get<double>() * kMmPerInch : value.get<double>();
+    }
+  }
 }
 
 Machine parseOnto(const Machine& base, const std::string& text, const std::string& source) {
@@ -133,6 +165,7 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       m.control.inch = u == "inch";
     }
   }
+  if (root.contains("tools")) readTools(root["tools"], source, m);
   if (root.contains("reference_positions_mm")) {
     const json& refs = root["reference_positions_mm"];
     if (!refs.is_object()) fail(source, "reference_positions_mm must be an object");

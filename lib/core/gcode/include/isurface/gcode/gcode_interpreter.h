@@ -1,6 +1,7 @@
 #pragma once
 // RS274/NGC interpreter for real CAM output: turns G-code text into a Program of exact moves.
 #include <functional>
+#include <map>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -35,6 +36,10 @@ struct InterpreterOptions {
   // centre-format arcs: a start or end radius under this is a zero-radius error. mm (LinuxCNC's
   // RADIUS_TOLERANCE, 0.00005 inch).
   double arcReachTolerance = 0.00127;
+  // Tool diameters by tool number (mm), for cutter radius compensation (G41 / G42 D<tool>, or
+  // the tool in the spindle). Empty: every tool's radius is 0 and compensated moves follow the
+  // programmed path.
+  std::map<int, double> toolDiameters;
   // Called now and then with the fraction of the input read, 0..1.
   std::function<void(double)> progress;
 };

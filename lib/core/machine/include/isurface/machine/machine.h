@@ -5,6 +5,7 @@
 #include <string>
 
 #include "isurface/base/geometry.h"
+#include "isurface/machine/tool_table.h"
 
 namespace isurface {
 
@@ -32,6 +33,11 @@ struct Machine {
   Vec3 g28Position = Vec3::Zero();
   Vec3 g30Position = Vec3::Zero();
   ControlModes control;
+  // Cutter radius compensation's tools ("tools" in the JSON: a LinuxCNC "table" file, relative
+  // to the description, or "diameters" by tool number), and the units of a tool table: the
+  // control's machine units.
+  ToolDiameters toolDiameters;
+  bool toolTableInch = false;
 
   bool jerkLimited() const { return axes[0].maxJerk > 0 && axes[1].maxJerk > 0 && axes[2].maxJerk > 0; }
 };

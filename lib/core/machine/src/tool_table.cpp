@@ -1,0 +1,75 @@
+// LinuxCNC's tool table format: words of a letter and a number, a ';' comment to the line end.
+#include "isurface/machine/tool_table.h"
+
+#include <fast_float/fast_float.h>
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr const char* kTableLetters = "TPXYZABCUVWDIJQ";
+
+[[noreturn]] void fail(const std::string& source, std::uint32_t line, const std::string& message) {
+  throw InputError(Diagnostic{source, line, 0, message});
+}
+
+}  // namespace
+
+ToolDiameters parseToolTable(const std::string& text, const std::string& sourceName, bool inch) {
+  ToolDiameters tools;
+  std::istringstream lines(text);
+  std::string line;
+  std::uint32_t number = 0;
+  while (std::getline(lines, line)) {
+    ++number;
+    const std::string words = line.substr(0, line.find(';'));
+    int tool = -1;
+    double diameter = 0;
+    for (std::size_t i = 0; i < words.size();) {
+      const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(words[i])));
+      if (std::isspace(static_cast<unsigned char>(c)) || c == '\r') {
+        ++i;
+        continue;
+      }
+      if (!std::isalpha(static_cast<unsigned char>(c)) || std::string(kTableLetters).find(c) == std::string::npos)
+        fail(sourceName, number, std::string("unexpected '") + words[i] + "' in a tool table entry");
+      double value = 0;
+      const char* first = words.data() + i + 1;
+      const auto parsed = fast_float::from_chars(first, words.data() + words.size(), value);
+      if (parsed.ec != std::errc() || !std::isfinite(value))
+        fail(sourceName, number, std::string("the ") + c + " word of a tool table entry has no number");
+      i = static_cast<std::size_t>(parsed.ptr - words.data());
+      if (c == 'T') {
+        if (value < 0 || value != std::floor(value) || value > 1e9)
+          fail(sourceName, number, "a tool number (T) must be a whole number, 0 or more");
+        tool = static_cast<int>(value);
+      } else if (c == 'D') {
+        if (value < 0) fail(sourceName, number, "a tool diameter (D) must not be negative");
+        diameter = inch ? value * kMmPerInch : value;
+      }
+    }
+    if (words.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank or comment only
+    if (tool < 0) fail(sourceName, number, "a tool table entry without a tool number (T)");
+    if (tools.count(tool)) fail(sourceName, number, "tool " + std::to_string(tool) + " is in the table twice");
+    tools[tool] = diameter;
+  }
+  return tools;
+}
+
+ToolDiameters readToolTable(const std::string& path, bool inch) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open tool table"});
+  std::ostringstream text;
+  text << in.rdbuf();
+  return parseToolTable(text.str(), path, inch);
+}
+
+}  // namespace isurface
