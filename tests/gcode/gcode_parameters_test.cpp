@@ -94,7 +94,7 @@ TEST(gcodeParameters, AFanucStyleProgramSetsOffsetsFromParameters) {
 
 TEST(gcodeParameters, BadParametersAndExpressionsNameTheLine) {
   EXPECT_EQ(firstError("G0 X#<undefined>"), "t.ngc:1:5: Named parameter #<undefined> not defined");
-  EXPECT_EQ(firstError("#6000=1"), "t.ngc:1:1: Parameter number 6000 out of range (1-5399)");
+  EXPECT_EQ(firstError("#6000=1"), "t.ngc:1:1: Parameter number 6000 out of range (1-5602)");
   EXPECT_EQ(firstError("#1.5=1"), "t.ngc:1:1: Parameter number 1.5 is not an integer");
   EXPECT_EQ(firstError("#1 2"), "t.ngc:1:1: Equal sign missing in parameter setting");
   EXPECT_EQ(firstError("G0 X[1/0]"), "t.ngc:1:5: Attempt to divide by zero");

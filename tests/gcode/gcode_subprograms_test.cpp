@@ -48,7 +48,7 @@ TEST(gcodeSubprograms, G65ArgumentsBelongToTheCall) {
 }
 
 TEST(gcodeSubprograms, MistakesAreErrors) {
-  EXPECT_EQ(firstError("G21\nM98 P77\nM30\n"), "t.ngc:3: subprogram O77 is called (line 2) but is not in the file (subprogram files are not searched)");
+  EXPECT_EQ(firstError("G21\nM98 P77\nM30\n"), "t.ngc:3: subprogram O77 is called (line 2) but is neither in the file nor a file O77 in the subroutine path");
   EXPECT_EQ(firstError("M98\n"), "t.ngc:1:1: P word (the program number) missing with M98");
   EXPECT_EQ(firstError("G65 A1\n"), "t.ngc:1:1: P word (the program number) missing with G65");
   EXPECT_EQ(firstError("M99 P10\n"), "t.ngc:1:5: M99 P (a return to a numbered block) is not supported");

@@ -1,7 +1,8 @@
 // The interpreter against LinuxCNC's rs274 on programs that use parameters and expressions
 // (tests/generators/make_expression_programs.py), O-word control flow
 // (tests/generators/make_control_flow_programs.py), cutter radius compensation
-// (tests/generators/make_cutter_comp_programs.py, with their tool table), and the LinuxCNC
+// (tests/generators/make_cutter_comp_programs.py, with their tool table), subroutines in files of
+// their own (subfile-main.ngc calls subfile_square.ngc, which calls subfile_corner.ngc), and the LinuxCNC
 // programs of ../shared/realdata: every motion command's end point, in order, as rs274 printed it
 // (4 decimals, program units). rs274's output is recorded in tests/data/rs274 so that the
 // comparison runs everywhere; where rs274 is installed, it is run again and must still print
@@ -101,6 +102,7 @@ bool rs274DepartsFromItsManual(const std::string& program) {
 void expectSameMoves(const std::string& program, const std::string& canon, std::size_t& compared) {
   const std::string text = readFile(program);
   InterpreterOptions options;
+  options.subroutinePath.push_back(std::filesystem::path(program).parent_path().string());  // as a file is read
   if (const std::string table = toolTableOf(program); !table.empty())
     options.toolDiameters = readToolTable(table, /*inch=*/true);
   const InterpretResult ours = interpretGcode(text, program, options);
@@ -150,9 +152,11 @@ TEST(rs274Differential, TheRecordedOutputIsWhatRs274PrintsToday) {
   for (const std::string& file : programs()) {
     const std::string out = (scratchDir() / "live.canon").string();
     const std::string table = toolTableOf(file);
-    const int status = std::system(
-        ("rs274 " + (table.empty() ? "" : "-t '" + table + "' ") + "-g '" + file + "' '" + out + "' < /dev/null > /dev/null 2>&1")
-            .c_str());
+    // rs274 finds subroutine files in its working folder.
+    const std::string folder = std::filesystem::path(file).parent_path().string();
+    const int status = std::system(("cd '" + folder + "' && rs274 " + (table.empty() ? "" : "-t '" + table + "' ") +
+                                    "-g '" + file + "' '" + out + "' < /dev/null > /dev/null 2>&1")
+                                       .c_str());
     if (fileExists(errorPath(file))) {
       EXPECT_NE(status, 0) << file << " is recorded as refused";
       continue;

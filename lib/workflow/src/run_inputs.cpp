@@ -108,6 +108,7 @@ InterpreterOptions interpreterOptions(const Machine& machine) {
   options.g28Position = machine.g28Position;
   options.g30Position = machine.g30Position;
   options.toolDiameters = machine.toolDiameters;
+  options.subroutinePath = machine.control.subroutinePath;
   return options;
 }
 

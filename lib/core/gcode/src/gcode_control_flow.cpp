@@ -200,8 +200,10 @@ ControlFlow::Outcome ControlFlow::callProgram(const std::string& program,
   request.column = column;
   const auto found = programs_.find(program);
   if (found != programs_.end()) return enterProgram(request, found->second);
-  skip_ = std::move(request);  // further on in the file
-  return {};
+  skip_ = std::move(request);  // in a file of its own, or further on in this one
+  Outcome out;
+  if (findFile_) out.jump = findFile_(program, true);
+  return out;
 }
 
 ControlFlow::Outcome ControlFlow::enterProgram(const Skip& request, LinePosition body) {
@@ -328,6 +330,8 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
       skip_ = skipTo(SkipTo::FindSub, o.label, here.line);
       skip_->arguments = std::move(arguments);
       skip_->back = next;
+      // A file of its own comes first (LinuxCNC's subroutine path); else further on in this one.
+      if (findFile_ && o.label.front() == '<') out.jump = findFile_(o.label, false);
       return out;
     }
     case Keyword::Do:
@@ -396,17 +400,26 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
   return out;
 }
 
+std::optional<LinePosition> ControlFlow::searchOnAfterFile() const {
+  if (skip_ && (skip_->target == SkipTo::FindSub || skip_->target == SkipTo::FindProgram)) return skip_->back;
+  return std::nullopt;
+}
+
 std::optional<std::string> ControlFlow::unfinished() const {
   if (skip_) {
     const std::string o = shown(skip_->label);
     switch (skip_->target) {
       case SkipTo::EndSub: return fmt::format("{} sub (line {}) has no endsub", o, skip_->fromLine);
       case SkipTo::FindSub:
-        return fmt::format("{} is called (line {}) but defined nowhere in the file (subroutine files are not searched)",
-                           o, skip_->fromLine);
+        return fmt::format("{} is called (line {}) but defined nowhere{}", o, skip_->fromLine,
+                           skip_->label.front() == '<'
+                               ? fmt::format(": not in the file, and no {}.ngc in the subroutine path defines it",
+                                             skip_->label.substr(1, skip_->label.size() - 2))
+                               : " in the file");
       case SkipTo::FindProgram:
-        return fmt::format("subprogram O{} is called (line {}) but is not in the file (subprogram files are not searched)",
-                           skip_->label, skip_->fromLine);
+        return fmt::format("subprogram O{} is called (line {}) but is neither in the file nor a file O{} in the "
+                           "subroutine path",
+                           skip_->label, skip_->fromLine, skip_->label);
       case SkipTo::BranchEnd:
       case SkipTo::EndIf: return fmt::format("{} (line {}) has no endif", o, skip_->fromLine);
       case SkipTo::LoopEnd:

@@ -6,6 +6,7 @@
 // on (skipping) as LinuxCNC does, and loops and calls jump back to lines already read.
 // Private to the gcode module.
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <unordered_map>
@@ -32,6 +33,12 @@ class ControlFlow {
 
   explicit ControlFlow(Parameters& parameters) : parameters_(parameters) {}
 
+  // Where a subroutine or subprogram that is not (yet) known may be in a file of its own: given
+  // the label ("<name>" of an O-word subroutine, or a Fanuc program number) and whether it is a
+  // Fanuc program, the first line of that file's text, or nothing.
+  using FileFinder = std::function<std::optional<LinePosition>(const std::string& label, bool program)>;
+  void setFileFinder(FileFinder finder) { findFile_ = std::move(finder); }
+
   // Lines are being read past (a subroutine's body at its definition, a branch not taken, a
   // loop left): only O-word lines matter until the construct's end.
   bool skipping() const { return skip_.has_value(); }
@@ -56,6 +63,10 @@ class ControlFlow {
   // M99: back to the line after the M98 or G65 (or the program's start again for L repeats).
   // `inProgram` is false when there is no call to return from (M99 ending a main program).
   Outcome returnFromProgram(std::uint32_t column, bool& inProgram);
+
+  // At the end of a subroutine file that did not define what was looked for in it: where the
+  // search goes on (the line after the call, in the text that called), or nothing.
+  std::optional<LinePosition> searchOnAfterFile() const;
 
   // At the end of the text: what is left open (an if without its endif, a subroutine called but
   // never defined, ...), or nothing.
@@ -122,6 +133,7 @@ class ControlFlow {
   void beginLoop(const std::string& label, Keyword kind, LinePosition top, double remaining = 0);
 
   Parameters& parameters_;
+  FileFinder findFile_;
   bool seen_ = false;
   std::optional<Skip> skip_;
   std::unordered_map<std::string, LinePosition> subroutines_;  // label -> the line after `sub`

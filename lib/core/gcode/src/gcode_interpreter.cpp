@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 
 #include "interpreter_state.h"
@@ -82,6 +83,21 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   parameters_.bareSettings = options.fanuc;
   result_.program.source = source_;
   result_.program.start = options.startPosition;
+  flow_.setFileFinder([this](const std::string& label, bool program) { return findSubroutineFile(label, program); });
+  // LinuxCNC's #5420-#5428: where the tool is, in the program's coordinates and units (A, B, C,
+  // U, V, W: 0); #5211-#5219: the G92 / G52 offset.
+  parameters_.setSystemReader([this](int number, double& value) {
+    const double perMm = state_.inch ? 1 / kMmPerInch : 1.0;
+    if (number >= 5420 && number <= 5428) {
+      value = number <= 5422 ? (state_.position - state_.offset)[number - 5420] * perMm : 0.0;
+      return true;
+    }
+    if (number >= 5211 && number <= 5219) {
+      value = number <= 5213 ? state_.offset[number - 5211] * perMm : 0.0;
+      return true;
+    }
+    return false;
+  });
 }
 
 bool InterpreterState::fail(std::uint32_t column, std::string message) {
@@ -407,12 +423,20 @@ StreamedInterpretation streamText(std::string_view text, const std::string& sour
   return out;
 }
 
+// The options for a file: its own folder is searched for subroutine files last.
+InterpreterOptions withProgramFolder(const std::string& path, const InterpreterOptions& options) {
+  InterpreterOptions withFolder = options;
+  const std::filesystem::path folder = std::filesystem::path(path).parent_path();
+  withFolder.subroutinePath.push_back(folder.empty() ? "." : folder.string());
+  return withFolder;
+}
+
 }  // namespace
 
 InterpretResult interpretGcodeFile(const std::string& path, const InterpreterOptions& options) {
   InterpretResult result;
   const std::string error = withFileText(path, true, [&](std::string_view text, bool) {
-    result = interpretGcode(text, path, options);
+    result = interpretGcode(text, path, withProgramFolder(path, options));
   });
   if (!error.empty()) {
     result = InterpretResult{};
@@ -442,7 +466,7 @@ StreamedInterpretation interpretGcodeFileStream(const std::string& path, MoveSin
       ::madvise(const_cast<char*>(base + releasedBytes), bytes - releasedBytes, MADV_DONTNEED);
       releasedBytes = bytes;
     };
-    result = streamText(text, path, sink, options, chunkMoves,
+    result = streamText(text, path, sink, withProgramFolder(path, options), chunkMoves,
                         mapped ? std::function<void(const char*)>(release) : nullptr);
   });
   if (!error.empty()) {

@@ -80,7 +80,7 @@ bool InterpreterState::setOffset(const Block& block, int code) {
 void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags) {
   Move& m = moves_.emplace_back();
   m.end = end;
-  m.line = line_;
+  m.line = moveLine();
   m.feed = feed;
   m.kind = kind;
   m.flags = static_cast<std::uint8_t>((state_.exactStop ? kExactStop : 0) | extraFlags);
@@ -92,7 +92,7 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
   Move& m = moves_.emplace_back();
   m.end = end;
   m.centre = centre;
-  m.line = line_;
+  m.line = moveLine();
   m.feed = feed;
   m.kind = kind;
   m.plane = state_.plane;

@@ -324,6 +324,7 @@ bool Parameters::read(int number, double& value, std::string& message) const {
     message = fmt::format("Parameter number {} out of range (1-{})", number, kMaxNumberedParameter);
     return false;
   }
+  if (system_ && system_(number, value)) return true;
   value = numbered_[static_cast<std::size_t>(number)];
   return true;
 }

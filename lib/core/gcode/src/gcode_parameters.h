@@ -1,5 +1,6 @@
 #pragma once
-// RS274/NGC parameters as LinuxCNC reads them: numbered #1..#5399 (0 until set), named locals
+// RS274/NGC parameters as LinuxCNC reads them: numbered #1..#5602 (0 until set; the system's
+// #5211-#5219 and #5420-#5428 read what the interpreter says), named locals
 // #<name> and globals #<_name> (an error until set). Assignments on a line are staged and take
 // effect together after the block, as the standard says: every read on the line sees the values
 // from before it. Private to the gcode module.
@@ -7,11 +8,12 @@
 #include <string>
 #include <unordered_map>
 #include <utility>
+#include <functional>
 #include <vector>
 
 namespace isurface::gcode {
 
-constexpr int kMaxNumberedParameter = 5399;
+constexpr int kMaxNumberedParameter = 5602;
 
 // A parameter named on a line: a number, or a name (lower case, blanks removed).
 struct ParameterRef {
@@ -28,6 +30,11 @@ class Parameters {
   // The value of a named parameter; false and a message when it was never set.
   bool read(const std::string& name, double& value, std::string& message) const;
   bool exists(const std::string& name) const;
+
+  // Parameters the interpreter keeps itself (the position, the G92 offset): given a number,
+  // true and its value, or false when the number is not one of them.
+  using SystemReader = std::function<bool(int number, double& value)>;
+  void setSystemReader(SystemReader reader) { system_ = std::move(reader); }
 
   // Sets at once (a call's arguments, a subroutine's return value).
   void set(int number, double value) { numbered_[static_cast<std::size_t>(number)] = value; }
@@ -50,6 +57,7 @@ class Parameters {
 
  private:
   std::vector<double> numbered_;
+  SystemReader system_;
   std::unordered_map<std::string, double> named_;
   std::vector<std::pair<ParameterRef, double>> staged_;
   struct Scope {

@@ -78,11 +78,14 @@ void InterpreterState::run(std::string_view text) {
   const char* first = begin;
   if (text.size() >= 3 && std::memcmp(begin, "\xEF\xBB\xBF", 3) == 0) first += 3;  // UTF-8 BOM
   macro_.setText(first, end);
+  mainText_ = {first, end};
+  textEnd_ = end;
   const char* releasedUpTo = begin;
   const char* p = first;
-  while (p < end && !ended_) {
-    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(end - p));
-    const char* lineEnd = nl ? static_cast<const char*>(nl) : end;
+  while (!ended_) {
+    if (p >= textEnd_ && !(reading_ && leaveFile(p))) break;
+    const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(textEnd_ - p));
+    const char* lineEnd = nl ? static_cast<const char*>(nl) : textEnd_;
     ++line_;
     if (flow_.skipping() && !isOWordLine(p, lineEnd)) {  // inside a construct read past
       p = lineEnd + 1;
@@ -95,6 +98,7 @@ void InterpreterState::run(std::string_view text) {
     p = lineEnd + 1;
     if (jump_) {  // a loop, a call or a return: on from another line
       p = jump_->at;
+      enterTextOf(p);
       line_ = jump_->line - 1;
       jump_.reset();
     }
@@ -103,7 +107,12 @@ void InterpreterState::run(std::string_view text) {
       // Once a loop or a call may read lines again, the text stays.
       if (released_ && !flow_.seen() && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
     }
-    if ((line_ & 0xffffu) == 0 && options_.progress) options_.progress((p - begin) / total);
+    if ((line_ & 0xffffu) == 0 && options_.progress && !reading_) options_.progress((p - begin) / total);
+  }
+  if (reading_) {  // ended in a subroutine file: the main text's count goes on from the call
+    p = mainLeftAt_;
+    line_ = callLine_;
+    enterTextOf(p);
   }
   if (!ended_)
     if (const auto open = flow_.unfinished()) result_.errors.push_back(Diagnostic{source_, line_, 0, *open});

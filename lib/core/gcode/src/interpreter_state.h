@@ -3,6 +3,7 @@
 // execution, moves out. Private to the gcode module; split over gcode_interpreter.cpp (blocks
 // and modal codes), gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp
 // (canned cycles). Not the machine description (isurface/machine/machine.h).
+#include <deque>
 #include <functional>
 #include <optional>
 #include <string>
@@ -151,6 +152,15 @@ class InterpreterState {
 
   bool fail(std::uint32_t column, std::string message);
 
+  // gcode_subroutine_files.cpp
+  std::optional<LinePosition> findSubroutineFile(const std::string& label, bool program);
+  // Reading goes on at `at`: in the main text or in a subroutine file.
+  void enterTextOf(const char* at);
+  // At the end of a subroutine file's text: false (with an error) when nothing goes on.
+  bool leaveFile(const char*& p);
+  // The line a move carries: the main text's, or the line that called into the file read.
+  std::uint32_t moveLine() const { return reading_ ? callLine_ : line_; }
+
   const InterpreterOptions& options_;
   InterpretResult& result_;
   std::vector<Move>& moves_;
@@ -169,6 +179,21 @@ class InterpreterState {
   std::uint32_t errorColumn_ = 0;
   std::string errorMessage_;
   Block block_;
+  // The main text and the subroutine files read (a deque: their texts stay where they are).
+  struct SubroutineFile {
+    std::string path;
+    std::string text;
+  };
+  struct TextSpan {
+    const char* begin = nullptr;
+    const char* end = nullptr;
+  };
+  TextSpan mainText_;
+  std::deque<SubroutineFile> files_;
+  const SubroutineFile* reading_ = nullptr;  // null: the main text
+  const char* textEnd_ = nullptr;            // the end of the text being read
+  std::uint32_t callLine_ = 0;               // while in a file: the main text's calling line
+  const char* mainLeftAt_ = nullptr;         // the main text's line after that call
   // Cutter radius compensation, and the moves that end where its open offset move ends (their
   // indices counted from the first move made; they are not delivered while it is open).
   CutterCompensation comp_;

@@ -164,6 +164,17 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       if (u != "mm" && u != "inch") fail(source, "control.units_at_power_on must be \"mm\" or \"inch\"");
       m.control.inch = u == "inch";
     }
+    if (c.contains("subroutine_path")) {
+      const json& folders = c["subroutine_path"];
+      if (!folders.is_array()) fail(source, "control.subroutine_path must be a list of folders");
+      m.control.subroutinePath.clear();
+      for (const json& f : folders) {
+        if (!f.is_string()) fail(source, "control.subroutine_path must be a list of folders");
+        std::filesystem::path folder = f.get<std::string>();
+        if (folder.is_relative()) folder = std::filesystem::path(source).parent_path() / folder;
+        m.control.subroutinePath.push_back(folder.string());
+      }
+    }
   }
   if (root.contains("tools")) readTools(root["tools"], source, m);
   if (root.contains("reference_positions_mm")) {

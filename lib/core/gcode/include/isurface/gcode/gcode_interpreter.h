@@ -40,6 +40,10 @@ struct InterpreterOptions {
   // the tool in the spindle). Empty: every tool's radius is 0 and compensated moves follow the
   // programmed path.
   std::map<int, double> toolDiameters;
+  // Folders searched for subroutines in files of their own: `o<name> call` reads name.ngc, a
+  // Fanuc M98 / G65 P1234 reads O1234 (or O1234.nc, .ngc, .txt). Reading a file adds the
+  // program's own folder last.
+  std::vector<std::string> subroutinePath;
   // Called now and then with the fraction of the input read, 0..1.
   std::function<void(double)> progress;
 };

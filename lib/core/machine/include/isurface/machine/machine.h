@@ -3,6 +3,7 @@
 // servo gains, path tolerance. Read from JSON (resources/machines/default.json documents it).
 #include <array>
 #include <string>
+#include <vector>
 
 #include "isurface/base/geometry.h"
 #include "isurface/machine/tool_table.h"
@@ -22,6 +23,9 @@ struct AxisLimits {
 struct ControlModes {
   bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
   bool inch = false;   // G20 at power-on
+  // Folders of subroutine and subprogram files ("subroutine_path", relative to the description);
+  // a program's own folder is searched after them.
+  std::vector<std::string> subroutinePath;
 };
 
 struct Machine {

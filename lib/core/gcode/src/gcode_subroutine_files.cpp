@@ -1,0 +1,89 @@
+// Subroutines and subprograms in files of their own: LinuxCNC's `o<name> call` reads name.ngc,
+// a Fanuc `M98 P1234` (or G65) reads the program O1234, from the subroutine path. Their lines
+// run from that file's text (diagnostics name the file and its line); their moves carry the
+// line of the main program that called into it, so that every move points into the program the
+// user opened.
+#include <fmt/format.h>
+
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "interpreter_state.h"
+
+namespace isurface::gcode {
+
+namespace {
+
+// The file names a label may be found under, in the order they are tried.
+std::vector<std::string> candidateNames(const std::string& label, bool program) {
+  if (!program) return {label.substr(1, label.size() - 2) + ".ngc"};  // "<name>" -> name.ngc
+  std::vector<std::string> stems = {label};
+  if (label.size() < 4) stems.push_back(std::string(4 - label.size(), '0') + label);  // O0100
+  std::vector<std::string> names;
+  for (const std::string& stem : stems)
+    for (const char* prefix : {"O", "o"})
+      for (const char* extension : {"", ".nc", ".NC", ".ngc", ".txt"}) names.push_back(prefix + stem + extension);
+  return names;
+}
+
+}  // namespace
+
+std::optional<LinePosition> InterpreterState::findSubroutineFile(const std::string& label, bool program) {
+  for (const std::string& folder : options_.subroutinePath) {
+    for (const std::string& name : candidateNames(label, program)) {
+      const std::filesystem::path path = std::filesystem::path(folder) / name;
+      std::error_code ec;
+      if (!std::filesystem::is_regular_file(path, ec)) continue;
+      for (const SubroutineFile& loaded : files_)
+        if (loaded.path == path.string()) return LinePosition{loaded.text.data(), 1};
+      std::ifstream in(path, std::ios::binary);
+      if (!in) continue;
+      std::ostringstream text;
+      text << in.rdbuf();
+      SubroutineFile& file = files_.emplace_back();
+      file.path = path.string();
+      file.text = text.str();
+      const std::size_t bom = file.text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
+      return LinePosition{file.text.data() + bom, 1};
+    }
+  }
+  return std::nullopt;
+}
+
+void InterpreterState::enterTextOf(const char* at) {
+  const SubroutineFile* now = nullptr;
+  if (!(at >= mainText_.begin && at <= mainText_.end)) {
+    for (const SubroutineFile& file : files_)
+      if (at >= file.text.data() && at <= file.text.data() + file.text.size()) now = &file;
+  }
+  if (now == reading_) return;
+  if (!reading_) {  // leaving the main text: its moves name the calling line from now on
+    callLine_ = lineStart_.line;
+    mainLeftAt_ = nextLine_.at;
+  }
+  reading_ = now;
+  const char* begin = now ? now->text.data() : mainText_.begin;
+  textEnd_ = now ? now->text.data() + now->text.size() : mainText_.end;
+  source_ = now ? now->path : result_.program.source;
+  macro_.setText(begin, textEnd_);
+}
+
+bool InterpreterState::leaveFile(const char*& p) {
+  // A file read to its end without defining what was looked for: the search goes on after the call.
+  if (const std::optional<LinePosition> back = flow_.searchOnAfterFile()) {
+    p = back->at;
+    enterTextOf(p);
+    line_ = back->line - 1;
+    return true;
+  }
+  result_.errors.push_back(Diagnostic{
+      source_, line_, 0,
+      fmt::format("the subroutine file ends without returning (endsub, return or M99) to line {} of {}", callLine_,
+                  result_.program.source)});
+  ended_ = true;
+  return false;
+}
+
+}  // namespace isurface::gcode
