@@ -32,6 +32,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
     return fail(column, "Cannot use canned cycles with cutter radius compensation");
   if (state_.inverseTime)
     return fail(column, "Cannot use canned cycles in inverse time feed mode (G93)");
+  if (state_.rotation != 0) return fail(column, "Canned cycles under G68 coordinate rotation are not supported");
   if (state_.feed <= 0) return fail(column, fmt::format("Cannot do {} with zero feed rate", name));
 
   // A cycle's first block names its levels; later blocks may reuse them.

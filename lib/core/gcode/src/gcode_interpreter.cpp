@@ -49,6 +49,7 @@ int groupOf(int code) {
       return kGroupCoordSystem;
     case kG61: case kG61_1: case kG64: return kGroupPathControl;
     case kG96: case kG97: return kGroupSpindleMode;
+    case kG68: case kG69: return kGroupRotation;
     // Known RS274/NGC (LinuxCNC) codes that this interpreter does not model.
     case 50: case 51: case 52: case 53: case 70: case 80: case 171: case 181: case 191:
     case 330: case 331: case 382: case 383: case 384: case 385: case 432: case 760:
@@ -235,7 +236,10 @@ bool InterpreterState::executeBlock(const Block& block) {
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
   const bool axesForNonModal = nonModal == kG10 || nonModal == kG28 || nonModal == kG30 || nonModal == kG65 ||
-                               nonModal == kG92 || nonModal == kG52;
+                               nonModal == kG92 || nonModal == kG52 || groups.code[kGroupRotation] == kG68;
+  if (groups.has(kGroupRotation) &&
+      !setRotation(block, groups.code[kGroupRotation], groups.column[kGroupRotation]))
+    return false;
   machineCoordinates_ = nonModal == kG53;
   const bool axes = hasAxisWords(block);
   if (axesForNonModal && groups.has(kGroupMotion) && groups.code[kGroupMotion] != kG80 && axes)
@@ -304,7 +308,7 @@ bool InterpreterState::executeBlock(const Block& block) {
       return fail(block.col(c),
                   fmt::format("{} word with no G2 or G3 to use it", static_cast<char>(c | 0x20)));
   }
-  if (block.has('R') && !arcRan && !cycleRan && nonModal != kG10 &&
+  if (block.has('R') && !arcRan && !cycleRan && nonModal != kG10 && groups.code[kGroupRotation] != kG68 &&
       !(explicitMotion && isCycle(motion)))
     return fail(block.col('R'), "R word with no g code that uses it");
   if ((block.has('A') || block.has('B') || block.has('C')) && !warnedRotary_) {

@@ -45,14 +45,16 @@ std::string point2(const PlaneAxes& ax, double a, double b) {
 bool InterpreterState::hasAxisWords(const Block& block) const { return (block.present & kAxisBits) != 0; }
 
 Vec3 InterpreterState::targetOf(const Block& block) const {
-  Vec3 t = state_.position;
+  // Under G68 the words are read in the turned frame (G53 machine moves are not turned).
+  const bool turned = state_.rotation != 0 && !machineCoordinates_;
+  Vec3 t = turned ? unrotated(state_.position) : state_.position;
   for (int i = 0; i < 3; ++i) {
     const char c = kAxisLetter[i];
     if (!block.has(c)) continue;
     const double v = length(block.get(c));
     t[i] = state_.incremental ? t[i] + v : v + programOffset()[i];
   }
-  return t;
+  return turned ? rotated(t) : t;
 }
 
 bool InterpreterState::setOffset(const Block& block, int code) {
@@ -181,6 +183,19 @@ bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column)
     const double iv = block.has(cv) ? length(block.get(cv)) : 0.0;
     centre[ax.u] = state_.arcAbsolute ? iu + state_.offset[ax.u] : su + iu;
     centre[ax.v] = state_.arcAbsolute ? iv + state_.offset[ax.v] : sv + iv;
+    if (state_.rotation != 0) {  // I, J, K turn with the frame
+      if (state_.rotationPlane != plane)
+        return fail(column, "An arc outside the plane of the G68 rotation is not supported");
+      Vec3 ijk = Vec3::Zero();
+      ijk[ax.u] = iu;
+      ijk[ax.v] = iv;
+      Vec3 absolute = unrotated(start);
+      absolute[ax.u] = centre[ax.u];
+      absolute[ax.v] = centre[ax.v];
+      const Vec3 turned = state_.arcAbsolute ? rotated(absolute) : start + rotatedVector(ijk);
+      centre[ax.u] = turned[ax.u];
+      centre[ax.v] = turned[ax.v];
+    }
     const double r1 = std::hypot(su - centre[ax.u], sv - centre[ax.v]);
     const double r2 = std::hypot(eu - centre[ax.u], ev - centre[ax.v]);
     auto where = [&] {

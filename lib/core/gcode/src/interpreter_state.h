@@ -28,7 +28,7 @@ enum GCode : int {
   kG28 = 280, kG28_1 = 281, kG30 = 300, kG30_1 = 301,
   kG40 = 400, kG41 = 410, kG41_1 = 411, kG42 = 420, kG42_1 = 421,
   kG43 = 430, kG43_1 = 431, kG49 = 490, kG53 = 530,
-  kG61 = 610, kG61_1 = 611, kG64 = 640,
+  kG61 = 610, kG61_1 = 611, kG64 = 640, kG68 = 680, kG69 = 690,
   kG73 = 730, kG74 = 740, kG80 = 800, kG81 = 810, kG82 = 820, kG83 = 830, kG84 = 840, kG85 = 850,
   kG86 = 860, kG88 = 880, kG89 = 890,
   kG90 = 900, kG90_1 = 901, kG91 = 910, kG91_1 = 911,
@@ -50,6 +50,7 @@ enum Group : int {
   kGroupCoordSystem,   // G54 .. G59.3, G54.1 P (Fanuc and Haas extended work offsets)
   kGroupPathControl,   // G61 G61.1 G64
   kGroupSpindleMode,   // G96 G97
+  kGroupRotation,      // G68 G69 (Fanuc's coordinate rotation in the plane)
   kGroupCount
 };
 
@@ -84,6 +85,11 @@ struct ModalState {
   // the last one set (G92.3 brings it back).
   Vec3 offset = Vec3::Zero(), offsetStored = Vec3::Zero();
   double cycleStartZ = 0;       // mm, where the canned cycle began (its G91 R is measured from it)
+  // G68: the program's coordinates turn by `rotation` (radians, counter-clockwise about the
+  // plane's normal) about `rotationCentre` (program coordinates, mm) in `rotationPlane`.
+  double rotation = 0;
+  Vec3 rotationCentre = Vec3::Zero();
+  Plane rotationPlane = Plane::XY;
 };
 
 // One block's G codes sorted by modal group.
@@ -128,6 +134,12 @@ class InterpreterState {
   Vec3 targetOf(const Block& block) const;  // axis words applied to the current position
   Vec3 programOffset() const { return machineCoordinates_ ? Vec3::Zero() : state_.offset; }
   bool setOffset(const Block& block, int code);  // G92, G92.1-G92.3, G52
+  // G68 / G69 (gcode_rotation.cpp); a program point (offsets included) turned as G68 says, and
+  // back; a vector (I, J, K) turned alike.
+  bool setRotation(const Block& block, int code, std::uint32_t column);
+  Vec3 rotated(const Vec3& p) const;
+  Vec3 unrotated(const Vec3& p) const;
+  Vec3 rotatedVector(const Vec3& v) const;
   bool hasAxisWords(const Block& block) const;
   bool straight(const Block& block, int motion, std::uint32_t column);
   bool arc(const Block& block, int motion, std::uint32_t column);
