@@ -257,3 +257,19 @@ TEST(gcodeModal, ExtendedWorkOffsetsAreRecordedLikeG54) {
   ASSERT_EQ(r.program.moves.size(), 2u);
   EXPECT_EQ(r.program.moves[1].end, Vec3(2, 0, 0));
 }
+
+TEST(gcodeModal, TheControlsPowerOnPlaneAndDistanceModeAreUsedAndNamedWhenRelyingOnThem) {
+  InterpreterOptions options;
+  options.planeAtPowerOn = Plane::ZX;
+  options.incrementalAtPowerOn = true;
+  options.powerOnModesNamed = true;
+  const InterpretResult r = run("G21 F100\nG1 X1 Z1\nG1 X1\nG2 X2 Z0 R1\n", options);
+  ASSERT_TRUE(r.ok()) << r.errors.front().str();
+  EXPECT_EQ(r.program.moves[1].end, Vec3(2, 0, 1));  // incremental
+  EXPECT_EQ(r.program.moves[2].plane, Plane::ZX);
+  ASSERT_EQ(r.program.warnings.size(), 2u);
+  EXPECT_NE(r.program.warnings[0].message.find("power-on distance mode (G91, incremental)"), std::string::npos);
+  EXPECT_NE(r.program.warnings[1].message.find("power-on plane (G18)"), std::string::npos);
+  // A program that states its modes gets no warning.
+  EXPECT_TRUE(run("G21 G90 G18 F100\nG1 X1 Z1\nG2 X2 Z0 R1\n", options).program.warnings.empty());
+}

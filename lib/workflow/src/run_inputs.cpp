@@ -105,6 +105,9 @@ InterpreterOptions interpreterOptions(const Machine& machine) {
   InterpreterOptions options;
   options.inchAtPowerOn = machine.control.inch;
   options.fanuc = machine.control.fanuc;
+  options.planeAtPowerOn = machine.control.plane;
+  options.incrementalAtPowerOn = machine.control.incremental;
+  options.powerOnModesNamed = machine.control.modesNamed;
   options.g28Position = machine.g28Position;
   options.g30Position = machine.g30Position;
   options.toolDiameters = machine.toolDiameters;

@@ -81,6 +81,9 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   state_.g28 = options.g28Position;
   state_.g30 = options.g30Position;
   state_.inch = options.inchAtPowerOn;
+  state_.plane = options.planeAtPowerOn;
+  state_.incremental = options.incrementalAtPowerOn;
+  planeStated_ = distanceStated_ = !options.powerOnModesNamed;
   parameters_.bareSettings = options.fanuc;
   result_.program.source = source_;
   result_.program.start = options.startPosition;
@@ -225,6 +228,16 @@ bool InterpreterState::executeBlock(const Block& block) {
     return false;
   applyModalCodes(groups);
   if (groups.has(kGroupUnits)) unitsStated_ = true;
+  if (groups.has(kGroupPlane)) planeStated_ = true;
+  if (groups.has(kGroupDistance)) distanceStated_ = true;
+  if (!distanceStated_ && hasAxisWords(block))
+    warnOnce(distanceStated_, 1,
+             fmt::format("no G90 or G91 before the first move: the control's power-on distance mode ({}) is used",
+                         options_.incrementalAtPowerOn ? "G91, incremental" : "G90, absolute"));
+  if (!planeStated_ && (block.has('I') || block.has('J') || block.has('K') || block.has('R')))
+    warnOnce(planeStated_, 1,
+             fmt::format("no G17, G18 or G19 before the first arc: the control's power-on plane (G{}) is used",
+                         static_cast<int>(options_.planeAtPowerOn)));
   if (groups.has(kGroupCutterComp) &&
       !setCutterComp(block, groups.code[kGroupCutterComp], groups.column[kGroupCutterComp]))
     return false;

@@ -164,6 +164,18 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       if (u != "mm" && u != "inch") fail(source, "control.units_at_power_on must be \"mm\" or \"inch\"");
       m.control.inch = u == "inch";
     }
+    if (c.contains("plane_at_power_on")) {
+      const std::string p = c["plane_at_power_on"].is_string() ? c["plane_at_power_on"].get<std::string>() : "";
+      if (p != "G17" && p != "G18" && p != "G19") fail(source, "control.plane_at_power_on must be \"G17\", \"G18\" or \"G19\"");
+      m.control.plane = p == "G17" ? Plane::XY : p == "G18" ? Plane::ZX : Plane::YZ;
+      m.control.modesNamed = true;
+    }
+    if (c.contains("distance_at_power_on")) {
+      const std::string d = c["distance_at_power_on"].is_string() ? c["distance_at_power_on"].get<std::string>() : "";
+      if (d != "G90" && d != "G91") fail(source, "control.distance_at_power_on must be \"G90\" or \"G91\"");
+      m.control.incremental = d == "G91";
+      m.control.modesNamed = true;
+    }
     if (c.contains("subroutine_path")) {
       const json& folders = c["subroutine_path"];
       if (!folders.is_array()) fail(source, "control.subroutine_path must be a list of folders");

@@ -21,6 +21,12 @@ struct InterpreterOptions {
   // The control's power-on units (G20 when true); a program that moves before saying G20 or
   // G21 gets one warning naming them.
   bool inchAtPowerOn = false;
+  // The control's power-on plane and distance mode (RS274/NGC: G17, G90). When a machine
+  // description names them (`powerOnModesNamed`), a program that moves before stating its own
+  // gets one warning naming the mode used.
+  Plane planeAtPowerOn = Plane::XY;
+  bool incrementalAtPowerOn = false;
+  bool powerOnModesNamed = false;
   // Fanuc and Haas controls keep G0-G3 apart from the canned cycles: after G80, axis words go
   // on with the G0-G3 motion that was in effect before the cycle (RS274/NGC: an error).
   bool fanuc = false;

@@ -23,6 +23,9 @@ struct AxisLimits {
 struct ControlModes {
   bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
   bool inch = false;   // G20 at power-on
+  Plane plane = Plane::XY;    // G17 at power-on
+  bool incremental = false;   // G91 at power-on
+  bool modesNamed = false;    // the description names the power-on plane or distance mode
   // Folders of subroutine and subprogram files ("subroutine_path", relative to the description);
   // a program's own folder is searched after them.
   std::vector<std::string> subroutinePath;
