@@ -51,9 +51,18 @@ TEST(gcodeSubprograms, MistakesAreErrors) {
   EXPECT_EQ(firstError("G21\nM98 P77\nM30\n"), "t.ngc:3: subprogram O77 is called (line 2) but is neither in the file nor a file O77 in the subroutine path");
   EXPECT_EQ(firstError("M98\n"), "t.ngc:1:1: P word (the program number) missing with M98");
   EXPECT_EQ(firstError("G65 A1\n"), "t.ngc:1:1: P word (the program number) missing with G65");
-  EXPECT_EQ(firstError("M99 P10\n"), "t.ngc:1:5: M99 P (a return to a numbered block) is not supported");
+  EXPECT_EQ(firstError("G21\nM98 P7\nM30\nO7\nM99 P40\n"), "t.ngc:5:5: M99 P40: no block N40 in the calling program");
   const std::string deep = firstError("O5\nM98 P5\n");
   EXPECT_NE(deep.find("nested deeper than 200"), std::string::npos) << deep;
+}
+
+TEST(gcodeSubprograms, M99PReturnsToTheNumberedBlockOfTheCaller) {
+  const Program p = interpret("O1\nG21 G90 G0 X0 Y0\nM98 P100\nN10 G1 X1 F100\nN20 G1 X2\nM30\n"
+                              "O100\nG1 Y5 F100\nM99 P20\n");
+  ASSERT_EQ(p.moves.size(), 3u);
+  EXPECT_EQ(p.moves[1].end, Vec3(0, 5, 0));
+  EXPECT_EQ(p.moves[2].end, Vec3(2, 5, 0));  // N10 is passed over
+  EXPECT_EQ(p.moves[2].line, 5u);
 }
 
 TEST(gcodeSubprograms, M99EndingAMainProgramIsReadOnce) {

@@ -77,7 +77,7 @@ bool programBoundary(const char* p, const char* e) {
 std::optional<LinePosition> FanucMacro::findBlock(long number, LinePosition from) {
   // Within the program the GOTO stands in: forward to its end, then from its start, as a Fanuc
   // control searches. A GOTO of a line goes where it went before (programs that loop by GOTO).
-  const auto known = found_.find({from.line, number});
+  const auto known = found_.find({begin_, from.line, number});
   if (known != found_.end()) return known->second;
   std::optional<LinePosition> target;
   std::uint32_t line = from.line;
@@ -100,7 +100,7 @@ std::optional<LinePosition> FanucMacro::findBlock(long number, LinePosition from
     if (blockNumberOf(p, e) == number) target = LinePosition{p, line};
     p = e + 1;
   }
-  found_[{from.line, number}] = target;
+  found_[{begin_, from.line, number}] = target;
   return target;
 }
 

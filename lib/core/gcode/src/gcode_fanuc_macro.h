@@ -8,6 +8,7 @@
 #include <utility>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "gcode_control_flow.h"
@@ -34,6 +35,9 @@ class FanucMacro {
   };
   Outcome execute(LinePosition here, const char* end);
 
+  // The block numbered N `number` in the program `from` stands in (M99 P returning to it).
+  std::optional<LinePosition> blockNumbered(long number, LinePosition from) { return findBlock(number, from); }
+
   // Subprogram calls in progress (M98, G65): a loop belongs to the call it began in, and those of
   // a call that returned (M99) are over.
   void setCallDepth(std::size_t depth) {
@@ -57,7 +61,8 @@ class FanucMacro {
   std::vector<Loop> loops_;
   std::uint64_t jumps_ = 0;
   std::size_t depth_ = 0;
-  std::map<std::pair<std::uint32_t, long>, std::optional<LinePosition>> found_;  // (line after the GOTO, number)
+  // (the text, the line after the GOTO, the number): a subprogram file has lines of its own.
+  std::map<std::tuple<const char*, std::uint32_t, long>, std::optional<LinePosition>> found_;
 };
 
 }  // namespace isurface::gcode

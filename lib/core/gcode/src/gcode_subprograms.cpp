@@ -32,10 +32,23 @@ std::optional<std::string> programNumber(double p) {
 bool InterpreterState::subprogram(const Block& block, int code) {
   const std::uint32_t column = block.mColumn[0];
   if (code == 990) {
-    if (block.has('P')) return fail(block.col('P'), "M99 P (a return to a numbered block) is not supported");
     bool inProgram = false;
     const ControlFlow::Outcome out = flow_.returnFromProgram(column, inProgram);
     if (!out.ok) return fail(out.column, out.message);
+    if (inProgram && block.has('P') && out.jump) {
+      // M99 P: back to the calling program's block numbered N P instead of the line after the call.
+      const double p = block.get('P');
+      if (p < 0 || std::fabs(p - std::nearbyint(p)) > kWholeNumberTolerance)
+        return fail(block.col('P'), "M99 P must be a block number");
+      enterTextOf(out.jump->at);
+      const std::optional<LinePosition> target = macro_.blockNumbered(std::lround(p), *out.jump);
+      if (!target) {
+        jump_ = out.jump;  // the return is made: on after the call, when going on after errors
+        return fail(block.col('P'), fmt::format("M99 P{0}: no block N{0} in the calling program", std::lround(p)));
+      }
+      jump_ = target;
+      return true;
+    }
     if (!inProgram) {
       // On the control a main program that ends with M99 starts again, for ever: read once here.
       warnOnce(warnedMainM99_, column, "M99 in the main program: the control would run it again and again; read once");
