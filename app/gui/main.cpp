@@ -8,9 +8,11 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <array>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -26,6 +28,44 @@ std::vector<std::string> dropped;
 
 void onDrop(GLFWwindow*, int count, const char** paths) {
   for (int i = 0; i < count; ++i) dropped.emplace_back(paths[i]);
+}
+
+// Dear ImGui 1.86 sees a key as held or not at each frame: a press and its release that arrive
+// in one batch of events (a quick tap, or a synthetic one) would never be seen. Such a release
+// is handed on only after a frame has seen the key down.
+std::set<int> pressedSinceFrame;
+std::vector<std::array<int, 4>> heldReleases;
+
+void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (action == GLFW_RELEASE && pressedSinceFrame.count(key)) {
+    heldReleases.push_back({key, scancode, action, mods});
+    return;
+  }
+  if (action == GLFW_PRESS) pressedSinceFrame.insert(key);
+  ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+}
+
+// After a frame: the releases it waited for. Returns whether there were any (another frame is due).
+bool releaseHeldKeys(GLFWwindow* window) {
+  pressedSinceFrame.clear();
+  const bool any = !heldReleases.empty();
+  for (const auto& r : heldReleases) ImGui_ImplGlfw_KeyCallback(window, r[0], r[1], r[2], r[3]);
+  heldReleases.clear();
+  return any;
+}
+
+// Waits for input. Nothing changes on screen without it (or work in the background), so an idle
+// window sleeps; for a second after input it still draws ten frames a second, for what Dear
+// ImGui shows after a pause (tooltips) and settles over a few frames.
+void waitForInput(bool busy, bool frameDue, bool neverBlock, double& lastInput) {
+  const double now = glfwGetTime();
+  if (frameDue) glfwPollEvents();
+  else if (busy) glfwWaitEventsTimeout(0.05), lastInput = now;  // its result settles after it
+  else if (neverBlock || now - lastInput < 1.0) glfwWaitEventsTimeout(0.1);
+  else {
+    glfwWaitEvents();
+    lastInput = glfwGetTime();
+  }
 }
 
 void setWindowIcon(GLFWwindow* window, const std::string& path) {
@@ -65,6 +105,7 @@ int run(int argc, char** argv) {
   setWindowIcon(window, look.iconFile);
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; settings.json keeps the rest
   ImGui_ImplGlfw_InitForOpenGL(window, true);
+  glfwSetKeyCallback(window, onKey);  // in front of Dear ImGui's, which it calls
   ImGui_ImplOpenGL3_Init("#version 150");
   {
     isurface::panels::GlHooks hooks{[window] { glfwMakeContextCurrent(window); },
@@ -77,11 +118,11 @@ int run(int argc, char** argv) {
       if (std::string(argv[i]) == "--exit-after-frames" && i + 1 < argc) exitAfter = std::atol(argv[++i]);
       else dropped.emplace_back(argv[i]);
     }
+    double lastInput = glfwGetTime();
+    bool frameDue = true;
     while (!glfwWindowShouldClose(window) && !inspector.quitRequested()) {
       if (exitAfter >= 0 && dropped.empty() && !inspector.busy() && exitAfter-- == 0) break;
-      // Idle frames wait for input; work in the background wakes the loop often enough.
-      if (inspector.busy()) glfwWaitEventsTimeout(0.05);
-      else glfwWaitEventsTimeout(0.25);
+      waitForInput(inspector.busy(), frameDue || !dropped.empty(), exitAfter >= 0, lastInput);
       if (!dropped.empty()) {
         inspector.open(dropped);  // together: a dump after its program joins it
         dropped.clear();
@@ -100,6 +141,7 @@ int run(int argc, char** argv) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
+      frameDue = releaseHeldKeys(window);
     }
     glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
     settings.recentFiles = inspector.settings().recentFiles;

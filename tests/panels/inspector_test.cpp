@@ -104,3 +104,29 @@ TEST(inspector, SlowToolServoPathColouredByItsError) {
       << inspector.statusText();
   EXPECT_THROW(inspector.colourBy("no_such_channel"), InputError);
 }
+
+// An idle window sleeps until input comes: nothing on screen changes without it.
+TEST(window, AnIdleWindowTakesNoProcessorTime) {
+  if (std::system("command -v xvfb-run >/dev/null 2>&1") != 0) GTEST_SKIP() << "xvfb-run is not installed";
+  const std::string home = (scratchDir() / "idle-home").string();
+  std::filesystem::create_directories(home);
+  const std::string program = (scratchDir() / "idle-window-program.nc").string();
+  std::filesystem::copy_file(sourcePath("samples/wuzhishan.nc"), program,
+                             std::filesystem::copy_options::overwrite_existing);
+  // Processor ticks (1/100 s) the window's process takes in 2 s windows, until two in a row are
+  // quiet (the program has loaded and the window settled) or 90 s have passed.
+  const std::string script =
+      "HOME=" + home + " timeout 150 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(ISURFACE_GUI) + " " + program +
+      " > " + home + "/log 2>&1 &\n"
+      "pid=; for i in $(seq 1 100); do pid=$(pgrep -f '^" + std::string(ISURFACE_GUI) + " " + program + "' | head -1); "
+      "[ -n \"$pid\" ] && break; sleep 0.2; done\n"
+      "[ -z \"$pid\" ] && { echo 'no window process'; exit 2; }\n"
+      "quiet=0; last=; for i in $(seq 1 45); do a=$(awk '{print $14+$15}' /proc/$pid/stat); sleep 2; "
+      "b=$(awk '{print $14+$15}' /proc/$pid/stat); last=$((b-a)); echo $last >> " + home + "/ticks; "
+      "if [ $last -le 4 ]; then quiet=$((quiet+1)); else quiet=0; fi; [ $quiet -ge 2 ] && break; done\n"
+      "kill $pid; wait; [ $quiet -ge 2 ]\n";
+  const std::string file = home + "/measure.sh";
+  std::ofstream(file) << script;
+  const int status = std::system(("bash " + file).c_str());
+  EXPECT_EQ(WEXITSTATUS(status), 0) << "ticks per 2 s: " << readFile(home + "/ticks") << readFile(home + "/log");
+}

@@ -8,6 +8,12 @@
 
 namespace isurface::panels {
 
+namespace {
+
+constexpr int kNamedKeys = 300;  // io.KeysDown index of ImGuiKey_ 0
+
+}  // namespace
+
 HeadlessUi::HeadlessUi(int width, int height, app_model::Settings settings)
     : width_(width), height_(height), context_(std::make_unique<vis::OsMesaContext>(width, height)) {
   ImGui::CreateContext();
@@ -16,6 +22,8 @@ HeadlessUi::HeadlessUi(int width, int height, app_model::Settings settings)
   io.IniFilename = nullptr;
   io.DisplaySize = ImVec2(static_cast<float>(width), static_cast<float>(height));
   io.DeltaTime = 1.0f / 30.0f;
+  // Named keys above the letters' ASCII codes, which shortcuts read directly.
+  for (int k = 0; k < ImGuiKey_COUNT; ++k) io.KeyMap[k] = kNamedKeys + k;
   ImGui_ImplOpenGL3_Init("#version 150");
   vis::OsMesaContext* context = context_.get();
   panels::GlHooks hooks{[context] { context->makeCurrent(); }, [context] { return context->isCurrent(); }};
@@ -33,6 +41,8 @@ void HeadlessUi::mouse(float x, float y, bool leftDown) {
   io.MousePos = ImVec2(x, y);
   io.MouseDown[0] = leftDown;
 }
+
+void HeadlessUi::key(int imguiKey, bool down) { ImGui::GetIO().KeysDown[kNamedKeys + imguiKey] = down; }
 
 void HeadlessUi::frame() {
   ImGui_ImplOpenGL3_NewFrame();

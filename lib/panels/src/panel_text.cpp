@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "inspector_state.h"
 
@@ -13,10 +14,38 @@ namespace {
 
 constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
 
-// Scrolls a list of fixed-height rows so that `row` is in the middle, once per selection change.
-void scrollToRow(std::size_t row, float rowHeight) {
-  const float target = row * rowHeight - ImGui::GetWindowHeight() * 0.5f;
-  ImGui::SetScrollY(std::max(0.0f, target));
+// Brings `row` of a list of fixed-height rows into view, once per selection change: not at all
+// when it is in view already (a row clicked stays under the pointer), by the least scroll when
+// it is just out of view (stepping with the keys), else to the middle. `covered` is the height
+// of frozen rows over the top of the list.
+void scrollToRow(std::size_t row, float rowHeight, float covered = 0) {
+  const float rowTop = row * rowHeight + covered, scroll = ImGui::GetScrollY();
+  const float viewTop = scroll + covered, viewBottom = scroll + ImGui::GetWindowHeight();
+  if (rowTop >= viewTop && rowTop + rowHeight <= viewBottom) return;
+  const float page = viewBottom - viewTop;
+  if (rowTop < viewTop && viewTop - rowTop <= page) ImGui::SetScrollY(std::max(0.0f, rowTop - covered));
+  else if (rowTop > viewTop && rowTop + rowHeight - viewBottom <= page)
+    ImGui::SetScrollY(rowTop + rowHeight - ImGui::GetWindowHeight());
+  else ImGui::SetScrollY(std::max(0.0f, rowTop - covered - page * 0.5f));
+}
+
+// The row the keys step to while this pane has the keyboard: a row with the arrows, a page with
+// Page Up / Page Down, the ends with Home / End.
+std::optional<std::size_t> steppedRow(std::optional<std::size_t> current, std::size_t count, float rowHeight) {
+  if (count == 0 || ImGui::GetIO().WantTextInput || !ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows))
+    return std::nullopt;
+  auto pressed = [](ImGuiKey key) { return ImGui::IsKeyPressed(ImGui::GetKeyIndex(key), true); };
+  const long page = std::max(1L, static_cast<long>(ImGui::GetWindowHeight() / rowHeight) - 1);
+  const long row = current ? static_cast<long>(*current) : -1;
+  long next = row;
+  if (pressed(ImGuiKey_DownArrow)) next = row + 1;
+  else if (pressed(ImGuiKey_UpArrow)) next = row - 1;
+  else if (pressed(ImGuiKey_PageDown)) next = row + page;
+  else if (pressed(ImGuiKey_PageUp)) next = row - page;
+  else if (pressed(ImGuiKey_Home)) next = 0;
+  else if (pressed(ImGuiKey_End)) next = static_cast<long>(count) - 1;
+  else return std::nullopt;
+  return static_cast<std::size_t>(std::clamp(next, 0L, static_cast<long>(count) - 1));
 }
 
 }  // namespace
@@ -32,12 +61,16 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
   const app_model::Selection& sel = s.selection.current();
   ImGui::BeginChild("lines", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
   const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+  const std::size_t lines = doc->text->count();
+  const std::optional<std::size_t> lineRow = sel.line ? std::optional<std::size_t>(*sel.line - 1) : std::nullopt;
+  if (const std::optional<std::size_t> row = steppedRow(lineRow, lines, rowHeight))
+    s.selection.selectLine(static_cast<std::uint32_t>(*row + 1));
   if (sel.line && sel.generation != s.gcodeScrolledFor) {
     scrollToRow(*sel.line - 1, rowHeight);
     s.gcodeScrolledFor = sel.generation;
   }
   ImGuiListClipper clipper;
-  clipper.Begin(static_cast<int>(doc->text->count()), rowHeight);
+  clipper.Begin(static_cast<int>(lines), rowHeight);
   while (clipper.Step()) {
     for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
       const std::uint32_t line = static_cast<std::uint32_t>(row + 1);
@@ -81,8 +114,9 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
       for (const char* name : {"fb X", "fb Y", "fb Z"}) ImGui::TableSetupColumn(name);
     ImGui::TableHeadersRow();
     const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
+    if (const std::optional<std::size_t> row = steppedRow(sel.sample, t.size(), rowHeight)) s.selection.selectSample(*row);
     if (sel.sample && sel.generation != s.dataScrolledFor) {
-      scrollToRow(*sel.sample, rowHeight);
+      scrollToRow(*sel.sample, rowHeight, rowHeight);  // under the frozen header row
       s.dataScrolledFor = sel.generation;
     }
     ImGuiListClipper clipper;

@@ -32,6 +32,11 @@ void applyUiLook(const UiLook& look) {
   style.WindowRounding = 0;
   style.FrameRounding = 2;
   style.WindowBorderSize = 1;
+  // A selected row stands out more than a row under the pointer (the dark style has it the other
+  // way round, so that a click seemed to select the wrong row).
+  style.Colors[ImGuiCol_Header] = ImVec4(0.26f, 0.59f, 0.98f, 0.85f);
+  style.Colors[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.59f, 0.98f, 0.30f);
+  style.Colors[ImGuiCol_HeaderActive] = ImVec4(0.26f, 0.59f, 0.98f, 1.00f);
   ImGuiIO& io = ImGui::GetIO();
   if (!look.fontFile.empty()) io.Fonts->AddFontFromFileTTF(look.fontFile.c_str(), look.fontSize);
 }

@@ -23,6 +23,9 @@ class HeadlessUi {
   panels::Inspector& inspector() { return *inspector_; }
   // Mouse state for the next frame, in window pixels.
   void mouse(float x, float y, bool leftDown);
+  // A named key (an ImGuiKey_ value: arrows, pages, Home, End, Escape, ...) held or not for the
+  // next frame.
+  void key(int imguiKey, bool down);
   // Draws one frame of the whole window and finishes it.
   void frame();
   // The window as RGBA rows, top row first.
