@@ -400,6 +400,13 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
   return out;
 }
 
+std::vector<ControlFlow::Call> ControlFlow::calls() const {
+  std::vector<Call> out;
+  out.reserve(frames_.size());
+  for (const Frame& f : frames_) out.push_back({f.program ? f.label : shown(f.label), f.back});
+  return out;
+}
+
 std::optional<LinePosition> ControlFlow::searchOnAfterFile() const {
   if (skip_ && (skip_->target == SkipTo::FindSub || skip_->target == SkipTo::FindProgram)) return skip_->back;
   return std::nullopt;

@@ -45,6 +45,13 @@ class ControlFlow {
   // Some control flow was met: lines already read may be read again.
   bool seen() const { return seen_; }
   std::size_t callDepth() const { return frames_.size(); }
+  // The calls in progress, outermost first: what was called ("o<name>", "o100", "O1000") and
+  // the line after the call.
+  struct Call {
+    std::string name;
+    LinePosition back;
+  };
+  std::vector<Call> calls() const;
 
   struct Outcome {
     bool ok = true;

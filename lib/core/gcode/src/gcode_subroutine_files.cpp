@@ -70,6 +70,19 @@ void InterpreterState::enterTextOf(const char* at) {
   macro_.setText(begin, textEnd_);
 }
 
+void InterpreterState::reportCallStack() const {
+  std::string stack;
+  for (const ControlFlow::Call& call : flow_.calls()) {
+    if (!stack.empty()) stack += " > ";
+    // The call stands in the text its return goes back to: a file's, or the main text.
+    for (const SubroutineFile& file : files_)
+      if (call.back.at >= file.text.data() && call.back.at <= file.text.data() + file.text.size())
+        stack += std::filesystem::path(file.path).filename().string() + ':';
+    stack += std::to_string(call.back.line - 1) + ' ' + call.name;
+  }
+  options_.callStack(delivered_ + moves_.size(), stack);
+}
+
 bool InterpreterState::leaveFile(const char*& p) {
   // A file read to its end without defining what was looked for: the search goes on after the call.
   if (const std::optional<LinePosition> back = flow_.searchOnAfterFile()) {

@@ -172,6 +172,8 @@ class InterpreterState {
   bool leaveFile(const char*& p);
   // The line a move carries: the main text's, or the line that called into the file read.
   std::uint32_t moveLine() const { return reading_ ? callLine_ : line_; }
+  // Tells options_.callStack the calls the next move is made in.
+  void reportCallStack() const;
 
   const InterpreterOptions& options_;
   InterpretResult& result_;

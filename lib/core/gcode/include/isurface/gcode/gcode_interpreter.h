@@ -50,6 +50,11 @@ struct InterpreterOptions {
   // Fanuc M98 / G65 P1234 reads O1234 (or O1234.nc, .ngc, .txt). Reading a file adds the
   // program's own folder last.
   std::vector<std::string> subroutinePath;
+  // When set, told the call stack of every move made (its index in the program and, outermost
+  // first, "LINE name" of each call in progress joined by " > ", with "file:" before the line
+  // when the call stands in a subroutine file; empty outside any call). Moves of a block found bad are made
+  // again under the same indices, so a later report replaces an earlier one.
+  std::function<void(std::uint64_t moveIndex, const std::string& stack)> callStack;
   // Called now and then with the fraction of the input read, 0..1.
   std::function<void(double)> progress;
 };
