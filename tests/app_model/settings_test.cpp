@@ -195,3 +195,11 @@ TEST(settings, AddRecentMovesToFrontAndKeepsTen) {
   EXPECT_EQ(s.recentFiles.size(), 10u);
   EXPECT_EQ(s.recentFiles[1], "/file19");
 }
+
+TEST(settings, RecentFilesAreRememberedWithTheirWholePath) {
+  Settings s;
+  s.addRecent("samples/part.nc");
+  s.addRecent("./samples/../samples/part.nc");  // the same file: once, at the front
+  ASSERT_EQ(s.recentFiles.size(), 1u);
+  EXPECT_EQ(s.recentFiles[0], (std::filesystem::current_path() / "samples/part.nc").string());
+}

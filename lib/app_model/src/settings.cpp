@@ -35,8 +35,12 @@ void readWindowSide(const nlohmann::json& json, const char* key, int& target) {
 
 }  // namespace
 
-void Settings::addRecent(const std::string& path) {
-  if (path.empty()) return;
+void Settings::addRecent(const std::string& given) {
+  if (given.empty()) return;
+  // Absolute: the application may be started from another folder next time.
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(given, error);
+  const std::string path = error ? given : absolute.lexically_normal().string();
   recentFiles.erase(std::remove(recentFiles.begin(), recentFiles.end(), path), recentFiles.end());
   recentFiles.insert(recentFiles.begin(), path);
   if (recentFiles.size() > kMaxRecentFiles) recentFiles.resize(kMaxRecentFiles);

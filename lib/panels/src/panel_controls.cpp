@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 
 #include "inspector_state.h"
 #include "isurface/vis/color_map.h"
@@ -55,8 +56,10 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     if (ImGui::BeginMenu("File")) {
       if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.openDialog = true;
       if (ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty())) {
+        std::optional<std::string> chosen;
         for (const std::string& path : s.persistent.recentFiles)
-          if (ImGui::MenuItem(path.c_str())) std::snprintf(s.openPath, sizeof s.openPath, "%s", path.c_str()), s.openDialog = true;
+          if (ImGui::MenuItem(path.c_str())) chosen = path;
+        if (chosen) s.openFile(*chosen);  // after the loop: opening reorders the list
         ImGui::EndMenu();
       }
       if (ImGui::MenuItem("Compare with another run...", nullptr, false, s.activeDocument() != nullptr))
