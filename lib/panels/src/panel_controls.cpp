@@ -81,6 +81,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
         if (ImGui::MenuItem(q.label, nullptr, s.settings.quantity == q.quantity)) {
           s.settings.quantity = q.quantity;
           s.persistent.quantity = q.name;
+          if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was the other quantity's
           s.startRecolour();
         }
       ImGui::EndMenu();
@@ -171,6 +172,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
         s.settings.quantity = q.quantity;
         s.settings.channel.clear();
         s.persistent.quantity = q.name;
+        if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was the other quantity's
         recolour = true;
       }
     // The dump's own channels (errors of a slow tool servo path, currents, ...).
@@ -196,7 +198,15 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   ImGui::SameLine();
   recolour |= ImGui::RadioButton("full", &s.settings.rangeMode, 1);
   ImGui::SameLine();
+  const int modeBefore = s.settings.rangeMode;
   recolour |= ImGui::RadioButton("fixed", &s.settings.rangeMode, 2);
+  if (s.settings.rangeMode == 2 && modeBefore != 2) {
+    // A fixed range starts as the range shown, in the quantity's own unit.
+    if (const Document* doc = s.activeDocument(); doc && doc->scene) {
+      s.settings.fixedLow = static_cast<float>(doc->map.style.range.lo);
+      s.settings.fixedHigh = static_cast<float>(doc->map.style.range.hi);
+    }
+  }
   if (s.settings.rangeMode == 2) {
     ImGui::SetNextItemWidth(-1);
     ImGui::InputFloat("##low", &s.settings.fixedLow);
