@@ -32,12 +32,13 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 
 // Dear ImGui 1.86 sees a key as held or not at each frame: a press and its release that arrive
 // in one batch of events (a quick tap, or a synthetic one) would never be seen. Such a release
-// is handed on only after a frame has seen the key down.
+// is handed on only after a frame has seen the key down, and so are the releases after it in
+// the batch (a quick Ctrl+L lets go of Ctrl after L).
 std::set<int> pressedSinceFrame;
 std::vector<std::array<int, 4>> heldReleases;
 
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  if (action == GLFW_RELEASE && pressedSinceFrame.count(key)) {
+  if (action == GLFW_RELEASE && (pressedSinceFrame.count(key) || !heldReleases.empty())) {
     heldReleases.push_back({key, scancode, action, mods});
     return;
   }

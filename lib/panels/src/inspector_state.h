@@ -140,7 +140,9 @@ struct Inspector::State {
   float pressX = 0, pressY = 0;
   bool pressedInView = false;
   int extraCurve = 0;
-  int locateSample = 0, locateLine = 1;  // the locate dialog's fields  // which extra channel the fourth curve shows
+  int locateSample = 0, locateLine = 1;  // the locate window's fields
+  bool locateOpen = false;
+  std::string locateMessage;  // why the last request went nowhere  // which extra channel the fourth curve shows
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
   // Opens a program or a dump: a dump joins the active program when that has none yet.
   void openFile(const std::string& path);

@@ -13,7 +13,9 @@ namespace isurface::panels {
 
 namespace {
 
-constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
+// The panels tile the window: clicking one never brings it over a floating window (Locate).
+constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
+                                    ImGuiWindowFlags_NoBringToFrontOnFocus;
 
 // A key pressed while no text field has the keyboard (letters are their upper-case ASCII code
 // in both hosts).
@@ -246,6 +248,56 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
   ImGui::End();
 }
 
+namespace {
+
+// Not modal: the panes follow each request while it is open. It starts at the selection.
+void drawLocateWindow(Inspector::State& s) {
+  if (s.locateDialog) {
+    const app_model::Selection& sel = s.selection.current();
+    if (sel.sample) s.locateSample = static_cast<int>(*sel.sample);
+    if (sel.line) s.locateLine = static_cast<int>(*sel.line);
+    s.locateMessage.clear();
+    s.locateOpen = true;
+    ImGui::SetNextWindowFocus();
+  }
+  s.locateDialog = false;
+  if (!s.locateOpen) return;
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.4f), ImGuiCond_Appearing,
+                          ImVec2(0.5f, 0.5f));
+  if (ImGui::Begin("Locate", &s.locateOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+    const Document* doc = s.activeDocument();
+    const std::size_t samples = doc && doc->samples ? doc->samples->size() : 0;
+    const std::size_t lines = doc && doc->text ? doc->text->count() : 0;
+    bool goSample = ImGui::InputInt("sample", &s.locateSample, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    goSample |= ImGui::Button("Go to sample");
+    bool goLine = ImGui::InputInt("G-code line", &s.locateLine, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue);
+    ImGui::SameLine();
+    goLine |= ImGui::Button("Go to line");
+    if (goSample) {
+      s.locateMessage.clear();
+      if (samples == 0) s.locateMessage = "no samples: simulate or open a dump";
+      else if (s.locateSample < 0 || static_cast<std::size_t>(s.locateSample) >= samples)
+        s.locateMessage = "sample " + std::to_string(s.locateSample) + " is out of range: 0 .. " + std::to_string(samples - 1);
+      else s.selection.selectSample(static_cast<std::size_t>(s.locateSample));
+    }
+    if (goLine) {
+      s.locateMessage.clear();
+      if (lines == 0) s.locateMessage = "no program";
+      else if (s.locateLine < 1 || static_cast<std::size_t>(s.locateLine) > lines)
+        s.locateMessage = "line " + std::to_string(s.locateLine) + " is out of range: 1 .. " + std::to_string(lines);
+      else if (!s.selection.selectLine(static_cast<std::uint32_t>(s.locateLine)))
+        s.locateMessage = "line " + std::to_string(s.locateLine) + " produced no samples";
+    }
+    if (!s.locateMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", s.locateMessage.c_str());
+    if (ImGui::Button("Close")) s.locateOpen = false;
+  }
+  ImGui::End();
+}
+
+}  // namespace
+
 void drawDialogs(Inspector::State& s) {
   if (s.openDialog) ImGui::OpenPopup("Open file");
   s.openDialog = false;
@@ -278,21 +330,7 @@ void drawDialogs(Inspector::State& s) {
     ImGui::EndPopup();
   }
 
-  if (s.locateDialog) ImGui::OpenPopup("Locate");
-  s.locateDialog = false;
-  if (ImGui::BeginPopupModal("Locate", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::InputInt("sample", &s.locateSample);
-    ImGui::SameLine();
-    if (ImGui::Button("Go to sample")) s.selection.selectSample(static_cast<std::size_t>(std::max(s.locateSample, 0)));
-    ImGui::InputInt("G-code line", &s.locateLine);
-    ImGui::SameLine();
-    if (ImGui::Button("Go to line")) {
-      if (!s.selection.selectLine(static_cast<std::uint32_t>(std::max(s.locateLine, 1))))
-        s.status = "line " + std::to_string(s.locateLine) + " produced no samples";
-    }
-    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
+  drawLocateWindow(s);
 }
 
 }  // namespace isurface::panels

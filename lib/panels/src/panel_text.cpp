@@ -12,8 +12,6 @@ namespace isurface::panels {
 
 namespace {
 
-constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse;
-
 // Brings `row` of a list of fixed-height rows into view, once per selection change: not at all
 // when it is in view already (a row clicked stays under the pointer), by the least scroll when
 // it is just out of view (stepping with the keys), else to the middle. `covered` is the height
