@@ -64,7 +64,9 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.4f  Y %.4f  Z %.4f mm\n"
                     "v %.1f mm/min   a %.1f mm/s^2   j %.0f mm/s^3", k, t.line[k], t.time[k], t.x[k], t.y[k], t.z[k],
                     doc->curves[0].values.value(k), doc->curves[1].values.value(k), doc->curves[2].values.value(k));
-      const ImVec2 at(origin.x + 10, origin.y + size.y - 4 * ImGui::GetTextLineHeightWithSpacing());
+      // Right of the orientation axes in the lower left corner.
+      const ImVec2 at(origin.x + size.x * static_cast<float>(vis::kAxesCornerWidth) + 10,
+                      origin.y + size.y - 4 * ImGui::GetTextLineHeightWithSpacing());
       const ImVec2 extent = ImGui::CalcTextSize(text);
       draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3), IM_COL32(0, 0, 0, 150), 3);
       draw->AddText(at, IM_COL32(255, 230, 120, 255), text);

@@ -145,7 +145,7 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.renderer->AddActor2D(makeLegend(p.table, style));
   if (!style.caption.empty()) p.renderer->AddActor2D(makeCaption(style.caption, style.fontSize));
   p.axesCorner->AddActor(makeAxes());
-  p.axesCorner->SetViewport(0.0, 0.0, 0.14, 0.2);
+  p.axesCorner->SetViewport(0.0, 0.0, kAxesCornerWidth, kAxesCornerHeight);
   p.axesCorner->SetLayer(1);
   p.axesCorner->InteractiveOff();
   setView(style.view);

@@ -20,6 +20,9 @@ class vtkLookupTable;
 namespace isurface::vis {
 
 enum class ViewDirection { Iso, Top, Front, Left };
+
+// The orientation axes take the view's lower left corner: these fractions of its width and height.
+constexpr double kAxesCornerWidth = 0.14, kAxesCornerHeight = 0.2;
 std::optional<ViewDirection> parseView(const std::string& name);  // "iso", "top", "front", "left"
 
 struct SurfaceData {
