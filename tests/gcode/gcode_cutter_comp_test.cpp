@@ -172,3 +172,16 @@ TEST(CutterCompensation, WhereTheToolCannotFollowThePathTheBlockIsAnError) {
   // With a radius of 0 nothing is offset, so nothing is refused.
   EXPECT_EQ(error("G21\nF100\nG41 D0\nG1 X0.5 Y0\nG40\n"), "<no error>");
 }
+
+TEST(CutterCompensation, ABadBlockSkippedWithKeepGoingLeavesTheCompensatedPathAsIfItWereNotThere) {
+  InterpreterOptions tools = withTools({{1, 2.0}});
+  const InterpretResult clean = run(square("G41 D1"), tools);
+  tools.keepGoing = true;
+  // The bad block makes a move (an inside corner that moves the open move's end) and then fails.
+  std::string text = square("G41 D1");
+  text.insert(text.find("G1 X20 Y20"), "G1 X20 Y20 I5\nG1 X5 Y30 J1\n");
+  const InterpretResult skipped = run(text, tools);
+  ASSERT_EQ(skipped.errors.size(), 2u);
+  ASSERT_EQ(skipped.program.moves.size(), clean.program.moves.size());
+  for (std::size_t i = 0; i < clean.program.moves.size(); ++i) expectNear(skipped.program.moves[i].end, clean.program.moves[i].end, 0);
+}

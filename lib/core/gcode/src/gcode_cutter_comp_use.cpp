@@ -106,6 +106,23 @@ bool InterpreterState::emitPath(MoveKind kind, const Vec3& end, const Vec3& cent
   return true;
 }
 
+InterpreterState::CompensationSnapshot InterpreterState::compensationSnapshot() const {
+  CompensationSnapshot snapshot{comp_, {}};
+  for (const std::uint64_t index : compOpenMoves_)
+    if (index >= delivered_) snapshot.openMoves.emplace_back(index, moves_[static_cast<std::size_t>(index - delivered_)].end);
+  return snapshot;
+}
+
+void InterpreterState::restoreCompensation(const CompensationSnapshot& snapshot) {
+  // The bad block's own moves are gone already; an open move it moved the end of moves back.
+  comp_ = snapshot.comp;
+  compOpenMoves_.clear();
+  for (const auto& [index, end] : snapshot.openMoves) {
+    moves_[static_cast<std::size_t>(index - delivered_)].end = end;
+    compOpenMoves_.push_back(index);
+  }
+}
+
 std::size_t InterpreterState::firstHeldMove() const {
   std::size_t held = moves_.empty() ? 0 : moves_.size() - 1;
   if (comp_.on() && !compOpenMoves_.empty() && compOpenMoves_.front() >= delivered_)

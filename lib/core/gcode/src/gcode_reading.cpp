@@ -144,6 +144,7 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     errorMessage_ = std::move(lexError.message);
   } else {
     const ModalState saved = state_;
+    const CompensationSnapshot compBefore = compensationSnapshot();
     const std::size_t movesBefore = moves_.size();
     if (executeBlock(block_)) {
       if (parameters_.hasStaged()) parameters_.commit();
@@ -151,6 +152,7 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     }
     state_ = saved;  // a bad block has no effect
     moves_.resize(movesBefore);
+    restoreCompensation(compBefore);
     if (errorColumn_ > 0 && block_.kind != BlockKind::OWord) errorColumn_ += shift;
   }
   parameters_.discardStaged();

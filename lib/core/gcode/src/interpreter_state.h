@@ -122,6 +122,13 @@ class InterpreterState {
   void deliverMoves(bool all);
   // The first move that a later block may still change: the last one, or the open offset move.
   std::size_t firstHeldMove() const;
+  // Compensation as it was before a block, to undo a bad one.
+  struct CompensationSnapshot {
+    CutterCompensation comp;
+    std::vector<std::pair<std::uint64_t, Vec3>> openMoves;  // index and end
+  };
+  CompensationSnapshot compensationSnapshot() const;
+  void restoreCompensation(const CompensationSnapshot& snapshot);
   bool executeBlock(const Block& block);
   bool groupCodes(const Block& block, GroupedCodes& groups);
   void applyModalCodes(const GroupedCodes& groups);
