@@ -143,6 +143,31 @@ TEST(gcodeLexer, BadWordsAndCharacters) {
   EXPECT_EQ(firstError("G0 X1 / Y2"), "t.ngc:1:7: Bad character used: '/'");
 }
 
+// Plain blocks (letters, plain numbers, blanks, comments) are read by a quicker path than blocks
+// with parameters or expressions: a parameter setting added to a block changes nothing else.
+TEST(gcodeLexer, PlainBlocksReadAsTheGeneralLexerReadsThem) {
+  const char* const blocks[] = {
+      "G1 X1.5 Y-2 Z.25 F100", "g1x-.5y+7.000z1 f 100", "N10 G0 X1 (move) Y2 ; rest",
+      "G1 X0.00005 Y123456789 Z-0", "G1 X1 (a(b) Y2", "G1 X1 (open", "G1 X1 X2", "G1 X1.2.3",
+      "G1 X- 1", "G1 X 1", "G1 X1 2", "G1 X1 E2", "G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1 G1",
+      "M3 M5 M3 M5 M3 M5 M3 M5 M3 G1 X1 F10", "G1 X1 Y2 Z3 F100 S1000 T1 M3", "G90.1 G17.5 X1",
+      "G1 X1234567890 F1", "G1 X1.0000000000000001 F1", "G1\tX1\rY2\fZ3 F1", "G1 X#1"};
+  for (const char* block : blocks) {
+    const std::string plain = std::string("G21 F50\n") + block + "\n";
+    const std::string general = std::string("G21 F50\n") + block + " #100=1\n";
+    const InterpretResult a = gcodetest::run(plain);
+    const InterpretResult b = gcodetest::run(general);
+    ASSERT_EQ(a.errors.size(), b.errors.size()) << block;
+    for (std::size_t i = 0; i < a.errors.size(); ++i)
+      EXPECT_EQ(a.errors[i].str(), b.errors[i].str()) << block;
+    ASSERT_EQ(a.program.moves.size(), b.program.moves.size()) << block;
+    for (std::size_t i = 0; i < a.program.moves.size(); ++i) {
+      EXPECT_EQ(a.program.moves[i].end, b.program.moves[i].end) << block;
+      EXPECT_EQ(a.program.moves[i].feed, b.program.moves[i].feed) << block;
+    }
+  }
+}
+
 TEST(gcodeLexer, OWordLines) {
   // A program number is a label and nothing more.
   InterpretResult r = run("O1000 (program number)\nG21 G0 X1\n");

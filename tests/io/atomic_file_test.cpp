@@ -140,6 +140,38 @@ TEST(atomicFile, WriteFileAtomicallyHandlesEmptyAndLargeContent) {
   EXPECT_EQ(entries(dir), 2u);
 }
 
+// Past a few megabytes the file is synced in the background while it is written (and the cache
+// of the file it replaces dropped): the content and the all-or-nothing replacement are the same.
+TEST(atomicFile, LargeFilesReplaceTheOldOneOnlyOnCommit) {
+  const fs::path dir = freshDir("large");
+  const std::string target = (dir / "out.canon").string();
+  const std::string old(12 << 20, 'o');
+  writeFileAtomically(target, old);
+  std::string written;
+  {
+    AtomicOutputFile out(target);
+    for (int i = 0; i < 40; ++i) {
+      const std::string chunk((1 << 20) + i, static_cast<char>('a' + i % 26));
+      out.write(chunk);
+      written += chunk;
+    }
+    EXPECT_TRUE(readFile(target) == old);
+    EXPECT_EQ(entries(dir), 2u);
+    out.commit();
+  }
+  EXPECT_TRUE(readFile(target) == written);
+  EXPECT_EQ(entries(dir), 1u);
+
+  // Destroyed without commit after the background sync began: the temporary file goes, the
+  // target stays as it was.
+  {
+    AtomicOutputFile out(target);
+    for (int i = 0; i < 30; ++i) out.write(std::string(1 << 20, 'x'));
+  }
+  EXPECT_TRUE(readFile(target) == written);
+  EXPECT_EQ(entries(dir), 1u);
+}
+
 TEST(atomicFile, MissingFolderIsReported) {
   const std::string target = (scratchDir() / "missing_dir" / "out.json").string();
   const std::string what = errorOf([&] { writeFileAtomically(target, "{}"); });

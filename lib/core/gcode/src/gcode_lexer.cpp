@@ -227,7 +227,78 @@ bool startsComputedValue(const char* p, const char* end) {
 
 }  // namespace
 
-bool lexBlock(const char* begin, const char* end, Block& block, LexError& error, Parameters* parameters) {
+namespace {
+
+// A G or M code in tenths (G1 -> 10, G90.1 -> 901); codes that are not whole tenths get a value
+// no table knows (-1).
+inline int codeInTenths(double v) {
+  const double tenths = v * 10.0;
+  if (tenths >= 0 && tenths < 99999.5) {
+    const int rounded = static_cast<int>(tenths + 0.5);
+    if (std::fabs(tenths - rounded) <= kWholeNumberTolerance) return rounded;
+  }
+  return -1;
+}
+
+// Most blocks are only words of a letter and a plain number ([sign] digits [. digits]), blanks
+// and comments: this reads those in one pass without the general lexer's checks for
+// parameters, expressions and functions. Anything else (and any error) returns false, for the
+// general lexer to read the block from its start, so that both give the same block and errors.
+bool lexPlainBlock(const char* begin, const char* end, Block& block) {
+  std::uint32_t present = 0;
+  int gCount = 0, mCount = 0;
+  const char* p = begin;
+  while (p < end) {
+    const char c = *p;
+    if (classOf(c) != kLetter) {
+      if (classOf(c) == kBlank) {
+        ++p;
+        continue;
+      }
+      if (c == ';') break;
+      if (c != '(') return false;
+      const char* q = p + 1;
+      while (q < end && *q != ')' && *q != '(') ++q;
+      if (q == end || *q == '(') return false;
+      p = q + 1;
+      continue;
+    }
+    const char upper = static_cast<char>(c & ~0x20);
+    const int index = letterIndex(upper);
+    if ((kWordLetters & (1u << index)) == 0 || upper == 'O') return false;
+    const std::uint32_t col = columnOf(begin, p);
+    ++p;
+    // Only a digit or a point may follow the sign of a plain number: a parameter, an expression
+    // or a function is left to the general lexer.
+    double v;
+    if (!parseSimpleNumber(p, end, v)) return false;
+    if (upper == 'G') {
+      if (gCount == kMaxGWords) return false;
+      block.g[gCount] = codeInTenths(v);
+      block.gValue[gCount] = v;
+      block.gColumn[gCount++] = col;
+    } else if (upper == 'M') {
+      if (mCount == kMaxMWords) return false;
+      block.m[mCount] = codeInTenths(v);
+      block.mColumn[mCount++] = col;
+    } else {
+      const std::uint32_t bit = 1u << index;
+      if (present & bit) return false;
+      present |= bit;
+      block.value[index] = v;
+      block.column[index] = col;
+    }
+  }
+  block.kind = BlockKind::Normal;
+  block.present = present;
+  block.gCount = gCount;
+  block.mCount = mCount;
+  return true;
+}
+
+// Any block, plain or not; kept out of lexBlock so that plain blocks do not pay for its frame.
+[[gnu::noinline]] bool lexAnyBlock(const char* begin, const char* end, Block& block, LexError& error,
+                                   Parameters* parameters) {
   block.kind = BlockKind::Normal;
   block.present = 0;
   block.gCount = 0;
@@ -296,13 +367,7 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error,
       }
       const std::uint32_t col = columnOf(begin, wordStart);
       if (upper == 'G' || upper == 'M') {
-        // Codes that are not whole tenths get a value no table knows (-1).
-        const double tenths = v * 10.0;
-        int code = -1;
-        if (tenths >= 0 && tenths < 99999.5) {
-          const int rounded = static_cast<int>(tenths + 0.5);
-          if (std::fabs(tenths - rounded) <= kWholeNumberTolerance) code = rounded;
-        }
+        const int code = codeInTenths(v);
         if (upper == 'G') {
           if (block.gCount == kMaxGWords) return fail(wordStart, "Too many G words on one line");
           block.g[block.gCount] = code;
@@ -358,6 +423,12 @@ bool lexBlock(const char* begin, const char* end, Block& block, LexError& error,
     return fail(p, fmt::format("Bad character used: {}", showChar(c)));
   }
   return true;
+}
+
+}  // namespace
+
+bool lexBlock(const char* begin, const char* end, Block& block, LexError& error, Parameters* parameters) {
+  return lexPlainBlock(begin, end, block) || lexAnyBlock(begin, end, block, error, parameters);
 }
 
 }  // namespace isurface::gcode

@@ -144,7 +144,10 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     errorMessage_ = std::move(lexError.message);
   } else {
     const ModalState saved = state_;
-    const CompensationSnapshot compBefore = compensationSnapshot();
+    // Only a block under compensation has compensation to undo (one that turns it on and fails
+    // turns it off again below).
+    std::optional<CompensationSnapshot> compBefore;
+    if (comp_.on()) compBefore = compensationSnapshot();
     const std::size_t movesBefore = moves_.size();
     if (executeBlock(block_)) {
       if (parameters_.hasStaged()) parameters_.commit();
@@ -152,7 +155,12 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     }
     state_ = saved;  // a bad block has no effect
     moves_.resize(movesBefore);
-    restoreCompensation(compBefore);
+    if (compBefore) {
+      restoreCompensation(*compBefore);
+    } else if (comp_.on()) {
+      comp_ = CutterCompensation{};
+      compOpenMoves_.clear();
+    }
     if (errorColumn_ > 0 && block_.kind != BlockKind::OWord) errorColumn_ += shift;
   }
   parameters_.discardStaged();

@@ -6,9 +6,12 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <condition_variable>
 #include <cstdlib>
 #include <fstream>
+#include <mutex>
 #include <system_error>
+#include <thread>
 
 #include "isurface/base/diagnostic.h"
 
@@ -66,7 +69,79 @@ std::string folderOf(const std::string& path) {
   return path.substr(0, slash);
 }
 
+// Past this many bytes written since the last request, the file is synced in the background.
+constexpr std::uint64_t kBackgroundSyncBytes = std::uint64_t{8} << 20;
+
+// Devices and pipes do not support fsync (EINVAL, EROFS): nothing to sync there.
+bool cannotSync(int error) { return error == EINVAL || error == EROFS || error == ENOTSUP; }
+
 }  // namespace
+
+// Syncing a large file costs about as much as writing it (tens of milliseconds for 50 MB here),
+// and commit() must not rename before the data is on disk. Syncing what is already written on
+// another thread while the writer goes on leaves commit() only the last few megabytes.
+//
+// The rename frees the file it replaces, cached pages included, on the committing thread; the
+// cache of a large file is dropped here beforehand (its content stays as it is until the rename).
+class AtomicOutputFile::BackgroundSync {
+ public:
+  // `replaced`: the file the rename will replace, or empty.
+  BackgroundSync(int fd, std::string replaced)
+      : fd_(fd), replaced_(std::move(replaced)), thread_([this] { run(); }) {}
+  ~BackgroundSync() { finish(); }
+  BackgroundSync(const BackgroundSync&) = delete;
+  BackgroundSync& operator=(const BackgroundSync&) = delete;
+
+  // Syncs again once the sync under way (if any) is done.
+  void request() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      requested_ = true;
+    }
+    wake_.notify_one();
+  }
+
+  // Waits for the sync under way; returns the errno of the first failed sync, or 0. A writeback
+  // error is reported to one sync only, so it must not be lost here.
+  int finish() {
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      stopping_ = true;
+    }
+    wake_.notify_one();
+    if (thread_.joinable()) thread_.join();
+    return error_;
+  }
+
+ private:
+  void run() {
+    if (!replaced_.empty()) {
+      const int old = ::open(replaced_.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK | O_NOCTTY);
+      if (old >= 0) {
+        ::posix_fadvise(old, 0, 0, POSIX_FADV_DONTNEED);
+        ::close(old);
+      }
+    }
+    std::unique_lock<std::mutex> lock(mutex_);
+    for (;;) {
+      wake_.wait(lock, [this] { return requested_ || stopping_; });
+      if (stopping_) return;
+      requested_ = false;
+      lock.unlock();
+      const int error = ::fdatasync(fd_) == 0 ? 0 : errno;
+      lock.lock();
+      if (error != 0 && error_ == 0 && !cannotSync(error)) error_ = error;
+    }
+  }
+
+  const int fd_;
+  const std::string replaced_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  bool requested_ = false, stopping_ = false;
+  int error_ = 0;
+  std::thread thread_;  // last: it starts once the rest is ready
+};
 
 AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
     : target_(std::move(target)), capacity_(std::max<std::size_t>(bufferBytes, 4096)) {
@@ -85,6 +160,7 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
       seekable_ = ::lseek(fd_, 0, SEEK_CUR) != static_cast<off_t>(-1);
     } else {
       mode = st.st_mode & 07777;  // keep an existing file's permissions
+      replacing_ = true;
       struct stat lst {};
       if (::lstat(target_.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
         // Replace the file the link points to, not the link.
@@ -109,6 +185,7 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
 AtomicOutputFile::~AtomicOutputFile() { discard(); }
 
 void AtomicOutputFile::discard() noexcept {
+  sync_.reset();  // before the file descriptor it syncs is closed
   if (fd_ >= 0) {
     ::close(fd_);
     fd_ = -1;
@@ -132,6 +209,21 @@ void AtomicOutputFile::flushBuffer() {
   if (const int error = writeAll(fd_, buffer_.get(), used_)) fail(error);
   flushed_ += used_;
   used_ = 0;
+  syncWrittenInBackground();
+}
+
+void AtomicOutputFile::syncWrittenInBackground() {
+  if (direct_ || backgroundSyncFailed_ || flushed_ - syncRequested_ < kBackgroundSyncBytes) return;
+  syncRequested_ = flushed_;
+  if (!sync_) {
+    try {
+      sync_ = std::make_unique<BackgroundSync>(fd_, replacing_ ? destination_ : std::string());
+    } catch (const std::system_error&) {
+      backgroundSyncFailed_ = true;  // no thread to be had: commit() syncs it all
+      return;
+    }
+  }
+  sync_->request();
 }
 
 void AtomicOutputFile::writeSlow(const void* data, std::size_t n) {
@@ -140,6 +232,7 @@ void AtomicOutputFile::writeSlow(const void* data, std::size_t n) {
     if (fd_ < 0) fail(EBADF, "the file was already closed");
     if (const int error = writeAll(fd_, static_cast<const unsigned char*>(data), n)) fail(error);
     flushed_ += n;
+    syncWrittenInBackground();
   } else {
     std::memcpy(buffer_.get(), data, n);
     used_ = n;
@@ -157,9 +250,13 @@ void AtomicOutputFile::commit() {
   if (committed_) return;
   flushBuffer();
   if (fd_ < 0) fail(EBADF, "the file was already closed");
+  if (sync_) {
+    const int error = sync_->finish();
+    sync_.reset();
+    if (error != 0) fail(error);
+  }
   // Data on disk before the rename, so a crash leaves the old file or the whole new one.
-  // Devices and pipes do not support fsync (EINVAL, EROFS): nothing to sync there.
-  if (::fsync(fd_) != 0 && errno != EINVAL && errno != EROFS && errno != ENOTSUP) fail(errno);
+  if (::fsync(fd_) != 0 && !cannotSync(errno)) fail(errno);
   const int fd = fd_;
   fd_ = -1;
   if (::close(fd) != 0 && errno != EINTR) fail(errno);

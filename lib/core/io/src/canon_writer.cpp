@@ -6,11 +6,18 @@
 #include <fast_float/fast_float.h>
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
+#include <condition_variable>
 #include <cstring>
+#include <exception>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <system_error>
+#include <thread>
 #include <vector>
 
 #include "isurface/io/atomic_file.h"
@@ -23,15 +30,16 @@ namespace {
 template <typename Sink>
 class Output {
  public:
-  explicit Output(Sink& sink) : sink_(sink) { buffer_.resize(kCapacity + kLineRoom); }
+  // Not zeroed: its pages are first touched by the thread that formats.
+  explicit Output(Sink& sink) : sink_(sink), buffer_(new char[kCapacity + kLineRoom]) {}
 
   char* cursor() {
     if (used_ > kCapacity) flush();
-    return buffer_.data() + used_;
+    return buffer_.get() + used_;
   }
-  void advance(const char* end) { used_ = static_cast<std::size_t>(end - buffer_.data()); }
+  void advance(const char* end) { used_ = static_cast<std::size_t>(end - buffer_.get()); }
   void flush() {
-    if (used_ > 0) sink_(buffer_.data(), used_);
+    if (used_ > 0) sink_(buffer_.get(), used_);
     used_ = 0;
   }
 
@@ -39,19 +47,49 @@ class Output {
   static constexpr std::size_t kCapacity = std::size_t{1} << 20;
   static constexpr std::size_t kLineRoom = 4096;  // far more than one line needs
   Sink& sink_;
-  std::vector<char> buffer_;
+  std::unique_ptr<char[]> buffer_;
   std::size_t used_ = 0;
 };
 
+// "00" .. "99": two digits per division by 100.
+struct DigitPairs {
+  char text[200];
+  constexpr DigitPairs() : text() {
+    for (int i = 0; i < 100; ++i) {
+      text[2 * i] = static_cast<char>('0' + i / 10);
+      text[2 * i + 1] = static_cast<char>('0' + i % 10);
+    }
+  }
+};
+constexpr DigitPairs kPairs;
+
+inline char* writePair(char* out, unsigned v) {
+  std::memcpy(out, kPairs.text + 2 * v, 2);
+  return out + 2;
+}
+
 char* writeUnsigned(char* out, unsigned long long v) {
+  if (v < 10) {
+    *out = static_cast<char>('0' + v);
+    return out + 1;
+  }
+  if (v < 100) return writePair(out, static_cast<unsigned>(v));
   char digits[24];
-  int n = 0;
-  do {
-    digits[n++] = static_cast<char>('0' + v % 10);
-    v /= 10;
-  } while (v != 0);
-  while (n > 0) *out++ = digits[--n];
-  return out;
+  char* const last = digits + sizeof digits;
+  char* first = last;
+  while (v >= 100) {
+    first -= 2;
+    writePair(first, static_cast<unsigned>(v % 100));
+    v /= 100;
+  }
+  if (v >= 10) {
+    first -= 2;
+    writePair(first, static_cast<unsigned>(v));
+  } else {
+    *--first = static_cast<char>('0' + v);
+  }
+  std::memcpy(out, first, static_cast<std::size_t>(last - first));
+  return out + (last - first);
 }
 
 // `v` with exactly 4 decimals, as printf("%.4f") would print it, except that a value that rounds
@@ -59,22 +97,20 @@ char* writeUnsigned(char* out, unsigned long long v) {
 char* writeFixed4(char* out, double v) {
   const double scaled = v * 10000.0;
   if (std::fabs(scaled) < 9e15) {
-    const double frac = scaled - std::floor(scaled);
+    // floor() by conversion, exact below 2^53: std::floor is a library call on baseline x86-64.
+    const double truncated = static_cast<double>(static_cast<long long>(scaled));
+    const double frac = scaled - (truncated > scaled ? truncated - 1.0 : truncated);
     // Away from a rounding tie the scaled value rounds like the exact decimal would.
     if (std::fabs(frac - 0.5) > 1e-6) {
-      long long n = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
-      if (n < 0) {
-        *out++ = '-';
-        n = -n;
-      }
-      out = writeUnsigned(out, static_cast<unsigned long long>(n / 10000));
-      const int f = static_cast<int>(n % 10000);
-      *out++ = '.';
-      *out++ = static_cast<char>('0' + f / 1000);
-      *out++ = static_cast<char>('0' + f / 100 % 10);
-      *out++ = static_cast<char>('0' + f / 10 % 10);
-      *out++ = static_cast<char>('0' + f % 10);
-      return out;
+      const long long n = static_cast<long long>(scaled < 0 ? scaled - 0.5 : scaled + 0.5);
+      if (n < 0) *out++ = '-';
+      const auto magnitude = static_cast<unsigned long long>(n < 0 ? -n : n);
+      out = writeUnsigned(out, magnitude / 10000);
+      const auto f = static_cast<unsigned>(magnitude % 10000);
+      *out = '.';
+      writePair(out + 1, f / 100);
+      writePair(out + 3, f % 100);
+      return out + 5;
     }
   }
   if (!std::isfinite(v)) return fmt::format_to(out, "{}", v);
@@ -105,15 +141,21 @@ class FeedText {
   double lastValue_ = 0;
 };
 
+inline char* writeText(char* out, const char (&text)[5]) {
+  std::memcpy(out, text, 4);
+  return out + 4;
+}
+
 char* writeMove(char* out, const Move& m, FeedText& feedText) {
   out = writeUnsigned(out, m.line);
   switch (m.kind) {
-    case MoveKind::Rapid: out = fmt::format_to(out, " G0 "); break;
-    case MoveKind::Linear: out = fmt::format_to(out, " G1 "); break;
-    case MoveKind::ArcCW: out = fmt::format_to(out, " G2 "); break;
-    case MoveKind::ArcCCW: out = fmt::format_to(out, " G3 "); break;
+    case MoveKind::Rapid: out = writeText(out, " G0 "); break;
+    case MoveKind::Linear: out = writeText(out, " G1 "); break;
+    case MoveKind::ArcCW: out = writeText(out, " G2 "); break;
+    case MoveKind::ArcCCW: out = writeText(out, " G3 "); break;
     case MoveKind::Dwell:
-      out = fmt::format_to(out, " G4 P");
+      out = writeText(out, " G4 ");
+      *out++ = 'P';
       out = writeFixed4(out, m.dwellSeconds());
       *out++ = '\n';
       return out;
@@ -127,7 +169,9 @@ char* writeMove(char* out, const Move& m, FeedText& feedText) {
       out = writeFixed4(out, m.centre[i]);
       *out++ = ' ';
     }
-    out = fmt::format_to(out, "G{} ", static_cast<int>(m.plane));
+    *out++ = 'G';
+    out = writeUnsigned(out, static_cast<unsigned>(m.plane));
+    *out++ = ' ';
     out = writeUnsigned(out, m.turns);
     *out++ = ' ';
   }
@@ -136,12 +180,12 @@ char* writeMove(char* out, const Move& m, FeedText& feedText) {
   return out;
 }
 
-// Formats the moves into `write(data, size)` as the interpreter hands them over.
+// Formats the moves into `write(data, size)`.
 template <typename Write>
-class CanonWriter : public MoveSink {
+class MoveFormatter {
  public:
-  explicit CanonWriter(Write& write) : output_(write) {}
-  void consume(const Move* moves, std::size_t count, std::uint64_t) override {
+  explicit MoveFormatter(Write& write) : output_(write) {}
+  void format(const Move* moves, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) output_.advance(writeMove(output_.cursor(), moves[i], feedText_));
   }
   void flush() { output_.flush(); }
@@ -151,12 +195,140 @@ class CanonWriter : public MoveSink {
   FeedText feedText_;
 };
 
+// Moves per batch handed to the formatting thread (64 KB): small enough for the copy to stay in
+// the cache and for the batches to take few pages (a page first touched costs microseconds in a
+// virtual machine), large enough that handing over costs nothing next to formatting.
+constexpr std::size_t kBatchMoves = 1024;
+
+// Formats and writes the moves on a thread of its own while the interpreter reads on: on plain
+// programs formatting and writing the lines costs about half as much as interpreting them, and
+// the machines have two cores.
+// The moves are copied into a few batches that go round between the two threads (the
+// interpreter reuses its own buffer once consume() returns); the interpreter waits only when
+// all of them are queued. Without a thread (none can be made) it formats in place.
+template <typename Write>
+class PipelinedCanonWriter final : public MoveSink {
+ public:
+  explicit PipelinedCanonWriter(Write& write) : formatter_(write) {}
+  ~PipelinedCanonWriter() override { stop(true); }
+  PipelinedCanonWriter(const PipelinedCanonWriter&) = delete;
+  PipelinedCanonWriter& operator=(const PipelinedCanonWriter&) = delete;
+
+  void consume(const Move* moves, std::size_t count, std::uint64_t) override {
+    if (!threadTried_) start();
+    if (!thread_.joinable()) return formatter_.format(moves, count);
+    while (count > 0) {
+      const std::size_t n = std::min(count, kBatchMoves);
+      std::vector<Move>& batch = emptyBatch();
+      batch.assign(moves, moves + n);
+      bool wake;
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        wake = ++queued_ >= kWakeAt && formatterAsleep_;
+      }
+      if (wake) ready_.notify_one();
+      moves += n;
+      count -= n;
+    }
+  }
+
+  // Waits until every move is formatted and written; passes on what the formatting threw.
+  void finish() {
+    stop(false);
+    if (error_) std::rethrow_exception(error_);
+    formatter_.flush();
+  }
+
+ private:
+  static constexpr std::size_t kBatches = 12;
+  // The formatting thread, faster than the interpreter, empties the queue and sleeps; waking it
+  // costs a system call (and, in a virtual machine, an interrupt to the other core), so it is
+  // woken only once this many batches wait. The batches left over keep the interpreter going
+  // while it wakes.
+  static constexpr std::size_t kWakeAt = 4;
+
+  void start() {
+    threadTried_ = true;
+    for (auto& batch : batches_) batch.reserve(kBatchMoves);
+    try {
+      thread_ = std::thread([this] { formatQueued(); });
+    } catch (const std::system_error&) {
+      // No thread to be had: format on the interpreter's own.
+    }
+  }
+
+  // The batch to fill next, once the formatting thread has finished with it.
+  std::vector<Move>& emptyBatch() {
+    std::unique_lock<std::mutex> lock(mutex_);
+    space_.wait(lock, [this] { return queued_ < kBatches || failed_; });
+    if (failed_) {
+      lock.unlock();
+      stop(true);
+      std::rethrow_exception(error_);
+    }
+    return batches_[(next_ + queued_) % kBatches];
+  }
+
+  void formatQueued() {
+    for (;;) {
+      const std::vector<Move>* batch = nullptr;
+      {
+        std::unique_lock<std::mutex> lock(mutex_);
+        if (queued_ == 0 && !closing_) {
+          formatterAsleep_ = true;
+          ready_.wait(lock, [this] { return queued_ >= kWakeAt || closing_; });
+          formatterAsleep_ = false;
+        }
+        if (queued_ == 0 || abandoned_) return;
+        batch = &batches_[next_];
+      }
+      try {
+        formatter_.format(batch->data(), batch->size());
+      } catch (...) {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        error_ = std::current_exception();
+        failed_ = true;
+        space_.notify_one();
+        return;
+      }
+      {
+        const std::lock_guard<std::mutex> lock(mutex_);
+        next_ = (next_ + 1) % kBatches;
+        --queued_;
+      }
+      space_.notify_one();
+    }
+  }
+
+  // Ends the formatting thread: after the queued batches, or at once when `abandon`.
+  void stop(bool abandon) {
+    if (!thread_.joinable()) return;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      closing_ = true;
+      abandoned_ = abandon;
+    }
+    ready_.notify_one();
+    thread_.join();
+  }
+
+  MoveFormatter<Write> formatter_;  // the formatting thread's alone while it runs
+  std::vector<Move> batches_[kBatches];
+  std::mutex mutex_;
+  std::condition_variable ready_, space_;
+  std::size_t next_ = 0, queued_ = 0;  // the batch to format next; how many are waiting
+  bool formatterAsleep_ = false, closing_ = false, abandoned_ = false, failed_ = false;
+  std::exception_ptr error_;
+  bool threadTried_ = false;
+  std::thread thread_;
+};
+
 // Interprets into `write`, streaming: memory stays the same whatever the size of the file.
 template <typename Write>
 StreamedInterpretation interpretInto(const std::string& input, const InterpreterOptions& options, Write& write) {
-  CanonWriter<Write> writer(write);
-  StreamedInterpretation result = interpretGcodeFileStream(input, writer, options);
-  writer.flush();
+  PipelinedCanonWriter<Write> writer(write);
+  StreamedInterpretation result = interpretGcodeFileStream(input, writer, options, kBatchMoves);
+  writer.finish();
   return result;
 }
 

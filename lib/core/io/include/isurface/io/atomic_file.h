@@ -11,6 +11,12 @@
 //
 // Every failure (folder missing or not writable, disk full, I/O error) throws InputError with
 // Diagnostic{file = target, message = "cannot write: <reason>"}.
+//
+// The data is on disk before the rename, so that a system crash too leaves the old file or the
+// whole new one: the rename alone is atomic for every process, but after a power cut the new
+// name may stand for data that never reached the disk (an empty or cut-short file). A large file
+// is synced in the background as it is written (a thread of its own, past the first few
+// megabytes), so that commit() waits only for the last part.
 #include <cstddef>
 #include <cstdint>
 #include <cstring>
@@ -59,8 +65,11 @@ class AtomicOutputFile {
   const std::string& temporaryPath() const { return temp_; }
 
  private:
+  class BackgroundSync;
+
   void writeSlow(const void* data, std::size_t n);
   void flushBuffer();
+  void syncWrittenInBackground();
   [[noreturn]] void fail(int error, const std::string& context = {});
   void discard() noexcept;
 
@@ -75,6 +84,10 @@ class AtomicOutputFile {
   std::size_t capacity_ = 0;
   std::size_t used_ = 0;
   std::uint64_t flushed_ = 0;
+  std::unique_ptr<BackgroundSync> sync_;  // null until the file grows large
+  std::uint64_t syncRequested_ = 0;       // bytes written when the last background sync was asked for
+  bool backgroundSyncFailed_ = false;     // no thread could be made: commit() syncs it all
+  bool replacing_ = false;                // the target is a file that commit() replaces
 };
 
 // Writes `content` to `path` through an AtomicOutputFile. Throws InputError.

@@ -1,6 +1,7 @@
 #pragma once
 // A G-code program interpreted into its canonical move listing (docs/canon-format.md), one
-// line per move, streamed: memory stays the same whatever the size of the file.
+// line per move, streamed: memory stays the same whatever the size of the file. The lines are
+// formatted and written on a second thread while the program is interpreted.
 #include <string>
 
 #include "isurface/gcode/gcode_stream.h"
