@@ -61,3 +61,11 @@ TEST(CutterCompCli, BadToolTablesAndMissingToolsAreClearErrors) {
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("not both"), std::string::npos) << r.err;
 }
+
+TEST(CutterCompCli, LinuxCncsOwnTableFormatWithSignedNumbersIsRead) {
+  const std::string program = test::writeScratch("comp-signed.ngc", kProgram);
+  const std::string table = test::writeScratch("signed.tbl", "T3 P3 D+4.000000 Z+0.511000 ;as LinuxCNC writes it\n");
+  const test::CommandResult r = test::runCli("canon --tool-table " + table + " " + program);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("6 G1 20.0000 2.0000 0.0000 100.0000\n"), std::string::npos) << r.out;
+}

@@ -185,3 +185,15 @@ TEST(CutterCompensation, ABadBlockSkippedWithKeepGoingLeavesTheCompensatedPathAs
   ASSERT_EQ(skipped.program.moves.size(), clean.program.moves.size());
   for (std::size_t i = 0; i < clean.program.moves.size(); ++i) expectNear(skipped.program.moves[i].end, clean.program.moves[i].end, 0);
 }
+
+TEST(CutterCompensation, ADwellStaysWhereTheToolIs) {
+  const InterpretResult r =
+      run("G21\nG0 X-10 Y-10\nF100\nG41 D1\nG1 X0 Y0\nG1 X20 Y0\nG4 P0.5\nG1 X20 Y20\nG40\n", withTools({{1, 2.0}}));
+  ASSERT_TRUE(r.ok()) << r.errors.front().str();
+  const std::vector<Move>& m = r.program.moves;
+  ASSERT_EQ(m[4].kind, MoveKind::Dwell);
+  // The inside corner at (20, 0) moved the side's end, and the dwell with it.
+  expectNear(m[3].end, Vec3(19, 1, 0));
+  expectNear(m[4].end, Vec3(19, 1, 0));
+  expectNear(m[5].end, Vec3(19, 20, 0));
+}

@@ -85,3 +85,11 @@ TEST(gcodeSubprograms, TheLinesSettingsBelongToTheCallerAndG65LettersAreNotWords
   // L0 runs nothing, wherever the subprogram stands.
   EXPECT_EQ(interpret("G21\nM98 P100 L0\nG0 Z1\nM30\nO100\nG0 X1\nM99\n").moves.size(), 1u);
 }
+
+TEST(gcodeSubprograms, M99PWaitsForTheLastRepeat) {
+  const Program p = interpret("O1\nG21 G90 G0 X0 Y0\nM98 P100 L2\nN10 G1 X1 F100\nN20 G1 X2\nM30\n"
+                              "O100\nG91 G1 Y5 F100\nG90\nM99 P20\n");
+  ASSERT_EQ(p.moves.size(), 4u);
+  EXPECT_EQ(p.moves[2].end, Vec3(0, 10, 0));  // both runs
+  EXPECT_EQ(p.moves[3].end, Vec3(2, 10, 0));  // then N20
+}

@@ -107,3 +107,20 @@ TEST(gcodeSubroutineFiles, AProgramFindsTheFilesBesideItWhetherReadWholeOrStream
     EXPECT_EQ(sink.moves[i].line, whole.program.moves[i].line);
   }
 }
+
+TEST(gcodeSubroutineFiles, ACallInAFileOfSomethingDefinedNowhereIsAnErrorNotAHang) {
+  const std::string dir = folder("nowhere");
+  write(dir, "a.ngc", "o<a> sub\no<missing> call\no<a> endsub\n");
+  write(dir, "O1000.nc", "O1000\nM98 P2000\nM99\n");
+  InterpretResult r = run("G21\no<a> call\nM2\n", searching(dir));
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errors.front().message.find("o<missing> is called"), std::string::npos) << r.errors.front().str();
+  r = run("O1\nG21\nM98 P1000\nM30\n", searching(dir, true));
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errors.front().message.find("subprogram O2000 is called"), std::string::npos) << r.errors.front().str();
+  // The call on a last line without its newline, and a file that does not define it.
+  write(dir, "foo.ngc", "o<bar> sub\no<bar> endsub\n");
+  r = run("G21\no<foo> call", searching(dir));
+  ASSERT_FALSE(r.ok());
+  EXPECT_NE(r.errors.front().message.find("o<foo> is called"), std::string::npos) << r.errors.front().str();
+}

@@ -261,7 +261,10 @@ void Inspector::frame() {
   drawCompareDialog(s);
 }
 
-bool Inspector::busy() const { return state_->job.running(); }
+// A job's result is taken, and queued files start loading, by the next frame: until then too.
+bool Inspector::busy() const {
+  return state_->job.running() || state_->job.finishedPending() || !state_->queuedRuns.empty();
+}
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }
 
 void Inspector::waitUntilIdle() {

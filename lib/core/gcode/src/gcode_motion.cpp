@@ -234,7 +234,13 @@ bool InterpreterState::dwell(const Block& block, std::uint32_t column) {
   if (!block.has('P')) return fail(column, "Dwell time P word missing with G4");
   const double seconds = block.get('P');
   if (seconds < 0) return fail(block.col('P'), "Negative dwell time P word used with G4");
-  emit(MoveKind::Dwell, state_.position, static_cast<float>(seconds));
+  if (!comp_.on()) {
+    emit(MoveKind::Dwell, state_.position, static_cast<float>(seconds));
+    return true;
+  }
+  // Where the tool is, beside the programmed point; an inside corner after it moves it too.
+  emit(MoveKind::Dwell, comp_.tool(), static_cast<float>(seconds));
+  compOpenMoves_.push_back(delivered_ + moves_.size() - 1);
   return true;
 }
 

@@ -83,7 +83,10 @@ void InterpreterState::run(std::string_view text) {
   const char* releasedUpTo = begin;
   const char* p = first;
   while (!ended_) {
-    if (p >= textEnd_ && !(reading_ && leaveFile(p))) break;
+    if (p >= textEnd_) {
+      if (reading_ && leaveFile(p)) continue;
+      break;
+    }
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(textEnd_ - p));
     const char* lineEnd = nl ? static_cast<const char*>(nl) : textEnd_;
     ++line_;
@@ -93,7 +96,7 @@ void InterpreterState::run(std::string_view text) {
     }
     lineStart_ = {p, line_};
     lineEnd_ = lineEnd;
-    nextLine_ = {lineEnd + 1, line_ + 1};
+    nextLine_ = {nl ? lineEnd + 1 : textEnd_, line_ + 1};  // never past the text's end
     runLine(p, lineEnd);
     p = lineEnd + 1;
     if (jump_) {  // a loop, a call or a return: on from another line

@@ -32,19 +32,23 @@ std::optional<std::string> programNumber(double p) {
 bool InterpreterState::subprogram(const Block& block, int code) {
   const std::uint32_t column = block.mColumn[0];
   if (code == 990) {
-    bool inProgram = false;
-    const ControlFlow::Outcome out = flow_.returnFromProgram(column, inProgram);
-    if (!out.ok) return fail(out.column, out.message);
-    if (inProgram && block.has('P') && out.jump) {
-      // M99 P: back to the calling program's block numbered N P instead of the line after the call.
+    if (block.has('P')) {
       const double p = block.get('P');
       if (p < 0 || std::fabs(p - std::nearbyint(p)) > kWholeNumberTolerance)
         return fail(block.col('P'), "M99 P must be a block number");
-      enterTextOf(out.jump->at);
-      const std::optional<LinePosition> target = macro_.blockNumbered(std::lround(p), *out.jump);
+    }
+    bool inProgram = false;
+    const std::size_t depth = flow_.callDepth();
+    const ControlFlow::Outcome out = flow_.returnFromProgram(column, inProgram);
+    if (!out.ok) return fail(out.column, out.message);
+    // M99 P: back to the calling program's block N P instead of the line after the call (once
+    // the call is over: while L repeats remain, M99 starts the subprogram again).
+    if (inProgram && block.has('P') && out.jump && flow_.callDepth() < depth) {
+      const long number = std::lround(block.get('P'));
+      const std::optional<LinePosition> target = blockInTextOf(number, *out.jump);
       if (!target) {
         jump_ = out.jump;  // the return is made: on after the call, when going on after errors
-        return fail(block.col('P'), fmt::format("M99 P{0}: no block N{0} in the calling program", std::lround(p)));
+        return fail(block.col('P'), fmt::format("M99 P{0}: no block N{0} in the calling program", number));
       }
       jump_ = target;
       return true;

@@ -70,6 +70,24 @@ void InterpreterState::enterTextOf(const char* at) {
   macro_.setText(begin, textEnd_);
 }
 
+std::optional<LinePosition> InterpreterState::blockInTextOf(long number, LinePosition from) {
+  // Looked for in the caller's text; the text being read (and named in messages) stays this one.
+  const SubroutineFile* const before = reading_;
+  const std::string sourceBefore = source_;
+  const char* const endBefore = textEnd_;
+  const std::uint32_t callLine = callLine_;
+  const char* const leftAt = mainLeftAt_;
+  enterTextOf(from.at);
+  const std::optional<LinePosition> found = macro_.blockNumbered(number, from);
+  reading_ = before;
+  source_ = sourceBefore;
+  textEnd_ = endBefore;
+  callLine_ = callLine;
+  mainLeftAt_ = leftAt;
+  macro_.setText(before ? before->text.data() : mainText_.begin, textEnd_);
+  return found;
+}
+
 void InterpreterState::reportCallStack() const {
   std::string stack;
   for (const ControlFlow::Call& call : flow_.calls()) {
@@ -84,12 +102,20 @@ void InterpreterState::reportCallStack() const {
 }
 
 bool InterpreterState::leaveFile(const char*& p) {
-  // A file read to its end without defining what was looked for: the search goes on after the call.
-  if (const std::optional<LinePosition> back = flow_.searchOnAfterFile()) {
+  // A file read to its end without defining what was looked for: the search goes on after the
+  // call, unless the call is in this very file (it would be read again for ever).
+  const std::optional<LinePosition> back = flow_.searchOnAfterFile();
+  const bool callHere = back && back->at >= reading_->text.data() && back->at <= reading_->text.data() + reading_->text.size();
+  if (back && !callHere) {
     p = back->at;
     enterTextOf(p);
     line_ = back->line - 1;
     return true;
+  }
+  if (back) {
+    result_.errors.push_back(Diagnostic{source_, line_, 0, *flow_.unfinished()});
+    ended_ = true;
+    return false;
   }
   result_.errors.push_back(Diagnostic{
       source_, line_, 0,

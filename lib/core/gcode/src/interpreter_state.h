@@ -179,6 +179,8 @@ class InterpreterState {
   bool leaveFile(const char*& p);
   // The line a move carries: the main text's, or the line that called into the file read.
   std::uint32_t moveLine() const { return reading_ ? callLine_ : line_; }
+  // M99 P: the block numbered `number` in the text `from` is in.
+  std::optional<LinePosition> blockInTextOf(long number, LinePosition from);
   // Tells options_.callStack the calls the next move is made in.
   void reportCallStack() const;
 

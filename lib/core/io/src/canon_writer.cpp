@@ -96,7 +96,7 @@ char* writeUnsigned(char* out, unsigned long long v) {
 // to zero is always "0.0000" (never "-0.0000").
 char* writeFixed4(char* out, double v) {
   const double scaled = v * 10000.0;
-  if (std::fabs(scaled) < 9e15) {
+  if (std::fabs(scaled) < 4.5e15) {  // below 2^52: a whole number here is not a tie to even
     // floor() by conversion, exact below 2^53: std::floor is a library call on baseline x86-64.
     const double truncated = static_cast<double>(static_cast<long long>(scaled));
     const double frac = scaled - (truncated > scaled ? truncated - 1.0 : truncated);

@@ -43,6 +43,7 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
         fail(sourceName, number, std::string("unexpected '") + words[i] + "' in a tool table entry");
       double value = 0;
       const char* first = words.data() + i + 1;
+      if (first < words.data() + words.size() && *first == '+') ++first;  // LinuxCNC writes Z+0.511000
       const auto parsed = fast_float::from_chars(first, words.data() + words.size(), value);
       if (parsed.ec != std::errc() || !std::isfinite(value))
         fail(sourceName, number, std::string("the ") + c + " word of a tool table entry has no number");

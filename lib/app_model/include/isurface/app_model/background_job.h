@@ -44,6 +44,8 @@ class BackgroundJob {
   bool wasCancelled() const { return cancelled_; }
   // True once after each job ends (for the UI to take over its result on its own thread).
   bool takeFinished();
+  // A job ended and takeFinished() has not been asked since.
+  bool finishedPending() const { return finished_; }
 
  private:
   void join();
