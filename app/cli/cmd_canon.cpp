@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <cstring>
 #include <optional>
@@ -24,19 +25,25 @@ std::function<int()> setup(CLI::App& sub) {
     std::string input, output;
     MachineOption machine;
     bool keepGoing = false;
+    bool stack = false;
   };
   auto args = std::make_shared<Args>();
   sub.add_option("file", args->input, "G-code program (RS274/NGC)")->required();
   sub.add_flag("--keep-going", args->keepGoing,
                "skip bad blocks, report every error and print all moves that could be made");
+  sub.add_flag("--stack", args->stack,
+               "after each move made inside subroutine or subprogram calls, ' @ ' and the calls, outermost "
+               "first: the line of each call and what it called");
   sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout");
   args->machine.addTo(sub, "machine description (JSON) whose control reads the program: its dialect, power-on "
                            "units and tools");
   sub.footer("Output: one line per move, `LINE G0|G1 X Y Z F`, `LINE G2|G3 X Y Z CX CY CZ PLANE "
-             "TURNS F` or `LINE G4 P<seconds>`, in workpiece mm and mm/min (docs/canon-format.md).");
+             "TURNS F` or `LINE G4 P<seconds>`, in workpiece mm and mm/min; with --stack, ` @ 12 o<name> > 40 O1000` after "
+             "a move made in calls (docs/canon-format.md).");
   return [args]() -> int {
     InterpreterOptions options = interpreterOptions(loadMachineOption(args->machine));
     options.keepGoing = args->keepGoing;
+    if (args->stack) options.callStack = [](std::uint64_t, const std::string&) {};  // the writer listens
     ProgressLine progress("canon");
     options.progress = [&progress](double f) { progress.update(f); };
     int code = kExitOk;

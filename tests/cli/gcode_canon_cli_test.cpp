@@ -145,3 +145,50 @@ TEST(gcodeCanonCli, RealProgram) {
   EXPECT_NE(text.find("\n14 G2 0.5411 26.0931 -1.0000 0.6814 26.1177 -1.0000 G17 1 2000.0000\n"),
             std::string::npos);
 }
+
+TEST(gcodeCanonCli, StackNamesTheCallsAMoveWasMadeIn) {
+  const std::string path = writeScratch("stack.ngc",
+                                        "o<side> sub\n"
+                                        "  G1 X#1 F100\n"
+                                        "o<side> endsub\n"
+                                        "o<square> sub\n"
+                                        "  o<side> call [10]\n"
+                                        "  G1 Y5\n"
+                                        "o<square> endsub\n"
+                                        "G21 G90\n"
+                                        "G0 Z1\n"
+                                        "o<square> call\n"
+                                        "o<side> call [2]\n"
+                                        "M2\n");
+  const test::CommandResult plain = test::runCli("canon " + path);
+  EXPECT_EQ(plain.exitCode, 0) << plain.err;
+  EXPECT_EQ(plain.out.find(" @ "), std::string::npos);
+  const test::CommandResult r = test::runCli("canon --stack " + path);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out,
+            "9 G0 0.0000 0.0000 1.0000 0.0000\n"
+            "2 G1 10.0000 0.0000 1.0000 100.0000 @ 10 o<square> > 5 o<side>\n"
+            "6 G1 10.0000 5.0000 1.0000 100.0000 @ 10 o<square>\n"
+            "2 G1 2.0000 5.0000 1.0000 100.0000 @ 11 o<side>\n");
+  // Written to a file the same way.
+  const std::string out = (test::scratchDir() / "stack.canon").string();
+  EXPECT_EQ(test::runCli("canon --stack " + path + " -o " + out).exitCode, 0);
+  EXPECT_EQ(test::readFile(out), r.out);
+}
+
+TEST(gcodeCanonCli, StackOfAFanucSubprogramInAFileOfItsOwn) {
+  const std::filesystem::path folder = test::scratchDir() / "stack-fanuc";
+  std::filesystem::create_directories(folder);
+  std::ofstream(folder / "O1000.nc") << "O1000\nG91 G1 X1 F50\nM99\n";
+  std::ofstream(folder / "main.nc") << "G21 G90\nM98 P1000 L2\nG90 G0 X0\nM30\n";
+  const std::filesystem::path machine = folder / "fanuc.json";
+  std::ofstream(machine) << R"({"control": {"dialect": "fanuc"}})";
+  const test::CommandResult r =
+      test::runCli("canon --stack --machine " + machine.string() + " " + (folder / "main.nc").string());
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  // A file's moves carry the calling line; the stack names the subprogram.
+  EXPECT_EQ(r.out,
+            "2 G1 1.0000 0.0000 0.0000 50.0000 @ 2 O1000\n"
+            "2 G1 2.0000 0.0000 0.0000 50.0000 @ 2 O1000\n"
+            "3 G0 0.0000 0.0000 0.0000 0.0000\n");
+}

@@ -17,7 +17,9 @@
 #include <optional>
 #include <string>
 #include <system_error>
+#include <string_view>
 #include <thread>
+#include <unordered_map>
 #include <vector>
 
 #include "isurface/io/atomic_file.h"
@@ -25,6 +27,9 @@
 namespace isurface {
 
 namespace {
+
+// The calls each move is made in, by the move's index, for the moves told and not yet written.
+using CallStacks = std::unordered_map<std::uint64_t, std::string>;
 
 // Formats into a large buffer handed to `sink(data, size)` whenever it fills.
 template <typename Sink>
@@ -188,9 +193,38 @@ class MoveFormatter {
   void format(const Move* moves, std::size_t count) {
     for (std::size_t i = 0; i < count; ++i) output_.advance(writeMove(output_.cursor(), moves[i], feedText_));
   }
+  // Each line followed by " @ " and the calls its move was made in, where it was made in any.
+  void formatWithStacks(const Move* moves, std::size_t count, std::uint64_t firstIndex, CallStacks& stacks) {
+    for (std::size_t i = 0; i < count; ++i) {
+      char* end = writeMove(output_.cursor(), moves[i], feedText_);
+      const auto found = stacks.find(firstIndex + i);
+      if (found != stacks.end()) {
+        // The line's own newline goes after the stack; a stack longer than the room a line has
+        // is written through a flush of its own.
+        --end;
+        output_.advance(end);
+        appendText(" @ ");
+        appendText(found->second);
+        appendText("\n");
+        stacks.erase(found);
+      } else {
+        output_.advance(end);
+      }
+    }
+  }
   void flush() { output_.flush(); }
 
  private:
+  void appendText(std::string_view text) {
+    while (!text.empty()) {
+      const std::size_t n = std::min<std::size_t>(text.size(), 1024);
+      char* at = output_.cursor();
+      std::memcpy(at, text.data(), n);
+      output_.advance(at + n);
+      text.remove_prefix(n);
+    }
+  }
+
   Output<Write> output_;
   FeedText feedText_;
 };
@@ -323,9 +357,40 @@ class PipelinedCanonWriter final : public MoveSink {
   std::thread thread_;
 };
 
+// Formats on the interpreter's thread, each move with the calls it was made in: the stacks are
+// told as the moves are made and used up as they are written, so they take the room of one batch.
+template <typename Write>
+class StackedCanonWriter final : public MoveSink {
+ public:
+  explicit StackedCanonWriter(Write& write) : formatter_(write) {}
+  void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override {
+    formatter_.formatWithStacks(moves, count, firstIndex, stacks_);
+  }
+  // A move made again (its block was found bad and undone) replaces the stack told before.
+  void tell(std::uint64_t moveIndex, const std::string& stack) {
+    if (stack.empty())
+      stacks_.erase(moveIndex);
+    else
+      stacks_[moveIndex] = stack;
+  }
+  void finish() { formatter_.flush(); }
+
+ private:
+  MoveFormatter<Write> formatter_;
+  CallStacks stacks_;
+};
+
 // Interprets into `write`, streaming: memory stays the same whatever the size of the file.
 template <typename Write>
 StreamedInterpretation interpretInto(const std::string& input, const InterpreterOptions& options, Write& write) {
+  if (options.callStack) {
+    StackedCanonWriter<Write> writer(write);
+    InterpreterOptions told = options;
+    told.callStack = [&writer](std::uint64_t index, const std::string& stack) { writer.tell(index, stack); };
+    StreamedInterpretation result = interpretGcodeFileStream(input, writer, told, kBatchMoves);
+    writer.finish();
+    return result;
+  }
   PipelinedCanonWriter<Write> writer(write);
   StreamedInterpretation result = interpretGcodeFileStream(input, writer, options, kBatchMoves);
   writer.finish();

@@ -1,7 +1,9 @@
 #pragma once
 // A G-code program interpreted into its canonical move listing (docs/canon-format.md), one
 // line per move, streamed: memory stays the same whatever the size of the file. The lines are
-// formatted and written on a second thread while the program is interpreted.
+// formatted and written on a second thread while the program is interpreted. When
+// options.callStack is set (to anything), each move made inside calls has them after its line:
+// " @ " and the stack the interpreter tells (docs/canon-format.md).
 #include <string>
 
 #include "isurface/gcode/gcode_stream.h"
