@@ -25,6 +25,8 @@ struct SnapshotOptions {
   std::string output, size = "1600x1000", color = "speed";
   long pickLine = -1, pickSample = -1;
   std::string optimizeLines, optimizeView = "side-by-side";
+  std::string machine;
+  bool showMachine = false;
 };
 
 void writePng(const std::vector<unsigned char>& rgbaTopFirst, int width, int height, const std::string& path) {
@@ -58,6 +60,7 @@ int runSnapshot(const SnapshotOptions& o) {
   // Snapshots do not read or change the user's settings: the same inputs give the same picture.
   panels::HeadlessUi ui(width, height, app_model::Settings{});
   panels::Inspector& inspector = ui.inspector();
+  if (!o.machine.empty()) inspector.useMachine(loadMachine(o.machine), o.machine);
   for (const RunFiles& run : pairRunFiles(o.files)) {
     std::vector<std::string> files;
     for (const std::string& f : {run.program, run.dump})
@@ -92,6 +95,7 @@ int runSnapshot(const SnapshotOptions& o) {
     status = kExitInputError;
   }
   if (o.pickSample >= 0) inspector.selectSample(static_cast<std::size_t>(o.pickSample));
+  if (o.showMachine) inspector.showMachineWindow();
   // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
   for (int frame = 0; frame < 4; ++frame) ui.frame();
   if (status == kExitOk) writePng(ui.pixels(), width, height, o.output);
@@ -117,6 +121,8 @@ Command uiSnapshotCommand() {
           ->check(CLI::IsMember({"side-by-side", "difference"}))
           ->needs(optimize)
           ->capture_default_str();
+      sub.add_option("--machine", o->machine, "machine description (JSON) programs are simulated with");
+      sub.add_flag("--show-machine", o->showMachine, "draw the machine window open");
       return [o] { return runSnapshot(*o); };
     }};
 }

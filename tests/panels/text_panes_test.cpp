@@ -5,8 +5,10 @@
 
 #include "isurface/panels/headless_ui.h"
 #include "test_support.h"
+#include "ui_driving.h"
 
 using namespace isurface;
+using test::click, test::tap;
 
 namespace {
 
@@ -14,24 +16,6 @@ constexpr int kWidth = 1280, kHeight = 800;
 // Inside the G-code pane (right of 70 % of the width, the upper 45 % below the toolbar) and the
 // data bar under it.
 constexpr float kGcodeX = 960, kGcodeY = 220, kDataX = 960, kDataY = 600;
-
-void click(panels::HeadlessUi& ui, float x, float y) {
-  ui.mouse(x, y, false);
-  ui.frame();
-  ui.mouse(x, y, true);
-  ui.frame();
-  ui.mouse(x, y, false);
-  ui.frame();
-  ui.frame();
-}
-
-void tap(panels::HeadlessUi& ui, int key) {
-  ui.key(key, true);
-  ui.frame();
-  ui.key(key, false);
-  ui.frame();
-  ui.frame();
-}
 
 std::uint32_t selectedLine(panels::HeadlessUi& ui) { return ui.inspector().selection().line.value_or(0); }
 

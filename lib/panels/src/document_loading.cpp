@@ -31,8 +31,13 @@ vis::QualityMapRequest fitRequest(vis::QualityMapRequest request, const Trajecto
 
 }  // namespace
 
+std::string machineCaption(const Machine& machine, bool known) {
+  return known ? "machine: " + machine.name : std::string("machine: not named by the dump");
+}
+
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
-                                       const vis::QualityMapRequest& request, app_model::JobControl& control) {
+                                       const vis::QualityMapRequest& request, const Machine& machine,
+                                       app_model::JobControl& control) {
   auto doc = std::make_unique<Document>();
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
@@ -40,6 +45,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   if (!programPath.empty()) doc->text = std::make_unique<app_model::TextLines>(programPath);
   OpenRunRequest open;
   open.files = {programPath, dumpPath};
+  open.machine = machine;
   OpenedRun run = openRun(open, [&control](double f) { control.progress(0.5 * f); });
   doc->program = std::move(run.program);
   doc->samples = std::move(run.samples);
@@ -48,7 +54,9 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   doc->warnings = std::move(run.warnings);
   if (!doc->samples || doc->samples->size() == 0) return doc;
   control.progress(0.55);
-  doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitRequest(request, *doc->samples, doc->warnings));
+  vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
+  fitted.caption = machineCaption(doc->machine, doc->machineKnown);
+  doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
   control.progress(0.75);
   doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
   control.progress(0.85);

@@ -44,6 +44,10 @@ void HeadlessUi::mouse(float x, float y, bool leftDown) {
 
 void HeadlessUi::key(int imguiKey, bool down) { ImGui::GetIO().KeysDown[kNamedKeys + imguiKey] = down; }
 
+void HeadlessUi::letter(char upperCase, bool down) { ImGui::GetIO().KeysDown[static_cast<unsigned char>(upperCase)] = down; }
+void HeadlessUi::ctrl(bool down) { ImGui::GetIO().KeyCtrl = down; }
+void HeadlessUi::type(const std::string& text) { ImGui::GetIO().AddInputCharactersUTF8(text.c_str()); }
+
 void HeadlessUi::frame() {
   ImGui_ImplOpenGL3_NewFrame();
   ImGui::NewFrame();

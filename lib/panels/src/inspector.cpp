@@ -41,9 +41,9 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
   const bool programOpen = replaces < documents.size();
-  job.start(label, [result, programPath, dumpPath, request, programOpen](app_model::JobControl& control) {
+  job.start(label, [result, programPath, dumpPath, request, programOpen, machine = machine](app_model::JobControl& control) {
     try {
-      result->document = loadDocument(programPath, dumpPath, request, control);
+      result->document = loadDocument(programPath, dumpPath, request, machine, control);
     } catch (const DumpMismatchError& e) {
       // Not joined: the program stays (or opens) by itself, and the dump opens as a document
       // of its own, saying why; a dump that cannot stand alone says both.
@@ -51,7 +51,7 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
       if (!programOpen) result->programAlone = programPath;
       result->replaces = ~std::size_t(0);
       try {
-        result->document = loadDocument("", dumpPath, request, control);
+        result->document = loadDocument("", dumpPath, request, machine, control);
       } catch (const InputError& alone) {
         throw InputError(Diagnostic{"", 0, 0, notJoined + "; by itself: " + alone.what()});
       }
@@ -64,7 +64,8 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
 void Inspector::State::startRecolour() {
   Document* doc = activeDocument();
   if (!doc || !doc->samples) return;
-  const vis::QualityMapRequest request = mapRequest();
+  vis::QualityMapRequest request = mapRequest();
+  request.caption = machineCaption(doc->machine, doc->machineKnown);
   auto result = std::make_shared<JobResult>();
   pending = result;
   std::shared_ptr<const Trajectory> samples = doc->samples;
@@ -77,6 +78,27 @@ void Inspector::State::startRecolour() {
               result->scene = std::make_shared<vis::QualityScene>(result->map.data, result->map.style);
               control.progress(1.0);
             });
+}
+
+void Inspector::State::simulateAgain() {
+  Document* doc = activeDocument();
+  if (!doc || doc->programPath.empty()) {
+    status = "Simulate needs a G-code program: open one first";
+    return;
+  }
+  startLoad(doc->programPath, "", active);
+  status = "simulating " + doc->name + " with " + machine.name;
+}
+
+void Inspector::State::closeActive() {
+  if (active >= documents.size() || job.running()) return;
+  const std::string name = documents[active]->name;
+  documents.erase(documents.begin() + static_cast<std::ptrdiff_t>(active));
+  measureA.reset();
+  measureB.reset();
+  hoverSample.reset();
+  activate(std::min(active, documents.empty() ? 0 : documents.size() - 1));
+  status = "closed " + name;
 }
 
 void Inspector::State::takeJobResult() {
@@ -259,6 +281,10 @@ void Inspector::frame() {
   drawDialogs(s);
   drawOptimiseDialog(s);
   drawCompareDialog(s);
+  drawMachineWindow(s);
+  drawExportDialog(s);
+  drawHelpWindow(s);
+  drawOverwriteQuestion(s);
 }
 
 // A job's result is taken, and queued files start loading, by the next frame: until then too.
@@ -304,6 +330,19 @@ void Inspector::showRunDifference(bool difference) { state_->showRunDifference(d
 const RunComparison* Inspector::runComparison() const {
   return state_->runComparison ? &state_->runComparison->result : nullptr;
 }
+
+void Inspector::useMachine(const Machine& machine, const std::string& source) {
+  state_->machine = machine;
+  state_->machineEdit = machine;
+  state_->machineSource = source;
+}
+const Machine& Inspector::machine() const { return state_->machine; }
+const Machine* Inspector::activeMachine() const {
+  const Document* doc = state_->activeDocument();
+  return doc && doc->samples ? &doc->machine : nullptr;
+}
+void Inspector::showMachineWindow() { state_->machineOpen = state_->machineAppearing = true; }
+void Inspector::simulateAgain() { state_->simulateAgain(); }
 
 const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }
 std::string Inspector::statusText() const { return state_->status; }

@@ -3,6 +3,8 @@
 // the background job. Internal to the panels library.
 #include <imgui.h>
 
+#include <array>
+#include <map>
 #include <memory>
 #include <deque>
 #include <optional>
@@ -100,6 +102,11 @@ struct JobResult {
   vis::QualityMap map;
 };
 
+// A file the user asked to save, waiting for "replace?" when it exists.
+struct PendingSave {
+  std::string path, content, what;
+};
+
 struct Inspector::State {
   explicit State(GlHooks hooks) : view(hooks), afterView(hooks) {}
 
@@ -117,6 +124,30 @@ struct Inspector::State {
   std::optional<app_model::BoxSelection> optimiseBox;
   app_model::ScreenRectangle optimiseBoxOnView;
   char savePath[1024] = "";
+  std::optional<PendingSave> overwriteQuestion;
+  // Where the named controls were drawn last (window pixels: x0, y0, x1, y1), for tests and
+  // scripts that drive the window.
+  std::map<std::string, std::array<float, 4>> controls;
+  std::string lastSaved;  // the file the window wrote last
+  // Measuring: the next two picks on the surface are the ends of a distance (mm).
+  bool measuring = false;
+  std::optional<Vec3> measureA, measureB;
+  bool helpOpen = false;
+  // The export dialog: what (0 view PNG, 1 map figures JSON, 2 samples of lines CSV), where.
+  bool exportDialog = false;
+  int exportKind = 0, exportWidth = 1920, exportHeight = 1080, exportFirst = 1, exportLast = 1;
+  char exportPath[1024] = "";
+  // The sample under the resting pointer, and for how many frames the pointer has rested.
+  std::optional<std::size_t> hoverSample;
+  int hoverRestFrames = 0;
+  // The machine programs are simulated with, where it came from, and the machine window's copy
+  // being edited (applied by its "Simulate with this machine").
+  Machine machine = defaultMachine();
+  std::string machineSource = "built-in default";
+  Machine machineEdit = defaultMachine();
+  bool machineOpen = false, machineAppearing = false;
+  char machineLoadPath[1024] = "", machineSavePath[1024] = "";
+  std::string machineMessage;  // why the last request of the machine window failed
   std::vector<std::unique_ptr<Document>> documents;
   std::deque<RunFiles> queuedRuns;  // files opened together, loaded one run after another
   std::string joinNotice;           // why a dump was not joined, shown when its program opens
@@ -155,6 +186,12 @@ struct Inspector::State {
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
+  // Simulates the active document's program again with `machine` (a dump it came with is left).
+  void simulateAgain();
+  // Closes the active document; the one after it (or before, at the end) becomes active.
+  void closeActive();
+  // Writes `content` to `path` (atomically), or asks first when the file exists.
+  void save(const std::string& path, std::string content, const std::string& what);
   // `measuredBox`: where the region's figures are taken (XY, mm); else where the path was re-fitted.
   void startOptimise(std::uint32_t first, std::uint32_t last,
                      std::optional<std::pair<Vec3, Vec3>> measuredBox = std::nullopt);
@@ -173,6 +210,12 @@ struct Inspector::State {
 // below one and the panel behind must not show through.
 void drawViewFrame(unsigned int texture, ImVec2 size);
 
+// Frames the pointer rests before the value under it is shown.
+constexpr int kHoverRestFrames = 5;
+
+// Remembers where the last item drawn stands, under `name` (Inspector::controlRect).
+void noteControl(Inspector::State& s, const std::string& name);
+
 // Opens one window of the fixed layout at its place (ImGui::End() closes it).
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags = 0);
 
@@ -189,6 +232,10 @@ void drawDialogs(Inspector::State& s);
 void drawOptimiseDialog(Inspector::State& s);
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h);
 void drawCompareDialog(Inspector::State& s);
+void drawOverwriteQuestion(Inspector::State& s);
+void drawMachineWindow(Inspector::State& s);
+void drawExportDialog(Inspector::State& s);
+void drawHelpWindow(Inspector::State& s);
 // The panel beside the 3D view: its figures on top (begin), then the view beside the main one
 // (afterView) with the main view's camera in the rest of it (end). `close`: the panel's Close
 // button was pressed; the view is emptied and true returned.
@@ -203,7 +250,11 @@ void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRe
 void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
 // Loads a document on the job's thread.
+// `machine`: what a program without a dump is simulated with.
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
-                                       const vis::QualityMapRequest& request, app_model::JobControl& control);
+                                       const vis::QualityMapRequest& request, const Machine& machine,
+                                       app_model::JobControl& control);
+// The first line of a map's caption: the machine its samples were made with.
+std::string machineCaption(const Machine& machine, bool known);
 
 }  // namespace isurface::panels

@@ -31,6 +31,13 @@ bool toolButton(const char* label, const char* tip) {
   return pressed;
 }
 
+void toggleMeasure(Inspector::State& s) {
+  s.measuring = !s.measuring;
+  s.measureA.reset();
+  s.measureB.reset();
+  s.status = s.measuring ? "measure: click the first point on the surface (Esc ends)" : "measuring ended";
+}
+
 void setView(Inspector::State& s, vis::ViewDirection view) {
   s.settings.view = view;
   s.view.setView(view);
@@ -66,6 +73,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       }
       if (ImGui::MenuItem("Compare with another run...", nullptr, false, s.activeDocument() != nullptr))
         s.compareDialog = true;
+      if (ImGui::MenuItem("Export...", "Ctrl+E", false, s.activeDocument() != nullptr)) s.exportDialog = true;
+      if (ImGui::MenuItem("Close", "Ctrl+W", false, s.activeDocument() != nullptr)) s.closeActive();
       if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.quit = true;
       ImGui::EndMenu();
     }
@@ -90,9 +99,15 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     }
     if (ImGui::BeginMenu("Tools")) {
       if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
+      if (ImGui::MenuItem("Machine...", "M")) s.machineOpen = s.machineAppearing = true;
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
       if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
       ImGui::MenuItem("Select region box", "B", &s.boxSelect);
+      if (ImGui::MenuItem("Measure distance", "D", s.measuring)) toggleMeasure(s);
+      ImGui::EndMenu();
+    }
+    if (ImGui::BeginMenu("Help")) {
+      if (ImGui::MenuItem("Keys and version", "H", s.helpOpen)) s.helpOpen = !s.helpOpen;
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
@@ -102,6 +117,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
   if (toolButton("Open", "Open a G-code program or a Biip dump (O)") || shortcut('O')) s.openDialog = true;
   if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
+  if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut('M'))
+    s.machineOpen = s.machineAppearing = true;
   if (toolButton("Iso", "Isometric view (I)") || shortcut('I')) setView(s, vis::ViewDirection::Iso);
   if (toolButton("Top", "Top view (T)") || shortcut('T')) setView(s, vis::ViewDirection::Top);
   if (toolButton("Front", "Front view (F)") || shortcut('F')) setView(s, vis::ViewDirection::Front);
@@ -113,6 +130,9 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
                  "Drag a rectangle over the surface: its lines go to the Optimise dialog (B)") ||
       shortcut('B'))
     s.boxSelect = !s.boxSelect;
+  if (toolButton(s.measuring ? "[Measure]" : "Measure", "Click two points of the surface: their distance (D)") ||
+      shortcut('D'))
+    toggleMeasure(s);
   if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
   if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.optimiseDialog = true;
   ImGui::End();
@@ -122,10 +142,12 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     else s.rectangleZoom = false;
   }
   if (shortcut('Q', true)) s.quit = true;
+  if (shortcut('E', true) && s.activeDocument()) s.exportDialog = true;
+  if (shortcut('W', true) && s.activeDocument()) s.closeActive();
+  if (shortcut('H')) s.helpOpen = !s.helpOpen;
+  if (s.measuring && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) toggleMeasure(s);
   if (locate) s.locateDialog = true;
-  if (simulate) {
-    if (Document* doc = s.activeDocument(); doc && !doc->programPath.empty()) s.startLoad(doc->programPath, "", s.active);
-  }
+  if (simulate) s.simulateAgain();
 }
 
 void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h) {

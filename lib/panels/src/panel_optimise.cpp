@@ -12,7 +12,6 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
-#include "isurface/io/atomic_file.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/workflow/region_optimisation.h"
 #include "isurface/workflow/run_inputs.h"
@@ -210,12 +209,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   if (!c.kept) {
     ImGui::TextUnformatted("not kept: worse than the program as it is");
   } else if (ImGui::Button("Save program") && s.savePath[0]) {
-    try {
-      writeFileAtomically(s.savePath, c.text);
-      s.status = std::string("saved ") + s.savePath;
-    } catch (const std::exception& e) {
-      s.status = std::string("error: ") + e.what();
-    }
+    s.save(s.savePath, c.text, "re-optimised program");
   }
   ImGui::SameLine();
   const bool close = ImGui::Button("Close");

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "inspector_state.h"
+#include "isurface/analysis/locate.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
@@ -30,6 +31,69 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
   s.optimiseDialog = true;
 }
 
+// A pick while measuring: the first end, then the second; a third starts a new distance.
+void measurePick(Inspector::State& s, const Vec3& point) {
+  if (!s.measureA || s.measureB) {
+    s.measureA = point;
+    s.measureB.reset();
+    s.status = "measure: pick the second point";
+    return;
+  }
+  s.measureB = point;
+  const Vec3 d = *s.measureB - *s.measureA;
+  char text[160];
+  std::snprintf(text, sizeof text, "distance %.4f mm (dX %.4f  dY %.4f  dZ %.4f mm)", d.norm(), d.x(), d.y(), d.z());
+  s.status = text;
+}
+
+// The measured ends and the line between them, with the distance beside it.
+void drawMeasure(Inspector::State& s, ImDrawList* draw, ImVec2 origin) {
+  if (!s.measureA) return;
+  const auto a = s.view.project(*s.measureA);
+  const auto b = s.measureB ? s.view.project(*s.measureB) : std::nullopt;
+  const ImU32 colour = IM_COL32(80, 255, 255, 255);
+  if (a) draw->AddCircleFilled(ImVec2(origin.x + float(a->first), origin.y + float(a->second)), 4, colour);
+  if (!a || !b) return;
+  const ImVec2 pa(origin.x + float(a->first), origin.y + float(a->second));
+  const ImVec2 pb(origin.x + float(b->first), origin.y + float(b->second));
+  draw->AddCircleFilled(pb, 4, colour);
+  draw->AddLine(pa, pb, colour, 2.0f);
+  char text[64];
+  std::snprintf(text, sizeof text, "%.4f mm", (*s.measureB - *s.measureA).norm());
+  const ImVec2 mid((pa.x + pb.x) * 0.5f + 6, (pa.y + pb.y) * 0.5f - 18);
+  const ImVec2 extent = ImGui::CalcTextSize(text);
+  draw->AddRectFilled(ImVec2(mid.x - 3, mid.y - 2), ImVec2(mid.x + extent.x + 3, mid.y + extent.y + 2), IM_COL32(0, 0, 0, 170), 3);
+  draw->AddText(mid, colour, text);
+}
+
+// The value under the pointer once it rests over the surface: the nearest sample's, without
+// changing the selection. One pick per resting place, so moving costs nothing.
+void drawHoverValue(Inspector::State& s, double mx, double my) {
+  Document* doc = s.activeDocument();
+  if (!doc || !doc->samples || doc->curves.empty()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  const bool resting = io.MouseDelta.x == 0 && io.MouseDelta.y == 0;
+  if (!resting) {
+    s.hoverRestFrames = 0;
+    s.hoverSample.reset();
+    return;
+  }
+  if (++s.hoverRestFrames == kHoverRestFrames) {
+    s.hoverSample.reset();
+    if (const auto point = s.view.pick(mx, my)) s.hoverSample = nearestSample(*doc->samples, *point);
+  }
+  if (!s.hoverSample || *s.hoverSample >= doc->samples->size()) return;
+  const std::size_t k = *s.hoverSample;
+  ImGui::BeginTooltip();
+  ImGui::Text("line %u   sample %zu", doc->samples->line[k], k);
+  for (std::size_t c = 0; c < doc->curves.size() && c < 3; ++c)
+    ImGui::Text("%s %.4g %s", doc->curves[c].label.c_str(), doc->curves[c].values.value(k), doc->curves[c].unit.c_str());
+  for (std::size_t c = 3; c < doc->curves.size(); ++c)
+    if (doc->curves[c].label == s.settings.channel)
+      ImGui::Text("%s %.4g", doc->curves[c].label.c_str(), doc->curves[c].values.value(k));
+  ImGui::EndTooltip();
+}
+
 }  // namespace
 
 void drawViewFrame(unsigned int texture, ImVec2 size) {
@@ -44,6 +108,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("3D view", x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
+  s.controls["view"] = {origin.x, origin.y, origin.x + size.x, origin.y + size.y};
   const unsigned int texture = s.view.render(static_cast<int>(size.x), static_cast<int>(size.y));
   if (texture) {
     drawViewFrame(texture, size);
@@ -71,6 +136,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3), IM_COL32(0, 0, 0, 150), 3);
       draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
     }
+    drawMeasure(s, draw, origin);
     // The box that chose the region, while the dialog it filled is open.
     const app_model::ScreenRectangle& r = s.optimiseBoxOnView;
     if (s.optimiseBox && s.optimiseDialogOpen && r.x0 != r.x1 && r.y0 != r.y1) {
@@ -115,14 +181,19 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       } else {
         s.view.mouseButton(button, false, mx, my);
       }
-      // A click that did not drag picks the surface: the nearest sample becomes the selection.
+      // A click that did not drag picks the surface: the nearest sample becomes the selection,
+      // or, while measuring, the point is an end of the distance.
       if (button == 0 && moved < 3 && !s.rectangleZoom) {
-        if (const auto point = s.view.pick(mx, my)) s.selection.selectNearest(*point);
+        if (const auto point = s.view.pick(mx, my)) {
+          if (s.measuring) measurePick(s, *point);
+          else s.selection.selectNearest(*point);
+        }
       }
       s.pressedInView = false;
     }
   } else if (ImGui::IsWindowHovered() && texture) {
     s.view.mouseMove(mx, my);
+    drawHoverValue(s, mx, my);
   }
   ImGui::End();
   ImGui::PopStyleVar();

@@ -14,6 +14,7 @@
 #include <vtkRendererCollection.h>
 #include <vtkStaticCellLocator.h>
 #include <vtkTextureObject.h>
+#include <vtk_glew.h>
 
 #include <algorithm>
 #include <array>
@@ -141,6 +142,25 @@ unsigned int SceneView::render(int width, int height) {
   vtkTextureObject* texture = frame ? frame->GetColorAttachmentAsTextureObject(0) : nullptr;
   d.texture = texture ? texture->GetHandle() : 0;
   return d.texture;
+}
+
+std::vector<unsigned char> SceneView::snapshot(int width, int height) {
+  invalidated_ = true;
+  if (!render(width, height)) return {};
+  Impl& d = *impl_;
+  vtkOpenGLFramebufferObject* frame = d.window->GetDisplayFramebuffer();
+  if (!frame) return {};
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * static_cast<std::size_t>(height) * 3);
+  d.window->GetState()->Reset();
+  d.window->GetState()->Push();
+  frame->Bind(GL_READ_FRAMEBUFFER);
+  frame->ActivateReadBuffer(0);
+  glPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, width, height, GL_RGB, GL_UNSIGNED_BYTE, rgb.data());
+  frame->UnBind(GL_READ_FRAMEBUFFER);
+  d.window->GetState()->Pop();
+  invalidated_ = true;  // the next frame is drawn at the panel's own size again
+  return rgb;
 }
 
 std::optional<std::pair<double, double>> SceneView::project(const Vec3& point) const {

@@ -22,25 +22,6 @@ class BiipSink : public SampleSink {
   BiipWriter& writer_;
 };
 
-nlohmann::json machineJson(const Machine& m) {
-  nlohmann::json axes = nlohmann::json::object();
-  const char* names[3] = {"x", "y", "z"};
-  for (int i = 0; i < 3; ++i) {
-    const AxisLimits& a = m.axes[i];
-    axes[names[i]] = {{"max_velocity_mm_min", mmPerSToMmPerMin(a.maxVelocity)},
-                      {"max_acceleration_mm_s2", a.maxAcceleration},
-                      {"max_jerk_mm_s3", a.maxJerk},
-                      {"position_gain_1_s", a.positionGain},
-                      {"velocity_feed_forward", a.velocityFeedForward},
-                      {"velocity_loop_time_constant_s", a.velocityLoopTimeConstant}};
-  }
-  return {{"name", m.name},
-          {"cycle_s", m.cycle},
-          {"rapid_mm_min", mmPerSToMmPerMin(m.rapidVelocity)},
-          {"chord_tolerance_mm", m.chordTolerance},
-          {"axes", axes}};
-}
-
 }  // namespace
 
 std::vector<BiipChannel> simulationChannels() {
@@ -60,7 +41,7 @@ std::string simulationMetadata(const std::string& source, const Machine& machine
                                {"units", "mm"},
                                {"writer", "isurface-cli 0.1.0 simulate"},
                                {"coordinates", "workpiece"},
-                               {"machine", machineJson(machine)}};
+                               {"machine", nlohmann::json::parse(machineLimitsJson(machine))}};
   return meta.dump();
 }
 

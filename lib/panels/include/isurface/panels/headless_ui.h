@@ -2,6 +2,7 @@
 // The whole application drawn into an OSMesa context: Dear ImGui with its OpenGL 3 renderer
 // and the inspector's panels, fed with input directly. Used by ui-snapshot and the UI benchmark.
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "isurface/panels/inspector.h"
@@ -26,6 +27,11 @@ class HeadlessUi {
   // A named key (an ImGuiKey_ value: arrows, pages, Home, End, Escape, ...) held or not for the
   // next frame.
   void key(int imguiKey, bool down);
+  // A letter key ('A'..'Z', as the window's shortcuts read them) held or not for the next frame.
+  void letter(char upperCase, bool down);
+  void ctrl(bool down);
+  // Text typed into the field that has the keyboard, in the next frame.
+  void type(const std::string& text);
   // Draws one frame of the whole window and finishes it.
   void frame();
   // The window as RGBA rows, top row first.

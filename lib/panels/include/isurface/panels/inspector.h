@@ -3,13 +3,16 @@
 // navigation tree of open programs and their interpolation samples, the G-code text, the data
 // bar of samples, the 3D quality map and the signal curves, all following one selection.
 // The same object draws the interactive window and the headless UI snapshots.
+#include <array>
 #include <cstddef>
+#include <optional>
 #include <cstdint>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "isurface/analysis/run_comparison.h"
+#include "isurface/machine/machine.h"
 #include "isurface/panels/scene_view.h"
 #include "isurface/app_model/selection.h"
 #include "isurface/app_model/settings.h"
@@ -56,8 +59,25 @@ class Inspector {
   void showRunDifference(bool difference);
   // The comparison of the active document with a second run; nullptr when there is none.
   const RunComparison* runComparison() const;
+  // The machine programs are simulated with from now on (`source`: its file, for the window).
+  void useMachine(const Machine& machine, const std::string& source);
+  const Machine& machine() const;
+  // The machine that made the active document's samples; nullptr without samples.
+  const Machine* activeMachine() const;
+  // Opens the machine window (limits, servo, load, save, simulate again).
+  void showMachineWindow();
+  // Simulates the active document's program again with machine().
+  void simulateAgain();
+
   const app_model::Selection& selection() const;
   std::string statusText() const;
+  // Where a named control of the window was drawn last, in window pixels (x0, y0, x1, y1):
+  // "view", "gcode", "machine.simulate", ... (see describe()).
+  std::optional<std::array<float, 4>> controlRect(const std::string& name) const;
+  // The window's state as JSON: documents, selection, machine, measure, open windows, the last
+  // file saved, the status line and the named controls' places. What a script driving the
+  // window checks.
+  std::string describe() const;
 
   app_model::Settings& settings();
   bool quitRequested() const;

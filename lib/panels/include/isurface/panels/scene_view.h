@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <utility>
+#include <vector>
 
 #include "isurface/base/geometry.h"
 #include "isurface/app_model/box_selection.h"
@@ -37,6 +38,9 @@ class SceneView {
   // only when something changed: the size, the scene, the camera, a drag, or invalidate().
   unsigned int render(int width, int height);
   void invalidate() { invalidated_ = true; }
+  // The view drawn at another size, as the camera stands: RGB rows, the bottom row first
+  // (empty when there is nothing to draw).
+  std::vector<unsigned char> snapshot(int width, int height);
   // Where a point (mm) appears in the view, in pixels from its top-left corner.
   std::optional<std::pair<double, double>> project(const Vec3& point) const;
   // The same mapping for many points at once, as the camera stands now (an empty view: 0 x 0).

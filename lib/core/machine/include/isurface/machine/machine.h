@@ -56,6 +56,12 @@ struct Machine {
 Machine parseMachine(const std::string& jsonText, const std::string& sourceName);
 Machine loadMachine(const std::string& path);
 
+// The machine as JSON that parseMachine() reads back to the same machine: the whole description
+// (limits, servo, reference positions, control, tools as diameters in mm), indented for a file.
+std::string machineDescriptionJson(const Machine& m);
+// Only the name, cycle, rapid, tolerance and axes, on one line (what a dump's metadata keeps).
+std::string machineLimitsJson(const Machine& m);
+
 // The built-in default (the text of resources/machines/default.json, compiled in).
 Machine defaultMachine();
 const std::string& defaultMachineJson();

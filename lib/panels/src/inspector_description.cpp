@@ -1,0 +1,79 @@
+// The window's state told as JSON, and the places of its named controls: what a script or a
+// test driving the window checks and clicks.
+#include <imgui.h>
+#include <nlohmann/json.hpp>
+
+#include "inspector_state.h"
+
+namespace isurface::panels {
+
+void noteControl(Inspector::State& s, const std::string& name) {
+  const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
+  s.controls[name] = {min.x, min.y, max.x, max.y};
+}
+
+std::optional<std::array<float, 4>> Inspector::controlRect(const std::string& name) const {
+  const auto found = state_->controls.find(name);
+  if (found == state_->controls.end()) return std::nullopt;
+  return found->second;
+}
+
+namespace {
+
+nlohmann::json pointJson(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
+
+nlohmann::json machineJson(const Machine& m) {
+  nlohmann::json axes = nlohmann::json::array();
+  for (const AxisLimits& a : m.axes)
+    axes.push_back({{"max_velocity_mm_s", a.maxVelocity}, {"max_acceleration_mm_s2", a.maxAcceleration},
+                    {"max_jerk_mm_s3", a.maxJerk}});
+  return {{"name", m.name}, {"cycle_s", m.cycle}, {"axes", axes}};
+}
+
+}  // namespace
+
+std::string Inspector::describe() const {
+  const State& s = *state_;
+  nlohmann::json documents = nlohmann::json::array();
+  for (const auto& doc : s.documents) {
+    nlohmann::json d = {{"name", doc->name},
+                        {"program", doc->programPath},
+                        {"dump", doc->dumpPath},
+                        {"samples", doc->samples ? doc->samples->size() : 0},
+                        {"machine", doc->machineKnown ? doc->machine.name : ""}};
+    if (doc->samples && doc->samples->size() > 1)
+      d["duration_s"] = doc->samples->time.back() - doc->samples->time.front();
+    documents.push_back(d);
+  }
+  const app_model::Selection& sel = s.selection.current();
+  nlohmann::json selection = nlohmann::json::object();
+  if (sel.sample) selection["sample"] = *sel.sample;
+  if (sel.line) selection["line"] = *sel.line;
+  if (s.hoverSample) selection["hover_sample"] = *s.hoverSample;
+  nlohmann::json measure = nlohmann::json::object();
+  measure["active"] = s.measuring;
+  if (s.measureA) measure["a"] = pointJson(*s.measureA);
+  if (s.measureB) measure["b"] = pointJson(*s.measureB);
+  if (s.measureA && s.measureB) measure["distance_mm"] = (*s.measureB - *s.measureA).norm();
+  nlohmann::json controls = nlohmann::json::object();
+  for (const auto& [name, rect] : s.controls) controls[name] = rect;
+  nlohmann::json windows = {{"machine", s.machineOpen},
+                            {"locate", s.locateOpen},
+                            {"optimise", s.optimiseDialogOpen},
+                            {"replace_question", s.overwriteQuestion.has_value()},
+                            {"help", s.helpOpen}};
+  const nlohmann::json out = {{"documents", documents},
+                              {"active", s.active},
+                              {"busy", s.job.running() || !s.queuedRuns.empty()},
+                              {"selection", selection},
+                              {"machine", machineJson(s.machine)},
+                              {"machine_source", s.machineSource},
+                              {"measure", measure},
+                              {"windows", windows},
+                              {"last_saved", s.lastSaved},
+                              {"status", s.status},
+                              {"controls", controls}};
+  return out.dump(1);
+}
+
+}  // namespace isurface::panels

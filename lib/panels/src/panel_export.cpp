@@ -1,0 +1,166 @@
+// Export from the window: the 3D view as a PNG at a chosen size, the current map's figures as
+// JSON, and the samples of a range of G-code lines as CSV. Each goes through the window's save
+// (a file that exists is replaced only when the user says so).
+#include <imgui.h>
+#include <vtkImageData.h>
+#include <vtkPNGWriter.h>
+#include <vtkSmartPointer.h>
+#include <vtkUnsignedCharArray.h>
+
+#include <fmt/format.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cstring>
+#include <filesystem>
+
+#include "inspector_state.h"
+#include "isurface/analysis/quality_figures.h"
+
+namespace isurface::panels {
+
+namespace {
+
+std::string pngOf(const std::vector<unsigned char>& rgbBottomFirst, int width, int height) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::memcpy(image->GetScalarPointer(), rgbBottomFirst.data(), rgbBottomFirst.size());
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputData(image);
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+}
+
+// The map's colour values: what its range was taken from.
+nlohmann::json valueFigures(const std::vector<float>& values) {
+  std::vector<double> finite;
+  finite.reserve(values.size());
+  for (float v : values)
+    if (std::isfinite(v)) finite.push_back(v);
+  if (finite.empty()) return nlohmann::json::object();
+  double sum = 0;
+  for (double v : finite) sum += v;
+  const double mean = sum / static_cast<double>(finite.size());
+  const auto [low, high] = std::minmax_element(finite.begin(), finite.end());
+  const double min = *low, max = *high;
+  return {{"min", min},
+          {"p1", percentileOf(finite, 1)},
+          {"median", percentileOf(finite, 50)},
+          {"p99", percentileOf(finite, 99)},
+          {"max", max},
+          {"mean", mean}};
+}
+
+std::string figuresJson(const Document& doc) {
+  nlohmann::json out = {{"program", doc.programPath},
+                        {"dump", doc.dumpPath},
+                        {"machine", doc.machineKnown ? doc.machine.name : ""},
+                        {"samples", doc.samples->size()},
+                        {"machining_time_s", doc.samples->size() > 1 ? doc.samples->time.back() - doc.samples->time.front() : 0.0},
+                        {"quantity", doc.map.style.quantityLabel},
+                        {"unit", doc.map.style.unit},
+                        {"colour_range", {doc.map.style.range.lo, doc.map.style.range.hi}},
+                        {"passes", doc.map.passes.passes.size()},
+                        {"values", valueFigures(doc.map.data.scalars)}};
+  if (doc.map.mesh) {
+    const QualityFigures f = measureQualityFigures(*doc.samples, *doc.map.mesh);
+    out["figures"] = {{"surface_samples", f.samples},
+                      {"speed_fluctuation_mm_min", f.speedFluctuation},
+                      {"inconsistency_p99_mm_min", f.inconsistencyP99},
+                      {"inconsistency_mean_mm_min", f.inconsistencyMean},
+                      {"jerk_p99_mm_s3", f.jerkP99}};
+    if (f.hasDeviation) out["figures"]["deviation_p99_um"] = f.deviationP99;
+  }
+  return out.dump(2) + "\n";
+}
+
+// Every sample of the lines first..last: time, line, commanded (and feedback) position, and the
+// curves (speed, acceleration, jerk, extra channels).
+std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t last, std::size_t& rows) {
+  const Trajectory& t = *doc.samples;
+  const bool feedback = t.hasFeedback();
+  std::string out = "sample,t_s,line,x_mm,y_mm,z_mm";
+  if (feedback) out += ",fb_x_mm,fb_y_mm,fb_z_mm";
+  for (const Curve& c : doc.curves) out += "," + c.label + (c.unit.empty() ? "" : " [" + c.unit + "]");
+  out += "\n";
+  rows = 0;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    if (t.line[k] < first || t.line[k] > last) continue;
+    out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.time[k], t.line[k], t.x[k], t.y[k], t.z[k]);
+    if (feedback) {
+      const Vec3 f = t.feedback(k);
+      out += fmt::format(",{:.6f},{:.6f},{:.6f}", f.x(), f.y(), f.z());
+    }
+    for (const Curve& c : doc.curves) out += fmt::format(",{:.6g}", c.values.value(k));
+    out += "\n";
+    ++rows;
+  }
+  return out;
+}
+
+}  // namespace
+
+void drawExportDialog(Inspector::State& s) {
+  if (s.exportDialog) {
+    ImGui::OpenPopup("Export");
+    if (const auto line = s.selection.current().line) s.exportFirst = s.exportLast = static_cast<int>(*line);
+  }
+  s.exportDialog = false;
+  if (!ImGui::BeginPopupModal("Export", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  Document* doc = s.activeDocument();
+  ImGui::RadioButton("the view as PNG", &s.exportKind, 0);
+  ImGui::SameLine();
+  ImGui::RadioButton("the map's figures as JSON", &s.exportKind, 1);
+  ImGui::SameLine();
+  ImGui::RadioButton("the samples of lines as CSV", &s.exportKind, 2);
+  noteControl(s, "export.csv");
+  if (s.exportKind == 0) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    ImGui::InputInt("width [px]", &s.exportWidth, 0);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    ImGui::InputInt("height [px]", &s.exportHeight, 0);
+  } else if (s.exportKind == 2) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    ImGui::InputInt("first line", &s.exportFirst, 0);
+    ImGui::SameLine();
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    ImGui::InputInt("last line", &s.exportLast, 0);
+  }
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
+  ImGui::InputTextWithHint("##path", "file to write", s.exportPath, sizeof s.exportPath);
+  noteControl(s, "export.path");
+  std::string problem;
+  if (!doc || !doc->samples || !doc->scene) problem = "nothing to export: open a program or a dump first";
+  else if (s.exportKind == 0 && (s.exportWidth < 64 || s.exportHeight < 64 || s.exportWidth > 8192 || s.exportHeight > 8192))
+    problem = "the size must be 64 to 8192 pixels each way";
+  else if (s.exportKind == 2 && (s.exportFirst < 1 || s.exportLast < s.exportFirst))
+    problem = "the lines must be first <= last, from 1";
+  else if (!s.exportPath[0]) problem = "give the file to write";
+  if (!problem.empty()) ImGui::TextDisabled("%s", problem.c_str());
+  const bool write = ImGui::Button("Export");
+  noteControl(s, "export.write");
+  if (write && problem.empty()) {
+    if (s.exportKind == 0) {
+      const std::vector<unsigned char> rgb = s.view.snapshot(s.exportWidth, s.exportHeight);
+      if (rgb.empty()) s.status = "error: the view could not be drawn at that size";
+      else s.save(s.exportPath, pngOf(rgb, s.exportWidth, s.exportHeight), "view image");
+    } else if (s.exportKind == 1) {
+      s.save(s.exportPath, figuresJson(*doc), "map figures");
+    } else {
+      std::size_t rows = 0;
+      std::string csv = samplesCsv(*doc, static_cast<std::uint32_t>(s.exportFirst), static_cast<std::uint32_t>(s.exportLast), rows);
+      if (rows == 0) s.status = fmt::format("lines {}-{} produced no samples: nothing exported", s.exportFirst, s.exportLast);
+      else s.save(s.exportPath, std::move(csv), fmt::format("{} samples", rows));
+    }
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+}  // namespace isurface::panels

@@ -1,0 +1,63 @@
+// Saving from the window: a file that exists is replaced only when the user says so.
+#include <imgui.h>
+
+#include <filesystem>
+
+#include "inspector_state.h"
+#include "isurface/io/atomic_file.h"
+
+namespace isurface::panels {
+
+namespace {
+
+void writeNow(Inspector::State& s, const PendingSave& save) {
+  try {
+    writeFileAtomically(save.path, save.content);
+    s.status = "saved " + save.what + " to " + save.path;
+    s.lastSaved = save.path;
+  } catch (const std::exception& e) {
+    s.status = std::string("error: ") + e.what();
+  }
+}
+
+}  // namespace
+
+void Inspector::State::save(const std::string& path, std::string content, const std::string& what) {
+  PendingSave pending{path, std::move(content), what};
+  std::error_code error;
+  if (std::filesystem::exists(path, error)) {
+    overwriteQuestion = std::move(pending);
+    return;
+  }
+  writeNow(*this, pending);
+}
+
+void drawOverwriteQuestion(Inspector::State& s) {
+  if (s.overwriteQuestion && !ImGui::IsPopupOpen("Replace file?")) ImGui::OpenPopup("Replace file?");
+  if (!ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (!s.overwriteQuestion) {
+    ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
+  }
+  ImGui::Text("%s already exists.", s.overwriteQuestion->path.c_str());
+  ImGui::Text("Replace it with the %s?", s.overwriteQuestion->what.c_str());
+  const bool replace = ImGui::Button("Replace");
+  noteControl(s, "replace.yes");
+  if (replace) {
+    writeNow(s, *s.overwriteQuestion);
+    s.overwriteQuestion.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::SameLine();
+  const bool cancel = ImGui::Button("Cancel");
+  noteControl(s, "replace.no");
+  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+    s.status = "not saved: " + s.overwriteQuestion->path + " kept";
+    s.overwriteQuestion.reset();
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+}
+
+}  // namespace isurface::panels

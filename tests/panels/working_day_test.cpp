@@ -1,0 +1,179 @@
+// A process engineer's working day in the window, drawn headless and driven with the mouse and
+// the keys: the machine window (edit, simulate with it, save), a file that exists is replaced
+// only when the user says so, measuring a distance, the value under a resting pointer, export,
+// close, help.
+#include <gtest/gtest.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "image_compare.h"
+#include "isurface/machine/machine.h"
+#include "isurface/panels/headless_ui.h"
+#include "test_support.h"
+#include "ui_driving.h"
+
+using namespace isurface;
+using test::click, test::clickControl, test::settle, test::tap, test::tapLetter, test::typeInto;
+
+namespace {
+
+constexpr int kWidth = 1280, kHeight = 800;
+
+std::size_t distinctColours(const test::Image& image) {
+  std::vector<unsigned> colours;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
+    colours.push_back(unsigned(image.rgb[i]) << 16 | unsigned(image.rgb[i + 1]) << 8 | image.rgb[i + 2]);
+  std::sort(colours.begin(), colours.end());
+  return static_cast<std::size_t>(std::unique(colours.begin(), colours.end()) - colours.begin());
+}
+
+nlohmann::json described(panels::HeadlessUi& ui) { return nlohmann::json::parse(ui.inspector().describe()); }
+
+void waitForJobs(panels::HeadlessUi& ui) {
+  ui.inspector().waitUntilIdle();
+  settle(ui);
+}
+
+std::unique_ptr<panels::HeadlessUi> openedSample() {
+  auto ui = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
+  ui->inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(*ui);
+  return ui;
+}
+
+}  // namespace
+
+TEST(workingDay, TheMachineIsEditedSimulatedWithAndSaved) {
+  auto ui = openedSample();
+  const double before = described(*ui)["documents"][0]["duration_s"];
+  tapLetter(*ui, 'M');
+  ASSERT_TRUE(described(*ui)["windows"]["machine"].get<bool>());
+  // Every axis at 1500 mm/min: the program's F3000 passes take twice as long.
+  for (const char* axis : {"x", "y", "z"}) typeInto(*ui, std::string("machine.velocity.") + axis, "1500");
+  clickControl(*ui, "machine.simulate");
+  waitForJobs(*ui);
+  const nlohmann::json state = described(*ui);
+  EXPECT_DOUBLE_EQ(state["machine"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
+  EXPECT_EQ(state["machine_source"], "edited");
+  const double after = state["documents"][0]["duration_s"];
+  EXPECT_GT(after, before * 1.3) << "a slower machine takes longer";
+  ASSERT_NE(ui->inspector().activeMachine(), nullptr);
+  EXPECT_DOUBLE_EQ(ui->inspector().activeMachine()->axes[2].maxVelocity, 25.0);
+
+  // Saved, it reads back as the same machine; a file that exists is asked about first.
+  const std::filesystem::path path = test::scratchDir() / "edited-machine.json";
+  std::ofstream(path) << "{}";
+  typeInto(*ui, "machine.savePath", path.string());
+  clickControl(*ui, "machine.save");
+  ASSERT_TRUE(described(*ui)["windows"]["replace_question"].get<bool>());
+  EXPECT_EQ(test::readFile(path.string()), "{}");  // not yet
+  clickControl(*ui, "replace.yes");
+  EXPECT_FALSE(described(*ui)["windows"]["replace_question"].get<bool>());
+  EXPECT_EQ(described(*ui)["last_saved"], path.string());
+  const Machine saved = loadMachine(path.string());
+  EXPECT_DOUBLE_EQ(saved.axes[1].maxVelocity, 25.0);
+  EXPECT_EQ(saved.name, ui->inspector().machine().name);
+  EXPECT_EQ(machineDescriptionJson(saved), machineDescriptionJson(ui->inspector().machine()));
+}
+
+TEST(workingDay, ReplacingAFileCanBeRefused) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'M');
+  const std::filesystem::path path = test::scratchDir() / "kept-machine.json";
+  std::ofstream(path) << "{\"name\": \"kept\"}";
+  typeInto(*ui, "machine.savePath", path.string());
+  clickControl(*ui, "machine.save");
+  ASSERT_TRUE(described(*ui)["windows"]["replace_question"].get<bool>());
+  clickControl(*ui, "replace.no");
+  EXPECT_EQ(test::readFile(path.string()), "{\"name\": \"kept\"}");
+  EXPECT_EQ(described(*ui)["last_saved"], "");
+}
+
+TEST(workingDay, TwoClicksOnTheSurfaceMeasureTheirDistance) {
+  auto ui = openedSample();
+  const auto view = ui->inspector().controlRect("view");
+  ASSERT_TRUE(view.has_value());
+  const float cx = ((*view)[0] + (*view)[2]) * 0.5f, cy = ((*view)[1] + (*view)[3]) * 0.5f;
+  tapLetter(*ui, 'D');
+  ASSERT_TRUE(described(*ui)["measure"]["active"].get<bool>());
+  click(*ui, cx - 60, cy);
+  click(*ui, cx + 60, cy + 20);
+  const nlohmann::json m = described(*ui)["measure"];
+  ASSERT_TRUE(m.contains("distance_mm")) << m.dump();
+  const Vec3 a(m["a"][0], m["a"][1], m["a"][2]), b(m["b"][0], m["b"][1], m["b"][2]);
+  EXPECT_GT(m["distance_mm"].get<double>(), 1.0);
+  EXPECT_NEAR(m["distance_mm"].get<double>(), (b - a).norm(), 1e-9);
+  EXPECT_NE(ui->inspector().statusText().find("distance"), std::string::npos);
+  // Measuring does not pick: the selection is as it was.
+  EXPECT_FALSE(ui->inspector().selection().sample.has_value());
+  tap(*ui, ImGuiKey_Escape);
+  EXPECT_FALSE(described(*ui)["measure"]["active"].get<bool>());
+}
+
+TEST(workingDay, ThePointerRestingOnTheSurfaceShowsTheValueThere) {
+  auto ui = openedSample();
+  const auto view = ui->inspector().controlRect("view");
+  ASSERT_TRUE(view.has_value());
+  const float cx = ((*view)[0] + (*view)[2]) * 0.5f, cy = ((*view)[1] + (*view)[3]) * 0.5f;
+  ui->mouse(cx - 5, cy, false);
+  ui->frame();
+  EXPECT_FALSE(described(*ui)["selection"].contains("hover_sample"));
+  ui->mouse(cx, cy, false);
+  settle(*ui, 8);
+  const nlohmann::json sel = described(*ui)["selection"];
+  ASSERT_TRUE(sel.contains("hover_sample"));
+  EXPECT_FALSE(sel.contains("sample"));  // hovering does not select
+  ui->mouse(cx + 40, cy, false);
+  ui->frame();
+  EXPECT_FALSE(described(*ui)["selection"].contains("hover_sample"));  // gone as the pointer moves
+}
+
+TEST(workingDay, ExportWritesTheViewFiguresAndSamples) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  settle(*ui);
+  const std::filesystem::path png = test::scratchDir() / "view-export.png";
+  std::filesystem::remove(png);
+  tapLetter(*ui, 'E', true);
+  typeInto(*ui, "export.path", png.string());
+  clickControl(*ui, "export.write");
+  ASSERT_EQ(described(*ui)["last_saved"], png.string()) << ui->inspector().statusText();
+  const test::Image image = test::readPng(png.string());
+  EXPECT_EQ(image.width, 1920);
+  EXPECT_EQ(image.height, 1080);
+  EXPECT_GT(distinctColours(image), 50u) << "a map, not a blank image";
+
+  const std::filesystem::path csv = test::scratchDir() / "line-2000.csv";
+  std::filesystem::remove(csv);
+  tapLetter(*ui, 'E', true);
+  clickControl(*ui, "export.csv");
+  typeInto(*ui, "export.path", csv.string());
+  clickControl(*ui, "export.write");
+  ASSERT_EQ(described(*ui)["last_saved"], csv.string()) << ui->inspector().statusText();
+  std::ifstream in(csv);
+  std::string header, row;
+  std::getline(in, header);
+  EXPECT_EQ(header.rfind("sample,t_s,line,x_mm,y_mm,z_mm,", 0), 0u) << header;
+  std::size_t rows = 0;
+  while (std::getline(in, row)) {
+    ++rows;
+    EXPECT_NE(row.find(",2000,"), std::string::npos) << row;  // only the selected line's samples
+  }
+  EXPECT_GT(rows, 0u);
+}
+
+TEST(workingDay, CloseAndHelp) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'H');
+  EXPECT_TRUE(described(*ui)["windows"]["help"].get<bool>());
+  tapLetter(*ui, 'H');
+  EXPECT_FALSE(described(*ui)["windows"]["help"].get<bool>());
+  ASSERT_EQ(ui->inspector().documentCount(), 1u);
+  tapLetter(*ui, 'W', true);
+  EXPECT_EQ(ui->inspector().documentCount(), 0u);
+  EXPECT_EQ(ui->inspector().activeMachine(), nullptr);
+}
