@@ -304,7 +304,7 @@ const std::vector<Row>& catalogue() {
        {"meta_huge.biip", "4294967295 metadata bytes"}, "meta_huge.json"},
       {"biip_bad_dump_render",
        "render {in}/good.nc {in}/magic.biip -o {out}/magic.png --size 64x48",
-       2, {"magic.biip", "wrong magic"}, "magic.png"},
+       2, {"magic.biip", "does not begin with the bytes 'BIIP'"}, "magic.png"},
       {"biip_bad_dump_analyze", "analyze {in}/good.nc {in}/dup_chan.biip -o {out}/dup_chan_an.json",
        2, {"dup_chan.biip", "two channels are named 'x'"}, "dup_chan_an.json"},
 

@@ -92,7 +92,7 @@ TEST(inspectorWorkflow, OptimisingADumpWithoutItsProgramSaysWhy) {
   inspector.waitUntilIdle();
   inspector.optimise(105, 400);
   inspector.waitUntilIdle();
-  EXPECT_NE(inspector.statusText().find("needs a G-code program"), std::string::npos) << inspector.statusText();
+  EXPECT_NE(inspector.statusText().find("needs the G-code program of"), std::string::npos) << inspector.statusText();
 }
 
 TEST(inspectorWorkflow, RememberedSettingsThatNoLongerFitDoNotBlockOpening) {

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "image_compare.h"
+#include "workflow_fixtures.h"
 #include "isurface/machine/machine.h"
 #include "isurface/panels/headless_ui.h"
 #include "test_support.h"
@@ -176,4 +177,32 @@ TEST(workingDay, CloseAndHelp) {
   tapLetter(*ui, 'W', true);
   EXPECT_EQ(ui->inspector().documentCount(), 0u);
   EXPECT_EQ(ui->inspector().activeMachine(), nullptr);
+}
+
+TEST(workingDay, OptimiseWithOnlyADumpSaysWhyInTheDialog) {
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open(test::transitionDump());
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u);
+  tapLetter(ui, 'P');
+  const nlohmann::json state = described(ui);
+  EXPECT_TRUE(state["windows"]["optimise"].get<bool>()) << "the dialog stays open to say why";
+  EXPECT_NE(state["optimise_problem"].get<std::string>().find("needs the G-code program"), std::string::npos)
+      << state["optimise_problem"];
+}
+
+TEST(workingDay, ADumpCutShortWithNoSurfaceOpensAndSaysBoth) {
+  const std::filesystem::path program = test::scratchDir() / "one-line.nc";
+  std::ofstream(program) << "G21 G90\nG1 X20 F600\nM2\n";
+  const std::string dump = (test::scratchDir() / "one-line-cut.biip").string();
+  simulateToBiip(readProgram(program.string()), defaultMachine(), dump);
+  std::filesystem::resize_file(dump, std::filesystem::file_size(dump) - 5);
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open(dump);
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
+  const std::string status = ui.inspector().statusText();
+  EXPECT_NE(status.find("cut short"), std::string::npos) << status;
+  EXPECT_NE(status.find("no map: "), std::string::npos) << status;
+  EXPECT_GT(described(ui)["documents"][0]["samples"].get<std::size_t>(), 100u);  // its rows and curves are there
 }

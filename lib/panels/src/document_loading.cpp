@@ -56,9 +56,15 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   control.progress(0.55);
   vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
   fitted.caption = machineCaption(doc->machine, doc->machineKnown);
-  doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
-  control.progress(0.75);
-  doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
+  // Samples with no surface to map (a drilling program, a trace cut short) still open: their
+  // curves and rows are there, and the reason stands beside the file's own warnings.
+  try {
+    doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
+    control.progress(0.75);
+    doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
+  } catch (const InputError& e) {
+    doc->warnings.push_back(std::string("no map: ") + e.what());
+  }
   control.progress(0.85);
   for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) doc->curves.push_back(curveOf(q, *doc->samples));
   for (const auto& [name, values] : doc->samples->extra)

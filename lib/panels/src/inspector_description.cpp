@@ -71,6 +71,7 @@ std::string Inspector::describe() const {
                               {"measure", measure},
                               {"windows", windows},
                               {"last_saved", s.lastSaved},
+                              {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
                               {"status", s.status},
                               {"controls", controls}};
   return out.dump(1);

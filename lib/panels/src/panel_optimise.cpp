@@ -36,17 +36,21 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
                      apart, speedChange);
 }
 
+std::string whyNotOptimisable(const Document* doc) {
+  if (!doc) return "Optimise needs a G-code program: open one first";
+  if (!doc->program || doc->programPath.empty())
+    return "Optimise needs the G-code program of " + doc->name + ": open the program and this dump together";
+  if (!doc->samples || !doc->map.mesh) return "Optimise needs a surface: " + doc->name + " has no cutting passes";
+  return "";
+}
+
 }  // namespace
 
 void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
                                      std::optional<std::pair<Vec3, Vec3>> measuredBox) {
   Document* doc = activeDocument();
-  if (!doc || !doc->program || doc->programPath.empty() || !doc->samples) {
-    status = "Optimise needs a G-code program: open the program of this dump first";
-    return;
-  }
-  if (!doc->map.mesh) {
-    status = "Optimise needs a surface: " + doc->name + " has no cutting passes";
+  if (const std::string why = whyNotOptimisable(doc); !why.empty()) {
+    status = why;
     return;
   }
   vis::QualityMapRequest request = mapRequest();
@@ -111,6 +115,15 @@ void drawOptimiseDialog(Inspector::State& s) {
     return;
   }
   Document* doc = s.activeDocument();
+  const std::string why = whyNotOptimisable(doc);
+  s.optimiseProblem = why;
+  if (!why.empty()) {
+    // Nothing to optimise: say why here, where the user looks, and offer only Close.
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", why.c_str());
+    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+    ImGui::EndPopup();
+    return;
+  }
   ImGui::TextWrapped("Constant speed intervals, Akima fitting and one feed per interval, for the G1 moves of the lines:");
   ImGui::InputInt("first line", &s.optimiseFirst);
   ImGui::InputInt("last line", &s.optimiseLast);

@@ -1,6 +1,8 @@
 // Opening programs and dumps, and joining a dump to its program.
 #include "isurface/workflow/run_inputs.h"
 
+#include "isurface/workflow/file_kinds.h"
+
 #include <algorithm>
 #include <cstring>
 #include <filesystem>
@@ -93,9 +95,14 @@ bool isBiipFile(const std::string& path) {
 std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths) {
   std::vector<RunFiles> runs;
   for (const std::string& path : paths) {
-    const bool dump = isBiipFile(path);
-    if (dump && !runs.empty() && !runs.back().program.empty() && runs.back().dump.empty()) runs.back().dump = path;
-    else if (dump) runs.push_back({"", path});
+    bool samples = false;  // a dump or a trace
+    try {
+      samples = fileKind(path) != FileKind::Program;
+    } catch (const InputError&) {
+      // Opened by itself, it says what is wrong with it.
+    }
+    if (samples && !runs.empty() && !runs.back().program.empty() && runs.back().dump.empty()) runs.back().dump = path;
+    else if (samples) runs.push_back({"", path});
     else runs.push_back({path, ""});
   }
   return runs;
@@ -147,26 +154,50 @@ Trajectory simulateRun(const Program& program, const Machine& machine, const Pro
   return trajectoryFromSamples(buffer.data, machine.cycle, program.source);
 }
 
+namespace {
+
+// The samples of a dump or a trace, with what they say of their machine and of the program.
+void readSamples(const OpenRunRequest& request, const ProgressCallback& progress, OpenedRun& run) {
+  const std::string& path = request.files.dump;
+  const FileKind kind = fileKind(path);
+  if (kind == FileKind::Program)
+    throw InputError(Diagnostic{path, 0, 0, "is a G-code program, not a Biip dump or a trace"});
+  std::optional<std::string> mismatch;
+  if (isTrace(kind)) {
+    auto samples = std::make_shared<const Trajectory>(readTrace(path, kind));
+    if (run.program && !request.force) mismatch = pathMismatch(*samples, *run.program);
+    run.machineKnown = false;
+    run.samples = std::move(samples);
+  } else {
+    const BiipReader reader(path);
+    for (const std::string& w : reader.warnings()) run.warnings.push_back(path + ": " + w);
+    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), request.channels));
+    if (run.program && !request.force) mismatch = dumpMismatch(reader, *samples, *run.program);
+    const std::optional<Machine> own = machineOfDump(reader);
+    run.machineKnown = own.has_value();
+    if (own) run.machine = *own;
+    run.samples = std::move(samples);
+  }
+  if (mismatch)
+    throw DumpMismatchError(Diagnostic{path, 0, 0, "is not a dump of " + request.files.program + ": " + *mismatch});
+}
+
+}  // namespace
+
 OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress) {
   OpenedRun run;
   run.files = request.files;
   run.machine = request.machine ? *request.machine : defaultMachine();
   const bool hasDump = !request.files.dump.empty();
-  if (!request.files.program.empty())
+  if (!request.files.program.empty()) {
+    const FileKind kind = fileKind(request.files.program);
+    if (kind != FileKind::Program)
+      throw InputError(Diagnostic{request.files.program, 0, 0, std::string("is a ") + fileKindName(kind) + ", not a G-code program"});
     run.program = std::make_shared<const Program>(
         readProgram(request.files.program, progressStage(progress, 0.0, hasDump ? 0.3 : 0.2), &run.warnings, run.machine));
+  }
   if (hasDump) {
-    const BiipReader reader(request.files.dump);
-    for (const std::string& w : reader.warnings()) run.warnings.push_back(request.files.dump + ": " + w);
-    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), request.channels));
-    if (run.program && !request.force)
-      if (const auto why = dumpMismatch(reader, *samples, *run.program))
-        throw DumpMismatchError(Diagnostic{request.files.dump, 0, 0,
-                                           "is not a dump of " + request.files.program + ": " + *why});
-    const std::optional<Machine> own = machineOfDump(reader);
-    run.machineKnown = own.has_value();
-    if (own) run.machine = *own;
-    run.samples = std::move(samples);
+    readSamples(request, progress, run);
   } else if (run.program) {
     run.samples = std::make_shared<const Trajectory>(simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0)));
   }

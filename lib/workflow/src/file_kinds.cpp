@@ -1,0 +1,166 @@
+// Telling files apart by their first bytes.
+#include "isurface/workflow/file_kinds.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstring>
+#include <cerrno>
+#include <filesystem>
+#include <optional>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <vector>
+
+#include "isurface/base/diagnostic.h"
+#include "isurface/io/trace_import.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr std::size_t kHeadBytes = 64 * 1024;  // what is read to decide
+constexpr std::size_t kLinesLooked = 20;
+
+[[noreturn]] void fail(const std::string& path, const std::string& message) {
+  throw InputError(Diagnostic{path, 0, 0, message});
+}
+
+std::string lowerExtension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return ext;
+}
+
+// Where the head stops being text: its first NUL byte, or its first control character when
+// there are more than a few and more than 1 % of it (a tape-control or end-of-file character
+// in an old program is still text).
+std::optional<std::size_t> firstBinaryByte(const std::string& head) {
+  std::size_t controls = 0;
+  std::optional<std::size_t> first;
+  for (std::size_t i = 0; i < head.size(); ++i) {
+    const auto c = static_cast<unsigned char>(head[i]);
+    if (c == 0) return i;
+    if ((c < 0x20 && c != '\t' && c != '\n' && c != '\r' && c != '\f' && c != '\v') || c == 0x7f) {
+      ++controls;
+      if (!first) first = i;
+    }
+  }
+  if (controls > 8 && controls * 100 > head.size()) return first;
+  return std::nullopt;
+}
+
+std::vector<std::string> firstLines(const std::string& head) {
+  std::vector<std::string> lines;
+  std::istringstream in(head);
+  for (std::string line; lines.size() < kLinesLooked && std::getline(in, line);) {
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find_first_not_of(" \t") == std::string::npos || line[0] == '#') continue;
+    lines.push_back(line);
+  }
+  // The last line of a head cut short may be cut too.
+  if (head.size() == kHeadBytes && lines.size() > 1) lines.pop_back();
+  return lines;
+}
+
+bool isNumber(const std::string& field) {
+  if (field.empty()) return false;
+  char* end = nullptr;
+  std::strtod(field.c_str(), &end);
+  return end == field.c_str() + field.size();
+}
+
+std::vector<std::string> split(const std::string& line, bool commas) {
+  std::vector<std::string> fields;
+  if (commas) {
+    std::string field;
+    std::istringstream in(line);
+    while (std::getline(in, field, ',')) {
+      const std::size_t a = field.find_first_not_of(" \t\""), b = field.find_last_not_of(" \t\"");
+      fields.push_back(a == std::string::npos ? "" : field.substr(a, b - a + 1));
+    }
+  } else {
+    std::istringstream in(line);
+    for (std::string field; in >> field;) fields.push_back(field);
+  }
+  return fields;
+}
+
+// Every line several numbers apart from blanks: halsampler's recording.
+bool looksLikeHalsampler(const std::vector<std::string>& lines) {
+  if (lines.size() < 2) return false;
+  for (const std::string& line : lines) {
+    const std::vector<std::string> fields = split(line, false);
+    if (fields.size() < 4 || !std::all_of(fields.begin(), fields.end(), isNumber)) return false;
+  }
+  return true;
+}
+
+// A header of names, then rows of comma-separated numbers.
+bool looksLikeCsv(const std::vector<std::string>& lines) {
+  if (lines.size() < 2) return false;
+  const std::vector<std::string> header = split(lines[0], true);
+  if (header.size() < 3) return false;
+  for (std::size_t i = 1; i < lines.size(); ++i) {
+    const std::vector<std::string> row = split(lines[i], true);
+    if (row.size() != header.size()) return false;
+    if (std::count_if(row.begin(), row.end(), isNumber) * 2 < static_cast<long>(row.size())) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+FileKind fileKind(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
+  std::string head(kHeadBytes, '\0');
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<std::size_t>(in.gcount()));
+  if (head.size() >= 4 && head.compare(0, 4, "BIIP") == 0) return FileKind::Dump;
+  const std::string ext = lowerExtension(path);
+  if (ext == ".biip") fail(path, "is not a Biip dump: it does not begin with the bytes 'BIIP'");
+  if (const auto at = firstBinaryByte(head))
+    fail(path, fmt::format("is neither a G-code program, a Biip dump nor a trace: byte 0x{:02x} at offset {} is not text",
+                           static_cast<unsigned char>(head[*at]), *at));
+  const std::vector<std::string> lines = firstLines(head);
+  if (looksLikeHalsampler(lines)) return FileKind::HalsamplerTrace;
+  if (ext == ".csv" || looksLikeCsv(lines)) return FileKind::CsvTrace;
+  return FileKind::Program;
+}
+
+const char* fileKindName(FileKind kind) {
+  switch (kind) {
+    case FileKind::Program: return "G-code program";
+    case FileKind::Dump: return "Biip dump";
+    case FileKind::HalsamplerTrace: return "halsampler trace";
+    case FileKind::CsvTrace: return "CSV trace";
+  }
+  return "file";
+}
+
+Trajectory readTrace(const std::string& path, FileKind kind) {
+  if (kind == FileKind::HalsamplerTrace) return importHalsampler(path);
+  std::ifstream in(path, std::ios::binary);
+  std::string headerLine;
+  std::getline(in, headerLine);
+  if (!headerLine.empty() && headerLine.back() == '\r') headerLine.pop_back();
+  std::set<std::string> names;
+  for (const std::string& f : split(headerLine, true)) names.insert(f);
+  TraceImportOptions options;
+  if (names.count("x") && names.count("y") && names.count("z")) {
+    for (const char* role : {"x", "y", "z", "fb_x", "fb_y", "fb_z", "feed", "line", "t"})
+      if (names.count(role)) options.columns.push_back(ColumnRole{role, role, false});
+    options.keepOtherColumns = true;
+  } else if (names.count("X1_CommandPosition")) {
+    options = umichPreset();
+  } else {
+    fail(path, "a CSV trace whose columns are not named x, y and z: import it with `isurface-cli import csv " + path +
+                   " --map x=COLUMN,y=COLUMN,z=COLUMN -o trace.biip` and open the dump");
+  }
+  return importCsv(path, options);
+}
+
+}  // namespace isurface
