@@ -24,7 +24,7 @@ namespace {
 struct RenderOptions {
   std::string gcode, biip, output;
   MachineOption machine;
-  std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "rainbow";
+  std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "auto";
   std::string range, percentiles = "1:99", surface = "commanded";
   long highlightLine = -1;
   bool noToolpath = false, noPassWires = false, colorToolpath = false, force = false;
@@ -60,7 +60,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
   request.feedbackSurface = o.surface == "feedback";
   request.colorMap = o.colorMap;
-  vis::makeLookupTable(o.colorMap, 0, 1);  // an unknown name fails here, before any work
+  vis::makeLookupTable(vis::resolveColorMap(o.colorMap, false), 0, 1);  // an unknown name fails here, before any work
   if (o.range == "full") {
     request.lowPercent = 0;
     request.highPercent = 100;
@@ -128,7 +128,7 @@ Command renderCommand() {
                                           "accel_inconsistency, deviation")->capture_default_str();
       sub.add_option("--view", o->view, "iso, top, front or left")->capture_default_str();
       sub.add_option("--size", o->size, "image size WxH in pixels")->capture_default_str();
-      sub.add_option("--cmap", o->colorMap, "colour map: rainbow, viridis, turbo, coolwarm, grey")->capture_default_str();
+      sub.add_option("--cmap", o->colorMap, "colour map: auto (rainbow, coolwarm for signed quantities), rainbow, viridis, turbo, coolwarm, grey")->capture_default_str();
       sub.add_option("--range", o->range, "colour range: A:B fixed, or 'full' for the values' extent");
       sub.add_option("--percentiles", o->percentiles, "percentile-clipped range LOW:HIGH (default)")->capture_default_str();
       sub.add_option("--highlight-line", o->highlightLine, "make the samples of this G-code line glow");

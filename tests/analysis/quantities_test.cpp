@@ -40,7 +40,7 @@ TEST(quantities, TableNamesLabelsUnits) {
   EXPECT_EQ(parseQuantity("SPEED"), Quantity::Speed);
   EXPECT_STREQ(quantityInfo(Quantity::Speed).unit, "mm/min");
   EXPECT_STREQ(quantityInfo(Quantity::Jerk).unit, "mm/s^3");
-  EXPECT_STREQ(quantityInfo(Quantity::Deviation).unit, "um");
+  EXPECT_STREQ(quantityInfo(Quantity::Deviation).unit, "\u00b5m");
   EXPECT_TRUE(quantityInfo(Quantity::Deviation).needsFeedback && quantityInfo(Quantity::Deviation).onSurface);
   EXPECT_TRUE(quantityInfo(Quantity::FollowingError).needsFeedback);
   EXPECT_TRUE(quantityInfo(Quantity::SpeedInconsistency).onSurface);

@@ -206,3 +206,23 @@ TEST(workingDay, ADumpCutShortWithNoSurfaceOpensAndSaysBoth) {
   EXPECT_NE(status.find("no map: "), std::string::npos) << status;
   EXPECT_GT(described(ui)["documents"][0]["samples"].get<std::size_t>(), 100u);  // its rows and curves are there
 }
+
+TEST(workingDay, TheMainViewIsFittedAgainWhenAMapStandsBesideIt) {
+  auto ui = openedSample();
+  ui->inspector().optimise(105, 400);
+  waitForJobs(*ui);
+  settle(*ui);
+  ASSERT_NE(ui->inspector().optimisedDifference(), nullptr) << ui->inspector().statusText();
+  const nlohmann::json controls = described(*ui)["controls"];
+  ASSERT_TRUE(controls.contains("surface") && controls.contains("view"));
+  const auto view = controls["view"].get<std::array<float, 4>>();
+  const auto surface = controls["surface"].get<std::array<float, 4>>();
+  // Inside the narrower view, and filling it across or top to bottom.
+  EXPECT_GE(surface[0], view[0] - 1);
+  EXPECT_LE(surface[2], view[2] + 1);
+  EXPECT_GE(surface[1], view[1] - 1);
+  EXPECT_LE(surface[3], view[3] + 1);
+  const float across = (surface[2] - surface[0]) / (view[2] - view[0]);
+  const float down = (surface[3] - surface[1]) / (view[3] - view[1]);
+  EXPECT_GT(std::max(across, down), 0.7f) << across << " " << down;
+}

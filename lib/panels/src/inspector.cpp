@@ -122,6 +122,7 @@ void Inspector::State::takeJobResult() {
     comparison.reset();
     runComparison = result->runComparison;
     showRunDifference(runComparison->showDifference);
+    view.refit();  // the main view is half as wide now
     status = runComparison->summary;
     return;
   }
@@ -129,6 +130,7 @@ void Inspector::State::takeJobResult() {
     runComparison.reset();
     comparison = result->comparison;
     showOptimisedDifference(comparison->showDifference);
+    view.refit();
     if (Document* doc = activeDocument()) {
       const std::string base = doc->programPath.substr(0, doc->programPath.rfind('.'));
       std::snprintf(savePath, sizeof savePath, "%s-optimized.nc", base.c_str());
@@ -156,6 +158,7 @@ void Inspector::State::takeJobResult() {
       documents.push_back(std::move(result->document));
       activate(documents.size() - 1);
     }
+    view.refit();  // a new map fills the view it is shown in
   } else if (result->scene) {
     Document* doc = activeDocument();
     if (!doc) return;
@@ -214,7 +217,8 @@ Inspector::Inspector(GlHooks hooks, app_model::Settings settings) : state_(std::
   std::vector<std::string> notes;
   if (const auto q = parseQuantity(s.persistent.quantity)) s.settings.quantity = *q;
   else if (!s.persistent.quantity.empty()) notes.push_back("unknown quantity '" + s.persistent.quantity + "'");
-  const std::vector<std::string> maps = vis::colorMapNames();
+  std::vector<std::string> maps = vis::colorMapNames();
+  maps.push_back(vis::kAutoColorMap);
   if (std::find(maps.begin(), maps.end(), s.persistent.colorMap) != maps.end()) s.settings.colorMap = s.persistent.colorMap;
   else notes.push_back("unknown colour map '" + s.persistent.colorMap + "'");
   if (!notes.empty()) {

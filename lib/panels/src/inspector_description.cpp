@@ -57,6 +57,10 @@ std::string Inspector::describe() const {
   if (s.measureA && s.measureB) measure["distance_mm"] = (*s.measureB - *s.measureA).norm();
   nlohmann::json controls = nlohmann::json::object();
   for (const auto& [name, rect] : s.controls) controls[name] = rect;
+  // The surface's box in window pixels, where a script clicks to pick.
+  const auto view = s.controls.find("view");
+  if (const auto r = s.view.surfaceOnScreen(); r && view != s.controls.end())
+    controls["surface"] = {view->second[0] + r->x0, view->second[1] + r->y0, view->second[0] + r->x1, view->second[1] + r->y1};
   nlohmann::json windows = {{"machine", s.machineOpen},
                             {"locate", s.locateOpen},
                             {"optimise", s.optimiseDialogOpen},

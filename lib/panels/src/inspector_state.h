@@ -53,7 +53,7 @@ struct Document {
 struct ViewSettings {
   Quantity quantity = Quantity::Speed;
   std::string channel;  // when not empty: colour by this channel of the samples instead
-  std::string colorMap = "rainbow";
+  std::string colorMap = "auto";
   int rangeMode = 0;  // 0 percentile 1-99 %, 1 full extent, 2 fixed
   float fixedLow = 0, fixedHigh = 3000;
   vis::ViewDirection view = vis::ViewDirection::Iso;

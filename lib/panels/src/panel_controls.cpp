@@ -211,7 +211,9 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   if (!byChannel) ImGui::Text("unit: %s", current.unit);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
-    for (const std::string& name : vis::colorMapNames())
+    std::vector<std::string> names = vis::colorMapNames();
+    names.insert(names.begin(), vis::kAutoColorMap);  // rainbow, or diverging for signed values
+    for (const std::string& name : names)
       if (ImGui::Selectable(name.c_str(), name == s.settings.colorMap)) {
         s.settings.colorMap = s.persistent.colorMap = name;
         recolour = true;

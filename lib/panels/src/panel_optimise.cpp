@@ -207,7 +207,10 @@ bool endBesidePanel(Inspector::State& s, bool close) {
   if (texture) drawViewFrame(texture, size);
   ImGui::End();
   ImGui::PopStyleVar();
-  if (close) s.afterView.setScene(nullptr);
+  if (close) {
+    s.afterView.setScene(nullptr);
+    s.view.refit();  // the main view has the whole width again
+  }
   return close;
 }
 

@@ -81,6 +81,7 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
   scene_ = std::move(scene);
   invalidated_ = true;
   if (!scene_) return;
+  if (impl_->width > 0) scene_->fitTextToWidth(impl_->width);
   scene_->attachTo(window);
   impl_->attached = scene_->renderer();
   impl_->interactor->GetInteractorStyle()->SetDefaultRenderer(scene_->renderer());
@@ -92,9 +93,46 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
   impl_->picker->AddLocator(impl_->locator);
 }
 
+namespace {
+
+// Where a box (x0 x1 y0 y1 z0 z1, mm) falls on the screen: the rectangle of its corners.
+std::optional<app_model::ScreenRectangle> screenBox(const app_model::ScreenProjection& project, const double b[6]) {
+  if (b[0] > b[1]) return std::nullopt;
+  app_model::ScreenRectangle r{1e300, 1e300, -1e300, -1e300};
+  for (int corner = 0; corner < 8; ++corner) {
+    const auto at = project(Vec3(b[corner & 1 ? 1 : 0], b[corner & 2 ? 3 : 2], b[corner & 4 ? 5 : 4]));
+    if (!at) return std::nullopt;
+    r.x0 = std::min(r.x0, at->first), r.x1 = std::max(r.x1, at->first);
+    r.y0 = std::min(r.y0, at->second), r.y1 = std::max(r.y1, at->second);
+  }
+  return r;
+}
+
+}  // namespace
+
+std::optional<app_model::ScreenRectangle> SceneView::surfaceOnScreen() const {
+  if (!scene_ || impl_->height <= 0) return std::nullopt;
+  double bounds[6];
+  scene_->surface()->GetBounds(bounds);
+  return screenBox(projection(), bounds);
+}
+
 void SceneView::copyCameraFrom(const SceneView& other) {
   if (!scene_ || !other.scene_) return;
-  scene_->renderer()->GetActiveCamera()->DeepCopy(other.scene_->renderer()->GetActiveCamera());
+  vtkCamera* camera = scene_->renderer()->GetActiveCamera();
+  camera->DeepCopy(other.scene_->renderer()->GetActiveCamera());
+  const Impl& a = *other.impl_;
+  const Impl& b = *impl_;
+  if (a.width <= 0 || a.height <= 0 || b.width <= 0 || b.height <= 0) return;
+  // The same width of the workpiece as the other view shows, as far as what the other view
+  // frames of the surface still fits top to bottom: a wider, lower view would otherwise show
+  // it smaller.
+  double zoom = (double(b.width) / b.height) / (double(a.width) / a.height);
+  double bounds[6];
+  other.scene_->surface()->GetBounds(bounds);
+  if (const auto r = screenBox(other.projection(), bounds); r && r->y1 > r->y0)
+    zoom = std::min(zoom, 0.9 * a.height / (r->y1 - r->y0));
+  if (zoom > 1.0) camera->Zoom(zoom);
 }
 
 void SceneView::setView(vis::ViewDirection view) {
@@ -116,6 +154,11 @@ unsigned int SceneView::render(int width, int height) {
     d.height = height;
     d.window->SetSize(width, height);
     d.interactor->SetSize(width, height);
+    scene_->fitTextToWidth(width);
+  }
+  if (refitPending_) {
+    refitPending_ = false;
+    fitToSurface();
   }
   // What the camera shows (not its modification time, which clipping-range updates bump too).
   vtkCamera* camera = scene_->renderer()->GetActiveCamera();
@@ -142,6 +185,24 @@ unsigned int SceneView::render(int width, int height) {
   vtkTextureObject* texture = frame ? frame->GetColorAttachmentAsTextureObject(0) : nullptr;
   d.texture = texture ? texture->GetHandle() : 0;
   return d.texture;
+}
+
+void SceneView::fitToSurface() {
+  vtkRenderer* renderer = scene_->renderer();
+  renderer->ResetCamera();  // the bounding sphere in view: room to spare around a flat surface
+  double bounds[6];
+  scene_->surface()->GetBounds(bounds);
+  // Then the surface's box on the screen brought into the part of the view that the caption
+  // (top) and the legend (right) leave free: the rectangle zoomed to the whole view is the
+  // one that maps the box onto that part.
+  const auto r = screenBox(projection(), bounds);
+  if (!r || r->x1 - r->x0 < 1 || r->y1 - r->y0 < 1) return;
+  const double w = impl_->width, h = impl_->height;
+  const double freeX0 = 0.03 * w, freeX1 = 0.84 * w, freeY0 = 0.17 * h, freeY1 = 0.97 * h;
+  const double scale = std::min((freeX1 - freeX0) / (r->x1 - r->x0), (freeY1 - freeY0) / (r->y1 - r->y0));
+  const double cx = 0.5 * (r->x0 + r->x1) - (0.5 * (freeX0 + freeX1) - 0.5 * w) / scale;
+  const double cy = 0.5 * (r->y0 + r->y1) - (0.5 * (freeY0 + freeY1) - 0.5 * h) / scale;
+  zoomToRectangle(cx - 0.5 * w / scale, cy - 0.5 * h / scale, cx + 0.5 * w / scale, cy + 0.5 * h / scale);
 }
 
 std::vector<unsigned char> SceneView::snapshot(int width, int height) {

@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 #include <fmt/format.h>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/vis/color_map.h"
 #include "isurface/gcode/path_segment.h"
 
 namespace isurface::vis {
@@ -21,7 +23,7 @@ std::string channelUnit(const std::string& channel) {
   for (const char* unit : {"um", "mm", "s", "deg", "mm_min", "mm_s2", "mm_s3"}) {
     const std::string suffix = std::string("_") + unit;
     if (channel.size() > suffix.size() && channel.compare(channel.size() - suffix.size(), suffix.size(), suffix) == 0)
-      return unit;
+      return std::strcmp(unit, "um") == 0 ? "\u00b5m" : unit;  // shown as people write it
   }
   return "";
 }
@@ -131,7 +133,8 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   }
 
   MapStyle& style = map.style;
-  style.colorMap = request.colorMap;
+  style.colorMap = resolveColorMap(request.colorMap, !request.sampleValues && request.channel.empty() &&
+                                                         isSignedQuantity(request.quantity));
   if (request.fixedRange) style.range = *request.fixedRange;
   else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
   else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);

@@ -91,6 +91,10 @@ struct QualityScene::Parts {
   vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   bool coarse = false, showSurface = true;
+  vtkSmartPointer<vtkScalarBarActor> legend;
+  vtkSmartPointer<vtkTextActor> caption;
+  std::string captionText, legendText;
+  int fontSize = 16;  // the style's: the largest the text is drawn
 };
 
 QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : parts_(new Parts) {
@@ -142,13 +146,79 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.renderer->AddActor(p.lineGlow);
   p.renderer->AddActor(p.sampleGlow);
 
-  p.renderer->AddActor2D(makeLegend(p.table, style));
-  if (!style.caption.empty()) p.renderer->AddActor2D(makeCaption(style.caption, style.fontSize));
+  p.legend = makeLegend(p.table, style);
+  p.renderer->AddActor2D(p.legend);
+  p.legendText = legendTitle(style.quantityLabel, style.unit);
+  p.fontSize = style.fontSize;
+  if (!style.caption.empty()) {
+    p.caption = makeCaption(style.caption, style.fontSize);
+    p.captionText = style.caption;
+    p.renderer->AddActor2D(p.caption);
+  }
   p.axesCorner->AddActor(makeAxes());
   p.axesCorner->SetViewport(0.0, 0.0, kAxesCornerWidth, kAxesCornerHeight);
   p.axesCorner->SetLayer(1);
   p.axesCorner->InteractiveOff();
   setView(style.view);
+}
+
+namespace {
+
+// Characters of the longest line of a text.
+std::size_t longestLine(const std::string& text) {
+  std::size_t longest = 0, length = 0;
+  for (char c : text) {
+    length = c == '\n' ? 0 : length + 1;
+    longest = std::max(longest, length);
+  }
+  return longest;
+}
+
+// A proportional font's average advance, in font sizes: what a line of n characters takes.
+constexpr double kAdvance = 0.56;
+constexpr int kSmallestCaption = 11;
+
+// Each line of `text` longer than `chars` broken at the last blank that keeps it within.
+std::string wrapLines(const std::string& text, std::size_t chars) {
+  std::string out;
+  std::size_t lineStart = 0;
+  for (std::size_t i = 0; i <= text.size(); ++i) {
+    if (i < text.size() && text[i] != '\n') continue;
+    std::string line = text.substr(lineStart, i - lineStart);
+    while (line.size() > chars) {
+      std::size_t cut = line.rfind(' ', chars);
+      if (cut == std::string::npos || cut == 0) cut = chars;
+      out += line.substr(0, cut) + "\n";
+      line = line.substr(cut == chars ? cut : cut + 1);
+    }
+    out += line + (i < text.size() ? "\n" : "");
+    lineStart = i + 1;
+  }
+  return out;
+}
+
+}  // namespace
+
+void QualityScene::fitTextToWidth(int width) {
+  Parts& p = *parts_;
+  if (width <= 0) return;
+  // The caption spans at most the width left of the legend; the legend's title, centred over
+  // the bar, at most what lies right of 0.80 of the width.
+  const auto fit = [&](std::size_t chars, double share) {
+    if (chars == 0) return p.fontSize;
+    const double size = share * width / (kAdvance * static_cast<double>(chars));
+    return std::clamp(static_cast<int>(size), 8, p.fontSize);
+  };
+  if (p.caption) {
+    // Smaller down to a size still easy to read, then lines broken at words instead.
+    const int size = std::max(kSmallestCaption, fit(longestLine(p.captionText), 0.80));
+    const auto chars = static_cast<std::size_t>(0.80 * width / (kAdvance * size));
+    p.caption->GetTextProperty()->SetFontSize(size);
+    p.caption->SetInput(wrapLines(p.captionText, std::max<std::size_t>(chars, 20)).c_str());
+  }
+  const int legendSize = fit(longestLine(p.legendText), 0.17);
+  p.legend->GetTitleTextProperty()->SetFontSize(legendSize);
+  p.legend->GetLabelTextProperty()->SetFontSize(std::max(8, legendSize - 2));
 }
 
 void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample) {

@@ -17,6 +17,7 @@
 #include <vtkUniforms.h>
 
 #include <algorithm>
+#include <sstream>
 
 #include "isurface/vis/quality_scene.h"
 #include "isurface/vis/resources.h"
@@ -145,19 +146,33 @@ vtkSmartPointer<vtkActor> makeGlowActor(vtkPolyData* points, float size, const f
   return glow;
 }
 
+std::string legendTitle(const std::string& label, const std::string& unit) {
+  // Words fill lines of up to kLegendLineChars (a word longer than that has a line of its own):
+  // the legend is narrow, but one word a line reads badly.
+  std::string title, line;
+  std::istringstream words(label);
+  for (std::string word; words >> word;) {
+    if (!line.empty() && line.size() + 1 + word.size() > kLegendLineChars) {
+      title += line + "\n";
+      line.clear();
+    }
+    line += (line.empty() ? "" : " ") + word;
+  }
+  title += line;
+  return unit.empty() ? title : title + "\n[" + unit + "]";
+}
+
 vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const MapStyle& style) {
   auto legend = vtkSmartPointer<vtkScalarBarActor>::New();
   legend->SetLookupTable(table);
-  // Long labels go one word a line: the legend is narrow.
-  std::string label = style.quantityLabel;
-  if (label.size() > 12) std::replace(label.begin(), label.end(), ' ', '\n');
-  const std::string title = label + (style.unit.empty() ? "" : "\n[" + style.unit + "]");
+  const std::string title = legendTitle(style.quantityLabel, style.unit);
   legend->SetTitle(title.c_str());
   legend->SetNumberOfLabels(6);
   legend->SetLabelFormat("%.4g");
   legend->SetMaximumWidthInPixels(130);
   legend->SetBarRatio(0.25);
-  legend->GetPositionCoordinate()->SetValue(0.88, 0.1);
+  // Far enough from the right edge that a title wider than the bar, centred over it, stays inside.
+  legend->GetPositionCoordinate()->SetValue(0.86, 0.1);
   legend->SetWidth(0.11);
   legend->SetHeight(0.8);
   for (vtkTextProperty* text : {legend->GetTitleTextProperty(), legend->GetLabelTextProperty()}) {

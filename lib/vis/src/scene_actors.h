@@ -28,6 +28,9 @@ vtkSmartPointer<vtkActor> makeToolpathActor(const std::vector<std::vector<Vec3>>
 // Glowing point sprites; their points are set with setPoints().
 vtkSmartPointer<vtkActor> makeGlowActor(vtkPolyData* points, float size, const float core[3], const float rim[3]);
 void setPoints(vtkPolyData* points, const std::vector<Vec3>& positions);
+// The legend's title: the label's words in lines of up to kLegendLineChars, then "[unit]".
+constexpr std::size_t kLegendLineChars = 16;
+std::string legendTitle(const std::string& label, const std::string& unit);
 vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const MapStyle& style);
 vtkSmartPointer<vtkTextActor> makeCaption(const std::string& text, int fontSize);
 vtkSmartPointer<vtkAxesActor> makeAxes();

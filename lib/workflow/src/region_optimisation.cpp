@@ -360,7 +360,7 @@ std::string regionSummary(const RegionOptimisation& r) {
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
       b.jerkP99,
       a.hasDeviation && b.hasDeviation
-          ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} um", a.deviationP99, b.deviationP99)
+          ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} \u00b5m", a.deviationP99, b.deviationP99)
           : "",
       r.maxPathDistance, r.plan) +
          (r.kept ? "" : ". Not kept: " + r.reason + "; the program is left as it was");

@@ -102,7 +102,7 @@ std::string worseFigure(const QualityFigures& before, const QualityFigures& afte
       {"inconsistency between passes (p99)", before.inconsistencyP99, after.inconsistencyP99, "mm/min", 0.1},
       {"inconsistency between passes (mean)", before.inconsistencyMean, after.inconsistencyMean, "mm/min", 0.1},
       {"jerk (p99)", before.jerkP99, after.jerkP99, "mm/s^3", 1.0},
-      {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "um", 0.001},
+      {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "\u00b5m", 0.001},
   };
   for (const auto& f : figures)
     if (f.after > f.before * (1 + allowed) + f.floor)

@@ -207,16 +207,29 @@ const std::vector<QuantityInfo>& quantityInfos() {
       {Quantity::JerkX, "jx", "X jerk", "mm/s^3", false, false},
       {Quantity::JerkY, "jy", "Y jerk", "mm/s^3", false, false},
       {Quantity::JerkZ, "jz", "Z jerk", "mm/s^3", false, false},
-      {Quantity::FollowingError, "following_error", "Following error", "um", true, false},
+      {Quantity::FollowingError, "following_error", "Following error", "\u00b5m", true, false},
       {Quantity::Line, "line", "G-code line", "", false, false},
       {Quantity::Time, "time", "Time", "s", false, false},
       {Quantity::Feed, "feed", "Programmed feed", "mm/min", false, false},
       {Quantity::SpeedInconsistency, "speed_inconsistency", "Speed inconsistency between passes", "mm/min", false, true},
       {Quantity::AccelerationInconsistency, "accel_inconsistency", "Acceleration inconsistency between passes",
        "mm/s^2", false, true},
-      {Quantity::Deviation, "deviation", "Deviation of the feedback surface", "um", true, true},
+      {Quantity::Deviation, "deviation", "Deviation of the feedback surface", "\u00b5m", true, true},
   };
   return infos;
+}
+
+bool isSignedQuantity(Quantity q) {
+  switch (q) {
+    case Quantity::Acceleration:
+    case Quantity::VelocityX: case Quantity::VelocityY: case Quantity::VelocityZ:
+    case Quantity::AccelerationX: case Quantity::AccelerationY: case Quantity::AccelerationZ:
+    case Quantity::JerkX: case Quantity::JerkY: case Quantity::JerkZ:
+    case Quantity::Deviation:
+      return true;
+    default:
+      return false;
+  }
 }
 
 const QuantityInfo& quantityInfo(Quantity q) {

@@ -9,7 +9,7 @@ namespace isurface::app_model {
 struct Settings {
   std::vector<std::string> recentFiles;  // newest first, at most 10
   std::string quantity = "speed";
-  std::string colorMap = "rainbow";
+  std::string colorMap = "auto";  // rainbow, or diverging for signed quantities
   int windowWidth = 1600, windowHeight = 1000;
 
   void addRecent(const std::string& path);

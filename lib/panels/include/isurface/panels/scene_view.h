@@ -38,6 +38,9 @@ class SceneView {
   // only when something changed: the size, the scene, the camera, a drag, or invalidate().
   unsigned int render(int width, int height);
   void invalidate() { invalidated_ = true; }
+  // Fits the camera to the scene again at the next frame, at the size the view has then,
+  // looking from where it looks now (the view was made narrower or wider).
+  void refit() { refitPending_ = invalidated_ = true; }
   // The view drawn at another size, as the camera stands: RGB rows, the bottom row first
   // (empty when there is nothing to draw).
   std::vector<unsigned char> snapshot(int width, int height);
@@ -45,6 +48,8 @@ class SceneView {
   std::optional<std::pair<double, double>> project(const Vec3& point) const;
   // The same mapping for many points at once, as the camera stands now (an empty view: 0 x 0).
   app_model::ScreenProjection projection() const;
+  // Where the surface's bounding box stands in the view (pixels from its top-left corner).
+  std::optional<app_model::ScreenRectangle> surfaceOnScreen() const;
 
   // Mouse input in pixels from the view's top-left corner.
   void mouseMove(double x, double y);
@@ -57,12 +62,15 @@ class SceneView {
   std::optional<Vec3> pick(double x, double y);
 
  private:
+  void fitToSurface();
+
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::shared_ptr<vis::QualityScene> scene_;
   bool pressed_ = false, dragging_ = false;
   double pressX_ = 0, pressY_ = 0;
   bool invalidated_ = true;
+  bool refitPending_ = false;
 };
 
 }  // namespace isurface::panels

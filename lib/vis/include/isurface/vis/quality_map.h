@@ -23,7 +23,7 @@ struct QualityMapRequest {
   std::string valuesLabel, valuesUnit;
   bool feedbackSurface = false;              // the surface of the feedback positions
   std::optional<std::uint32_t> highlightLine;
-  std::string colorMap = "rainbow";
+  std::string colorMap = "auto";              // see resolveColorMap()
   std::optional<ValueRange> fixedRange;      // else percentile-clipped
   double lowPercent = 1, highPercent = 99;   // with both 0 and 100: the full range
   ViewDirection view = ViewDirection::Iso;

@@ -70,6 +70,9 @@ class QualityScene {
   // Shows the coarse surface instead of the full one (while the camera moves), if there is one.
   void useCoarseSurface(bool coarse);
   void setVisibility(bool surface, bool toolpath, bool points);
+  // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
+  // them (never larger than the style's font size).
+  void fitTextToWidth(int width);
 
   vtkRenderer* renderer() const;
   vtkPolyData* surface() const;  // points, triangles, "value" and "pass_coord" arrays

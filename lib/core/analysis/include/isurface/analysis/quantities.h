@@ -39,6 +39,9 @@ struct QuantityInfo {
 
 const std::vector<QuantityInfo>& quantityInfos();
 const QuantityInfo& quantityInfo(Quantity q);
+// Whether values of both signs are usual (a component, a tangential acceleration, a deviation):
+// such a quantity reads best on a diverging colour map centred on zero.
+bool isSignedQuantity(Quantity q);
 std::optional<Quantity> parseQuantity(const std::string& name);
 
 // Values per sample (Quantity::onSurface == false). Throws InputError when the samples lack
