@@ -12,6 +12,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
+#include <fstream>
 #include <set>
 #include <string>
 #include <vector>
@@ -31,19 +32,29 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 }
 
 // Dear ImGui 1.86 sees a key as held or not at each frame: a press and its release that arrive
-// in one batch of events (a quick tap, or a synthetic one) would never be seen. Such a release
-// is handed on only after a frame has seen the key down, and so are the releases after it in
-// the batch (a quick Ctrl+L lets go of Ctrl after L).
+// in one batch of events (a quick tap, or a synthetic one) would never be seen. A release that
+// comes after any press not yet seen by a frame is handed on only after that frame, and so
+// are the releases after it (a quick Ctrl+L may let go of Ctrl before L, or in the batch after
+// the one that held Ctrl down).
 std::set<int> pressedSinceFrame;
 std::vector<std::array<int, 4>> heldReleases;
 
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
-  if (action == GLFW_RELEASE && (pressedSinceFrame.count(key) || !heldReleases.empty())) {
+  if (action == GLFW_RELEASE && (!pressedSinceFrame.empty() || !heldReleases.empty())) {
     heldReleases.push_back({key, scancode, action, mods});
     return;
   }
   if (action == GLFW_PRESS) pressedSinceFrame.insert(key);
   ImGui_ImplGlfw_KeyCallback(window, key, scancode, action, mods);
+  // Dear ImGui 1.86 takes the modifiers from the modifier keys it saw go down; a modifier that
+  // reached the window under another key code (xdotool maps one to a spare code when the
+  // keymap lacks it) still stands in the key's own modifier bits.
+  if (action != GLFW_RELEASE) {
+    ImGuiIO& io = ImGui::GetIO();
+    io.KeyCtrl = io.KeyCtrl || (mods & GLFW_MOD_CONTROL) != 0;
+    io.KeyShift = io.KeyShift || (mods & GLFW_MOD_SHIFT) != 0;
+    io.KeyAlt = io.KeyAlt || (mods & GLFW_MOD_ALT) != 0;
+  }
 }
 
 // After a frame: the releases it waited for. Returns whether there were any (another frame is due).
@@ -67,6 +78,22 @@ void waitForInput(bool busy, bool frameDue, bool neverBlock, double& lastInput) 
     glfwWaitEvents();
     lastInput = glfwGetTime();
   }
+}
+
+// ISURFACE_STATE_FILE: the window's state (Inspector::describe) written there whenever it
+// changes, replaced whole, for a script that drives the window to read.
+void tellState(const isurface::panels::Inspector& inspector, std::string& told) {
+  static const char* const path = std::getenv("ISURFACE_STATE_FILE");
+  if (!path || !*path) return;
+  std::string state = inspector.describe();
+  if (state == told) return;
+  const std::string temporary = std::string(path) + ".writing";
+  {
+    std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+    out << state;
+    if (!out) return;
+  }
+  if (std::rename(temporary.c_str(), path) == 0) told = std::move(state);
 }
 
 void setWindowIcon(GLFWwindow* window, const std::string& path) {
@@ -121,6 +148,7 @@ int run(int argc, char** argv) {
     }
     double lastInput = glfwGetTime();
     bool frameDue = true;
+    std::string toldState;
     while (!glfwWindowShouldClose(window) && !inspector.quitRequested()) {
       if (exitAfter >= 0 && dropped.empty() && !inspector.busy() && exitAfter-- == 0) break;
       waitForInput(inspector.busy(), frameDue || !dropped.empty(), exitAfter >= 0, lastInput);
@@ -143,6 +171,7 @@ int run(int argc, char** argv) {
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
       frameDue = releaseHeldKeys(window);
+      tellState(inspector, toldState);
     }
     glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
     settings.recentFiles = inspector.settings().recentFiles;

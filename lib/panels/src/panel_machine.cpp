@@ -145,6 +145,13 @@ void drawMachineWindow(Inspector::State& s) {
     }
     ImGui::SameLine();
     if (ImGui::Button("Default machine")) s.machineEdit = defaultMachine();
+    ImGui::SameLine();
+    const bool close = ImGui::Button("Close");
+    noteControl(s, "machine.close");
+    // Esc closes the window when it has the keyboard and no field is being edited.
+    if (close || (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && !ImGui::GetIO().WantTextInput &&
+                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)))
+      s.machineOpen = false;
     ImGui::Separator();
     drawLoadAndSave(s);
     if (!s.machineMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", s.machineMessage.c_str());

@@ -50,6 +50,7 @@ std::optional<std::size_t> steppedRow(std::optional<std::size_t> current, std::s
 
 void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("G-code", x, y, w, h);
+  s.controls["gcode"] = {x, y, x + w, y + h};
   Document* doc = s.activeDocument();
   if (!doc || !doc->text) {
     ImGui::TextDisabled("no program");
@@ -91,6 +92,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
 
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("Data", x, y, w, h);
+  s.controls["data"] = {x, y, x + w, y + h};
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || doc->curves.size() < 3) {
     ImGui::TextDisabled("no samples");

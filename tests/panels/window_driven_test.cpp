@@ -1,0 +1,226 @@
+// The real window under a virtual X server, driven with synthetic mouse and keyboard events
+// (xdotool) as a user would: open a program and its dump from the command line, click the
+// surface, click a G-code line twice, step with the arrow keys, change the machine and simulate
+// again, measure a distance, export a PNG, quit. Each outcome is read from the window's own
+// state (ISURFACE_STATE_FILE), not from pixels.
+#include <gtest/gtest.h>
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <array>
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "test_support.h"
+#include "workflow_fixtures.h"
+
+extern char** environ;
+
+using namespace isurface;
+using namespace isurface::test;
+using nlohmann::json;
+
+namespace {
+
+bool installed(const char* tool) { return std::system((std::string("command -v ") + tool + " >/dev/null 2>&1").c_str()) == 0; }
+
+pid_t spawn(const std::vector<std::string>& args, const std::vector<std::string>& extraEnvironment, const std::string& log) {
+  std::vector<std::string> environment(extraEnvironment);
+  for (char** e = environ; *e; ++e) environment.emplace_back(*e);  // the first of a name counts
+  std::vector<char*> argv, envp;
+  for (const std::string& a : args) argv.push_back(const_cast<char*>(a.c_str()));
+  for (const std::string& e : environment) envp.push_back(const_cast<char*>(e.c_str()));
+  argv.push_back(nullptr);
+  envp.push_back(nullptr);
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, 1, log.c_str(), O_WRONLY | O_CREAT | O_APPEND, 0644);
+  posix_spawn_file_actions_adddup2(&actions, 1, 2);
+  pid_t pid = -1;
+  if (posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), envp.data()) != 0) pid = -1;
+  posix_spawn_file_actions_destroy(&actions);
+  return pid;
+}
+
+// A virtual X server and the window on it, ended with the test.
+class DrivenWindow {
+ public:
+  DrivenWindow(const std::filesystem::path& home, const std::vector<std::string>& files) : home_(home) {
+    std::filesystem::create_directories(home);
+    for (display_ = 77; display_ < 140; ++display_)
+      if (!std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)) &&
+          !std::filesystem::exists("/tmp/.X" + std::to_string(display_) + "-lock"))
+        break;
+    const std::string xvfb = std::string(std::getenv("XVFB") ? std::getenv("XVFB") : "/usr/bin/Xvfb");
+    server_ = spawn({xvfb, ":" + std::to_string(display_), "-screen", "0", "1600x1000x24", "-nolisten", "tcp"}, {},
+                    (home / "xvfb.log").string());
+    waitUntil([&] { return std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); }, 20);
+    std::vector<std::string> args{ISURFACE_GUI};
+    args.insert(args.end(), files.begin(), files.end());
+    window_ = spawn(args, {"DISPLAY=:" + std::to_string(display_), "HOME=" + home.string(), "ISURFACE_STATE_FILE=" + statePath()},
+                    logPath());
+  }
+  ~DrivenWindow() {
+    for (pid_t pid : {window_, server_}) {
+      if (pid <= 0) continue;
+      kill(pid, SIGTERM);
+      int status = 0;
+      waitpid(pid, &status, 0);
+    }
+  }
+
+  std::string statePath() const { return (home_ / "state.json").string(); }
+  std::string logPath() const { return (home_ / "window.log").string(); }
+
+  json state() const {
+    std::ifstream in(statePath());
+    if (!in) return json::object();
+    return json::parse(in, nullptr, false);
+  }
+
+  // Polls the state until `ready` holds or `seconds` pass; returns whether it held.
+  bool waitFor(const std::function<bool(const json&)>& ready, double seconds) const {
+    return waitUntil([&] {
+      const json s = state();
+      return s.is_object() && !s.empty() && ready(s);
+    }, seconds);
+  }
+
+  void xdotool(const std::string& args) const {
+    const std::string command = "DISPLAY=:" + std::to_string(display_) + " xdotool " + args + " >> " +
+                                (home_ / "xdotool.log").string() + " 2>&1";
+    ASSERT_EQ(std::system(command.c_str()), 0) << command;
+  }
+  // A press and a release a moment apart, as a hand makes them.
+  void click(double x, double y) const {
+    xdotool("mousemove --sync " + std::to_string(int(x)) + " " + std::to_string(int(y)));
+    xdotool("mousedown 1 sleep 0.15 mouseup 1");
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  void clickControl(const std::string& name) const {
+    const json c = state()["controls"];
+    ASSERT_TRUE(c.contains(name)) << name << " is not drawn: " << c.dump();
+    const auto r = c[name].get<std::array<double, 4>>();
+    click((r[0] + r[2]) / 2, (r[1] + r[3]) / 2);
+  }
+  void key(const std::string& keys) const {
+    xdotool("key " + keys);
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  void typeInto(const std::string& control, const std::string& text) const {
+    clickControl(control);
+    key("ctrl+a");
+    xdotool("type --delay 20 '" + text + "'");
+    std::this_thread::sleep_for(std::chrono::milliseconds(250));
+  }
+  bool running() const { return window_ > 0 && waitpid(window_, nullptr, WNOHANG) == 0; }
+  // Waits for the window's process to end by itself; its exit code, or -1.
+  int exitCode(double seconds) {
+    int status = 0;
+    const bool ended = waitUntil([&] { return waitpid(window_, &status, WNOHANG) == window_; }, seconds);
+    if (!ended) return -1;
+    window_ = -1;
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  }
+
+ private:
+  static bool waitUntil(const std::function<bool()>& ready, double seconds) {
+    const auto end = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < end) {
+      if (ready()) return true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    }
+    return ready();
+  }
+
+  std::filesystem::path home_;
+  int display_ = 77;
+  pid_t server_ = -1, window_ = -1;
+};
+
+bool idle(const json& s) { return !s.value("busy", true); }
+
+}  // namespace
+
+TEST(drivenWindow, AWorkingSessionWithMouseAndKeys) {
+  if (!installed("Xvfb") || !installed("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+#ifdef ISURFACE_SANITIZED
+  constexpr double kSlow = 4;  // the instrumented build draws several times slower
+#else
+  constexpr double kSlow = 1;
+#endif
+  const std::filesystem::path home = scratchDir() / "driven-window";
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  const std::string dump = transitionDump();
+  DrivenWindow w(home, {program, dump});
+  auto log = [&] { return readFile(w.logPath()) + "\nstate: " + w.state().dump().substr(0, 2000); };
+
+  // The program and its dump, joined.
+  ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1 && s["controls"].contains("surface"); },
+                        60 * kSlow))
+      << log();
+  json s = w.state();
+  EXPECT_EQ(s["documents"][0]["dump"], dump);
+  const double before = s["documents"][0]["duration_s"];
+
+  // A click on the surface picks a sample.
+  const auto surface = s["controls"]["surface"].get<std::array<double, 4>>();
+  const double cx = (surface[0] + surface[2]) / 2, cy = (surface[1] + surface[3]) / 2;
+  w.click(cx, cy);
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["selection"].contains("sample"); }, 10 * kSlow)) << log();
+
+  // A G-code row clicked twice stays selected; the arrow keys step from it.
+  const auto gcode = w.state()["controls"]["gcode"].get<std::array<double, 4>>();
+  w.click(gcode[0] + 120, gcode[1] + 120);
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["selection"].contains("line"); }, 5 * kSlow));
+  const std::uint32_t line = w.state()["selection"]["line"];
+  w.click(gcode[0] + 120, gcode[1] + 120);
+  EXPECT_EQ(w.state()["selection"]["line"].get<std::uint32_t>(), line);
+  w.key("Down");
+  EXPECT_TRUE(w.waitFor([&](const json& s) { return s["selection"].value("line", 0u) == line + 1; }, 5 * kSlow)) << log();
+
+  // The machine window: every axis at 1500 mm/min, then the program simulated with it.
+  w.key("m");
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["windows"]["machine"].get<bool>(); }, 5 * kSlow)) << log();
+  for (const char* axis : {"x", "y", "z"}) w.typeInto(std::string("machine.velocity.") + axis, "1500");
+  w.clickControl("machine.simulate");
+  ASSERT_TRUE(w.waitFor([&](const json& s) {
+    return idle(s) && s["machine"]["axes"][0]["max_velocity_mm_s"] == 25.0 && s["documents"].size() == 1 &&
+           s["documents"][0]["dump"] == "" && s["documents"][0].value("duration_s", 0.0) > before * 1.3;
+  }, 60 * kSlow)) << log();
+  w.clickControl("machine.close");
+  ASSERT_TRUE(w.waitFor([](const json& s) { return !s["windows"]["machine"].get<bool>(); }, 5 * kSlow)) << log();
+
+  // Measure: two clicks on the surface.
+  w.key("d");
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["measure"]["active"].get<bool>(); }, 5 * kSlow)) << log();
+  const auto fitted = w.state()["controls"]["surface"].get<std::array<double, 4>>();
+  const double mx = (fitted[0] + fitted[2]) / 2, my = (fitted[1] + fitted[3]) / 2;
+  w.click(mx - 60, my);
+  w.click(mx + 60, my + 10);
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["measure"].contains("distance_mm"); }, 5 * kSlow)) << log();
+  EXPECT_GT(w.state()["measure"]["distance_mm"].get<double>(), 1.0);
+  w.key("Escape");
+
+  // Export the view as a PNG.
+  const std::string png = (home / "exported-view.png").string();
+  w.key("ctrl+e");
+  w.typeInto("export.path", png);
+  w.clickControl("export.write");
+  ASSERT_TRUE(w.waitFor([&](const json& s) { return s["last_saved"] == png; }, 20 * kSlow)) << log();
+  const std::string bytes = readFile(png);
+  ASSERT_GT(bytes.size(), 1000u);
+  EXPECT_EQ(bytes.substr(1, 3), "PNG");
+
+  // Ctrl+Q ends the window cleanly.
+  w.key("ctrl+q");
+  EXPECT_EQ(w.exitCode(20 * kSlow), 0) << log();
+}
