@@ -177,6 +177,9 @@ int run(int argc, char** argv) {
     settings.recentFiles = inspector.settings().recentFiles;
     settings.quantity = inspector.settings().quantity;
     settings.colorMap = inspector.settings().colorMap;
+    settings.theme = inspector.settings().theme;
+    settings.uiScale = inspector.settings().uiScale;
+    settings.units = inspector.settings().units;
     isurface::app_model::saveSettings(settings);
   }
   ImGui_ImplOpenGL3_Shutdown();

@@ -99,6 +99,9 @@ TEST(settings, RoundTripThroughTheDefaultPath) {
   saved.colorMap = "viridis";
   saved.windowWidth = 2560;
   saved.windowHeight = 1440;
+  saved.theme = "light";
+  saved.uiScale = 1.25f;
+  saved.units = "inch";
   ASSERT_TRUE(saveSettings(saved));  // creates isurface/ under the config folder
   EXPECT_TRUE(fileExists(config + "/isurface/settings.json"));
 
@@ -108,10 +111,14 @@ TEST(settings, RoundTripThroughTheDefaultPath) {
   EXPECT_EQ(loaded.colorMap, "viridis");
   EXPECT_EQ(loaded.windowWidth, 2560);
   EXPECT_EQ(loaded.windowHeight, 1440);
+  EXPECT_EQ(loaded.theme, "light");
+  EXPECT_FLOAT_EQ(loaded.uiScale, 1.25f);
+  EXPECT_EQ(loaded.units, "inch");
 
   // The keys the file promises.
   const std::string text = readFile(config + "/isurface/settings.json");
-  for (const char* key : {"recent_files", "quantity", "color_map", "window_width", "window_height"})
+  for (const char* key : {"recent_files", "quantity", "color_map", "window_width", "window_height", "theme", "ui_scale",
+                          "units"})
     EXPECT_NE(text.find(key), std::string::npos) << key;
 }
 

@@ -226,3 +226,48 @@ TEST(workingDay, TheMainViewIsFittedAgainWhenAMapStandsBesideIt) {
   const float down = (surface[3] - surface[1]) / (view[3] - view[1]);
   EXPECT_GT(std::max(across, down), 0.7f) << across << " " << down;
 }
+
+TEST(workingDay, TheFeedbackSurfaceInTurnWithTheCommandedOne) {
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open({test::sourcePath("samples/transition-surface.nc"), test::transitionDump()});
+  waitForJobs(ui);
+  EXPECT_EQ(described(ui)["map"]["surface"], "commanded");
+  clickControl(ui, "surface.feedback");
+  waitForJobs(ui);
+  const nlohmann::json map = described(ui)["map"];
+  EXPECT_EQ(map["surface"], "feedback");
+  EXPECT_NE(map["caption"].get<std::string>().find("feedback surface"), std::string::npos) << map["caption"];
+}
+
+TEST(workingDay, AnInchProgramIsShownInInches) {
+  const std::filesystem::path inch = test::scratchDir() / "inch-raster.nc";
+  {
+    std::ofstream out(inch);
+    out << "G20 G90 G17\nG0 X0 Y0 Z0.1\nG1 Z0 F40\n";
+    for (int row = 0; row < 12; ++row)
+      out << "G1 X" << (row % 2 ? 0 : 2) << " Y" << row * 0.02 << "\nG1 Y" << (row + 1) * 0.02 << "\n";
+    out << "M2\n";
+  }
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open(inch.string());
+  waitForJobs(ui);
+  EXPECT_EQ(described(ui)["length_unit"], "in");
+  ui.inspector().settings().units = "mm";  // the user's choice stands over the program's
+  settle(ui);
+  EXPECT_EQ(described(ui)["length_unit"], "mm");
+  ui.inspector().settings().units = "auto";
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  EXPECT_EQ(described(ui)["length_unit"], "mm");
+}
+
+TEST(workingDay, ThemeAndSizeAreChosenAndRemembered) {
+  app_model::Settings settings;
+  settings.theme = "light";
+  settings.uiScale = 1.5f;
+  panels::HeadlessUi ui(kWidth, kHeight, settings);
+  settle(ui);
+  EXPECT_FLOAT_EQ(ImGui::GetIO().FontGlobalScale, 1.5f);
+  EXPECT_GT(ImGui::GetStyle().Colors[ImGuiCol_WindowBg].x, 0.8f) << "a light window background";
+  EXPECT_EQ(described(ui)["theme"], "light");
+}

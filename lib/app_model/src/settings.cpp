@@ -80,6 +80,14 @@ Settings loadSettings(const std::string& path) {
   readString(json, "color_map", settings.colorMap);
   readWindowSide(json, "window_width", settings.windowWidth);
   readWindowSide(json, "window_height", settings.windowHeight);
+  std::string theme, units;
+  readString(json, "theme", theme);
+  if (theme == "dark" || theme == "light") settings.theme = theme;
+  readString(json, "units", units);
+  if (units == "auto" || units == "mm" || units == "inch") settings.units = units;
+  const auto scale = json.find("ui_scale");
+  if (scale != json.end() && scale->is_number() && scale->get<double>() >= 1.0 && scale->get<double>() <= 2.0)
+    settings.uiScale = scale->get<float>();
   return settings;
 }
 
@@ -91,6 +99,9 @@ bool saveSettings(const Settings& settings, const std::string& path) {
       {"color_map", settings.colorMap},
       {"window_width", settings.windowWidth},
       {"window_height", settings.windowHeight},
+      {"theme", settings.theme},
+      {"ui_scale", settings.uiScale},
+      {"units", settings.units},
   };
   try {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();

@@ -12,6 +12,7 @@
 
 #include "inspector_state.h"
 #include "isurface/vis/color_map.h"
+#include "isurface/panels/ui_look.h"
 #include "isurface/vis/quality_scene.h"
 #include "isurface/workflow/run_inputs.h"
 
@@ -27,6 +28,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   r.channel = settings.channel;
   r.colorMap = settings.colorMap;
   r.view = settings.view;
+  r.feedbackSurface = settings.feedbackSurface;
   if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
   if (settings.rangeMode == 2) r.fixedRange = ValueRange{settings.fixedLow, std::max(settings.fixedHigh, settings.fixedLow)};
   // A coarse surface keeps rotation interactive on large maps; the full one shows at rest.
@@ -212,6 +214,7 @@ void Inspector::State::syncHighlight() {
 
 Inspector::Inspector(GlHooks hooks, app_model::Settings settings) : state_(std::make_unique<State>(std::move(hooks))) {
   state_->persistent = std::move(settings);
+  if (ImGui::GetCurrentContext()) applyTheme(state_->persistent.theme, state_->persistent.uiScale);
   // A remembered colouring that this version does not know is a note, never a blocked file.
   State& s = *state_;
   std::vector<std::string> notes;

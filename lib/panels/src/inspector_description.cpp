@@ -66,7 +66,18 @@ std::string Inspector::describe() const {
                             {"optimise", s.optimiseDialogOpen},
                             {"replace_question", s.overwriteQuestion.has_value()},
                             {"help", s.helpOpen}};
+  nlohmann::json map = nlohmann::json::object();
+  if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
+    map = {{"quantity", doc->map.style.quantityLabel},
+           {"unit", doc->map.style.unit},
+           {"colour_map", doc->map.style.colorMap},
+           {"caption", doc->map.style.caption},
+           {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"}};
   const nlohmann::json out = {{"documents", documents},
+                              {"map", map},
+                              {"length_unit", s.units().lengthUnit()},
+                              {"theme", s.persistent.theme},
+                              {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
                               {"selection", selection},

@@ -25,6 +25,7 @@
 #include "isurface/app_model/text_lines.h"
 #include "isurface/vis/quality_map.h"
 #include "isurface/workflow/run_inputs.h"
+#include "display_units.h"
 
 namespace isurface::panels {
 
@@ -57,6 +58,7 @@ struct ViewSettings {
   int rangeMode = 0;  // 0 percentile 1-99 %, 1 full extent, 2 fixed
   float fixedLow = 0, fixedHigh = 3000;
   vis::ViewDirection view = vis::ViewDirection::Iso;
+  bool feedbackSurface = false;  // the surface of the encoder positions instead of the commanded
 };
 
 // A region re-optimised: the new program, its simulation and map, and the comparison.
@@ -184,6 +186,12 @@ struct Inspector::State {
   void startQueuedLoad();
 
   Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
+  // How lengths are shown: the user's choice, or as the active program is written.
+  DisplayUnits units() const {
+    if (persistent.units != "auto") return DisplayUnits{persistent.units == "inch"};
+    const bool inch = active < documents.size() && documents[active]->program && documents[active]->program->inch;
+    return DisplayUnits{inch};
+  }
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();

@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "inspector_state.h"
+#include "isurface/panels/ui_look.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_scene.h"
 
@@ -36,6 +37,31 @@ void toggleMeasure(Inspector::State& s) {
   s.measureA.reset();
   s.measureB.reset();
   s.status = s.measuring ? "measure: click the first point on the surface (Esc ends)" : "measuring ended";
+}
+
+// Theme, size of text and controls, and the units lengths are shown in; all remembered.
+void drawLookMenus(Inspector::State& s) {
+  app_model::Settings& p = s.persistent;
+  bool look = false;
+  if (ImGui::BeginMenu("Theme")) {
+    for (const char* theme : {"dark", "light"})
+      if (ImGui::MenuItem(theme, nullptr, p.theme == theme)) p.theme = theme, look = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Text and controls size")) {
+    for (float scale : {1.0f, 1.25f, 1.5f, 2.0f}) {
+      const std::string label = std::to_string(static_cast<int>(scale * 100)) + " %";
+      if (ImGui::MenuItem(label.c_str(), nullptr, p.uiScale == scale)) p.uiScale = scale, look = true;
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Units")) {
+    if (ImGui::MenuItem("as the program is written", nullptr, p.units == "auto")) p.units = "auto";
+    if (ImGui::MenuItem("mm", nullptr, p.units == "mm")) p.units = "mm";
+    if (ImGui::MenuItem("inch", nullptr, p.units == "inch")) p.units = "inch";
+    ImGui::EndMenu();
+  }
+  if (look) applyTheme(p.theme, p.uiScale);
 }
 
 void setView(Inspector::State& s, vis::ViewDirection view) {
@@ -85,6 +111,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Left", "L")) setView(s, vis::ViewDirection::Left);
       if (ImGui::MenuItem("Reset", "R")) setView(s, s.settings.view);
       ImGui::MenuItem("Rectangle zoom", "Z", &s.rectangleZoom);
+      ImGui::Separator();
+      drawLookMenus(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Colour by")) {
@@ -209,6 +237,28 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     ImGui::EndCombo();
   }
   if (!byChannel) ImGui::Text("unit: %s", current.unit);
+  // Which surface carries the colours: what the interpolator commanded, or where the encoders
+  // say the tool went (a dump with feedback). The programmed path is the toolpath below.
+  {
+    const Document* doc = s.activeDocument();
+    const bool feedback = doc && doc->samples && doc->samples->hasFeedback();
+    if (!feedback && s.settings.feedbackSurface) {
+      s.settings.feedbackSurface = false;
+      recolour = doc && doc->samples;
+    }
+    int surface = s.settings.feedbackSurface ? 1 : 0;
+    ImGui::TextUnformatted("surface:");
+    ImGui::SameLine();
+    recolour |= ImGui::RadioButton("commanded", &surface, 0);
+    ImGui::SameLine();
+    ImGui::BeginDisabled(!feedback);
+    recolour |= ImGui::RadioButton("feedback", &surface, 1);
+    noteControl(s, "surface.feedback");
+    ImGui::EndDisabled();
+    if (!feedback && ImGui::IsItemHovered(ImGuiHoveredFlags_AllowWhenDisabled))
+      ImGui::SetTooltip("the samples have no feedback positions (fb_x fb_y fb_z)");
+    s.settings.feedbackSurface = surface == 1;
+  }
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
     std::vector<std::string> names = vis::colorMapNames();

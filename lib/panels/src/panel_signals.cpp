@@ -29,19 +29,58 @@ std::pair<float, float> displayRange(const app_model::SignalPyramid& values, std
   return hi > lo ? std::make_pair(lo, hi) : values.range(first, last);
 }
 
-void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImVec2 origin, ImVec2 size) {
+// Round values 1, 2 or 5 times a power of ten apart, about `count` of them over [lo, hi].
+std::vector<double> niceTicks(double lo, double hi, int count) {
+  std::vector<double> ticks;
+  if (!(hi > lo) || !std::isfinite(lo) || !std::isfinite(hi) || count < 1) return ticks;
+  const double raw = (hi - lo) / count;
+  const double power = std::pow(10.0, std::floor(std::log10(raw)));
+  const double step = power * (raw / power < 1.5 ? 1 : raw / power < 3.5 ? 2 : raw / power < 7.5 ? 5 : 10);
+  for (double v = std::ceil(lo / step) * step; v <= hi + step * 1e-9 && ticks.size() < 50; v += step)
+    ticks.push_back(std::fabs(v) < step * 1e-9 ? 0.0 : v);
+  return ticks;
+}
+
+// Seconds under the last curve, ticked at round times across the shown samples.
+void drawTimeAxis(const Trajectory& t, std::size_t first, std::size_t last, ImVec2 origin, float width) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  if (last <= first + 1 || last > t.size()) return;
+  const double t0 = t.time[first], t1 = t.time[last - 1];
+  for (double tick : niceTicks(t0, t1, std::max(2, static_cast<int>(width / 90)))) {
+    const float px = origin.x + static_cast<float>((tick - t0) / (t1 - t0)) * width;
+    draw->AddLine(ImVec2(px, origin.y), ImVec2(px, origin.y + 4), IM_COL32(200, 200, 200, 255));
+    char label[32];
+    std::snprintf(label, sizeof label, "%g s", tick);
+    const float w = ImGui::CalcTextSize(label).x;
+    draw->AddText(ImVec2(std::clamp(px - w / 2, origin.x, origin.x + width - w), origin.y + 4), IM_COL32(200, 200, 200, 255),
+                  label);
+  }
+}
+
+void drawCurve(Inspector::State& s, const Curve& curve, double scale, const char* unit, const Trajectory& t,
+               ImVec2 origin, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
   const int columns = std::max(1, static_cast<int>(size.x));
   const std::size_t first = s.curveFirst, last = std::max(s.curveLast, s.curveFirst + 1);
   const app_model::Envelope envelope = curve.values.envelope(first, last, columns);
-  const auto [lo, hi] = displayRange(curve.values, first, last);
+  const auto [storedLo, storedHi] = displayRange(curve.values, first, last);
+  const float lo = static_cast<float>(storedLo * scale), hi = static_cast<float>(storedHi * scale);
   const float span = (std::isfinite(lo) && std::isfinite(hi) && hi > lo) ? hi - lo : 1.0f;
   auto toY = [&](float v) { return end.y - 2 - (v - (std::isfinite(lo) ? lo : 0)) / span * (size.y - 4); };
   draw->PushClipRect(origin, end, true);
+  // Round values across, faint, with their numbers at the right edge.
+  for (double tick : niceTicks(lo, hi, std::max(2, static_cast<int>(size.y / 22)))) {
+    const float py = toY(static_cast<float>(tick));
+    draw->AddLine(ImVec2(origin.x, py), ImVec2(end.x, py), IM_COL32(70, 74, 82, 255));
+    char label[32];
+    std::snprintf(label, sizeof label, "%g", tick);
+    draw->AddText(ImVec2(end.x - ImGui::CalcTextSize(label).x - 3, py - ImGui::GetTextLineHeight()),
+                  IM_COL32(150, 155, 165, 255), label);
+  }
   for (int c = 0; c < columns; ++c) {
-    const float a = envelope.low[c], b = envelope.high[c];
+    const float a = static_cast<float>(envelope.low[c] * scale), b = static_cast<float>(envelope.high[c] * scale);
     if (!std::isfinite(a) || !std::isfinite(b)) continue;
     const float px = origin.x + c + 0.5f;
     draw->AddLine(ImVec2(px, std::max(toY(b), origin.y)), ImVec2(px, std::min(toY(a) + 1, end.y)),
@@ -49,13 +88,13 @@ void drawCurve(Inspector::State& s, const Curve& curve, const Trajectory& t, ImV
   }
   draw->PopClipRect();
   char label[160];
-  std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), curve.unit.c_str(), lo, hi);
+  std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), unit, lo, hi);
   draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
   const app_model::Selection& sel = s.selection.current();
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, end.y), IM_COL32(255, 210, 40, 255), 1.5f);
-    std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample), t.time[*sel.sample]);
+    std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample) * scale, t.time[*sel.sample]);
     draw->AddText(ImVec2(std::min(px + 4, end.x - 150), end.y - 16), IM_COL32(255, 210, 40, 255), label);
   }
   ImGui::SetCursorScreenPos(origin);
@@ -106,13 +145,21 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
   }
   const ImVec2 area = ImGui::GetContentRegionAvail();
   const int shown = doc->curves.size() > 3 ? 4 : 3;
-  const float each = (area.y - 4 * (shown - 1)) / shown;
+  const float axis = ImGui::GetTextLineHeight() + 6;  // the time axis under the curves
+  const float each = (area.y - axis - 4 * (shown - 1)) / shown;
   ImVec2 origin = ImGui::GetCursorScreenPos();
+  const DisplayUnits units = s.units();
+  const char* unitOf[3] = {units.feedUnit(), units.accelerationUnit(), units.jerkUnit()};
   for (int k = 0; k < shown; ++k) {
     const Curve& curve = doc->curves[k < 3 ? k : 3 + s.extraCurve];
-    drawCurve(s, curve, *doc->samples, origin, ImVec2(area.x, each));
+    // Speed, acceleration and jerk are lengths per time: shown in the display units.
+    const double scale = k < 3 ? units.length(1.0) : 1.0;
+    drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each));
     origin.y += each + 4;
   }
+  drawTimeAxis(*doc->samples, s.curveFirst, std::max(s.curveLast, s.curveFirst + 1), ImVec2(origin.x, origin.y - 4), area.x);
+  ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + axis - 4));
+  ImGui::Dummy(ImVec2(1, 1));
   ImGui::End();
 }
 

@@ -105,13 +105,17 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   const app_model::Selection& sel = s.selection.current();
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
                                 ImGuiTableFlags_BordersV | ImGuiTableFlags_SizingFixedFit;
+  const DisplayUnits units = s.units();
   if (ImGui::BeginTable("samples", columns, flags)) {
     ImGui::TableSetupScrollFreeze(1, 1);
-    for (const char* name : {"sample", "t [s]", "line", "X [mm]", "Y [mm]", "Z [mm]", "v [mm/min]", "a [mm/s2]",
-                             "j [mm/s3]"})
-      ImGui::TableSetupColumn(name);
+    for (const char* name : {"sample", "t [s]", "line"}) ImGui::TableSetupColumn(name);
+    const std::string length = std::string(" [") + units.lengthUnit() + "]";
+    for (const char* axis : {"X", "Y", "Z"}) ImGui::TableSetupColumn((axis + length).c_str());
+    ImGui::TableSetupColumn((std::string("v [") + units.feedUnit() + "]").c_str());
+    ImGui::TableSetupColumn((std::string("a [") + units.accelerationUnit() + "]").c_str());
+    ImGui::TableSetupColumn((std::string("j [") + units.jerkUnit() + "]").c_str());
     if (feedback)
-      for (const char* name : {"fb X", "fb Y", "fb Z"}) ImGui::TableSetupColumn(name);
+      for (const char* axis : {"fb X", "fb Y", "fb Z"}) ImGui::TableSetupColumn((axis + length).c_str());
     ImGui::TableHeadersRow();
     const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
     if (const std::optional<std::size_t> row = steppedRow(sel.sample, t.size(), rowHeight)) s.selection.selectSample(*row);
@@ -136,16 +140,16 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
         ImGui::Text("%u", t.line[i]);
         for (double v : {t.x[i], t.y[i], t.z[i]}) {
           ImGui::TableNextColumn();
-          ImGui::Text("%.4f", v);
+          ImGui::Text("%.*f", units.lengthDecimals(), units.length(v));
         }
         for (int k = 0; k < 3; ++k) {
           ImGui::TableNextColumn();
-          ImGui::Text("%.5g", doc->curves[k].values.value(i));
+          ImGui::Text("%.5g", units.length(doc->curves[k].values.value(i)));
         }
         if (feedback)
           for (double v : {t.fbX[i], t.fbY[i], t.fbZ[i]}) {
             ImGui::TableNextColumn();
-            ImGui::Text("%.4f", v);
+            ImGui::Text("%.*f", units.lengthDecimals(), units.length(v));
           }
       }
     }

@@ -41,8 +41,11 @@ void measurePick(Inspector::State& s, const Vec3& point) {
   }
   s.measureB = point;
   const Vec3 d = *s.measureB - *s.measureA;
-  char text[160];
-  std::snprintf(text, sizeof text, "distance %.4f mm (dX %.4f  dY %.4f  dZ %.4f mm)", d.norm(), d.x(), d.y(), d.z());
+  const DisplayUnits u = s.units();
+  const int n = u.lengthDecimals();
+  char text[200];
+  std::snprintf(text, sizeof text, "distance %.*f %s (dX %.*f  dY %.*f  dZ %.*f %s)", n, u.length(d.norm()), u.lengthUnit(),
+                n, u.length(d.x()), n, u.length(d.y()), n, u.length(d.z()), u.lengthUnit());
   s.status = text;
 }
 
@@ -59,7 +62,8 @@ void drawMeasure(Inspector::State& s, ImDrawList* draw, ImVec2 origin) {
   draw->AddCircleFilled(pb, 4, colour);
   draw->AddLine(pa, pb, colour, 2.0f);
   char text[64];
-  std::snprintf(text, sizeof text, "%.4f mm", (*s.measureB - *s.measureA).norm());
+  const DisplayUnits u = s.units();
+  std::snprintf(text, sizeof text, "%.*f %s", u.lengthDecimals(), u.length((*s.measureB - *s.measureA).norm()), u.lengthUnit());
   const ImVec2 mid((pa.x + pb.x) * 0.5f + 6, (pa.y + pb.y) * 0.5f - 18);
   const ImVec2 extent = ImGui::CalcTextSize(text);
   draw->AddRectFilled(ImVec2(mid.x - 3, mid.y - 2), ImVec2(mid.x + extent.x + 3, mid.y + extent.y + 2), IM_COL32(0, 0, 0, 170), 3);
@@ -86,8 +90,10 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
   const std::size_t k = *s.hoverSample;
   ImGui::BeginTooltip();
   ImGui::Text("line %u   sample %zu", doc->samples->line[k], k);
+  const DisplayUnits u = s.units();
+  const char* unitOf[3] = {u.feedUnit(), u.accelerationUnit(), u.jerkUnit()};
   for (std::size_t c = 0; c < doc->curves.size() && c < 3; ++c)
-    ImGui::Text("%s %.4g %s", doc->curves[c].label.c_str(), doc->curves[c].values.value(k), doc->curves[c].unit.c_str());
+    ImGui::Text("%s %.4g %s", doc->curves[c].label.c_str(), u.length(doc->curves[c].values.value(k)), unitOf[c]);
   for (std::size_t c = 3; c < doc->curves.size(); ++c)
     if (doc->curves[c].label == s.settings.channel)
       ImGui::Text("%s %.4g", doc->curves[c].label.c_str(), doc->curves[c].values.value(k));
@@ -125,10 +131,14 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
         draw->AddCircle(centre, 9, IM_COL32(255, 230, 60, 255), 24, 2.0f);
         draw->AddCircle(centre, 13, IM_COL32(0, 0, 0, 160), 24, 1.5f);
       }
-      char text[256];
-      std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.4f  Y %.4f  Z %.4f mm\n"
-                    "v %.1f mm/min   a %.1f mm/s^2   j %.0f mm/s^3", k, t.line[k], t.time[k], t.x[k], t.y[k], t.z[k],
-                    doc->curves[0].values.value(k), doc->curves[1].values.value(k), doc->curves[2].values.value(k));
+      char text[320];
+      const DisplayUnits u = s.units();
+      const int d = u.lengthDecimals();
+      std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.*f  Y %.*f  Z %.*f %s\n"
+                    "v %.1f %s   a %.1f %s   j %.0f %s", k, t.line[k], t.time[k], d, u.length(t.x[k]), d,
+                    u.length(t.y[k]), d, u.length(t.z[k]), u.lengthUnit(), u.length(doc->curves[0].values.value(k)),
+                    u.feedUnit(), u.length(doc->curves[1].values.value(k)), u.accelerationUnit(),
+                    u.length(doc->curves[2].values.value(k)), u.jerkUnit());
       // Right of the orientation axes in the lower left corner.
       const ImVec2 at(origin.x + size.x * static_cast<float>(vis::kAxesCornerWidth) + 10,
                       origin.y + size.y - 4 * ImGui::GetTextLineHeightWithSpacing());

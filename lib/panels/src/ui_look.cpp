@@ -26,9 +26,10 @@ UiLook uiLook() {
   return look;
 }
 
-void applyUiLook(const UiLook& look) {
-  ImGui::StyleColorsDark();
-  ImGuiStyle& style = ImGui::GetStyle();
+void applyTheme(const std::string& theme, float scale) {
+  ImGuiStyle style;
+  if (theme == "light") ImGui::StyleColorsLight(&style);
+  else ImGui::StyleColorsDark(&style);
   style.WindowRounding = 0;
   style.FrameRounding = 2;
   style.WindowBorderSize = 1;
@@ -37,6 +38,13 @@ void applyUiLook(const UiLook& look) {
   style.Colors[ImGuiCol_Header] = ImVec4(0.26f, 0.59f, 0.98f, 0.85f);
   style.Colors[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.59f, 0.98f, 0.30f);
   style.Colors[ImGuiCol_HeaderActive] = ImVec4(0.26f, 0.59f, 0.98f, 1.00f);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+  ImGui::GetIO().FontGlobalScale = scale;
+}
+
+void applyUiLook(const UiLook& look) {
+  applyTheme("dark", 1.0f);
   ImGuiIO& io = ImGui::GetIO();
   if (!look.fontFile.empty()) io.Fonts->AddFontFromFileTTF(look.fontFile.c_str(), look.fontSize);
 }

@@ -81,6 +81,7 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   state_.g28 = options.g28Position;
   state_.g30 = options.g30Position;
   state_.inch = options.inchAtPowerOn;
+  result_.program.inch = options.inchAtPowerOn;
   state_.plane = options.planeAtPowerOn;
   state_.incremental = options.incrementalAtPowerOn;
   planeStated_ = distanceStated_ = !options.powerOnModesNamed;
@@ -227,7 +228,10 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
-  if (groups.has(kGroupUnits)) unitsStated_ = true;
+  if (groups.has(kGroupUnits) && !unitsStated_) {
+    unitsStated_ = true;
+    result_.program.inch = state_.inch;
+  }
   if (groups.has(kGroupPlane)) planeStated_ = true;
   if (groups.has(kGroupDistance)) distanceStated_ = true;
   if (!distanceStated_ && hasAxisWords(block))

@@ -11,6 +11,9 @@ struct Settings {
   std::string quantity = "speed";
   std::string colorMap = "auto";  // rainbow, or diverging for signed quantities
   int windowWidth = 1600, windowHeight = 1000;
+  std::string theme = "dark";    // or "light"
+  float uiScale = 1.0f;          // 1 to 2: text and controls larger on large screens
+  std::string units = "auto";    // lengths shown in "mm", "inch", or as the program is written
 
   void addRecent(const std::string& path);
 };

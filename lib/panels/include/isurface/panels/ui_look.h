@@ -14,5 +14,7 @@ UiLook uiLook();
 // Loads the font into the current ImGui context and sets the colours; call after
 // ImGui::CreateContext() and before the renderer builds its font texture.
 void applyUiLook(const UiLook& look);
+// Colours of a theme ("dark" or "light") and sizes at a scale (1 = as designed), at any time.
+void applyTheme(const std::string& theme, float scale);
 
 }  // namespace isurface::panels

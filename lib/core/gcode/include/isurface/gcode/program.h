@@ -45,6 +45,7 @@ struct Program {
   std::vector<Move> moves;
   std::vector<Diagnostic> warnings; // non-fatal notes (e.g. cutter compensation ignored)
   std::uint32_t lineCount = 0;      // physical lines in the source
+  bool inch = false;                // written in inches: the first G20/G21 was G20 (or the control's default)
 
   const Vec3& startOf(std::size_t i) const { return i == 0 ? start : moves[i - 1].end; }
 };
