@@ -271,3 +271,18 @@ TEST(workingDay, ThemeAndSizeAreChosenAndRemembered) {
   EXPECT_GT(ImGui::GetStyle().Colors[ImGuiCol_WindowBg].x, 0.8f) << "a light window background";
   EXPECT_EQ(described(ui)["theme"], "light");
 }
+
+TEST(workingDay, TheOpenDialogBrowsesFoldersAndOpensAFile) {
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  settle(ui);
+  tapLetter(ui, 'O');
+  // A folder typed and entered lists it; a file typed and entered opens.
+  typeInto(ui, "open.path", test::sourcePath("samples"));
+  tap(ui, ImGuiKey_Enter);
+  EXPECT_EQ(ui.inspector().documentCount(), 0u);
+  typeInto(ui, "open.path", test::sourcePath("samples/transition-surface.nc"));
+  clickControl(ui, "open.open");
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
+  EXPECT_EQ(described(ui)["documents"][0]["name"], "transition-surface.nc");
+}

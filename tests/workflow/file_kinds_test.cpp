@@ -1,6 +1,7 @@
 // Files told apart by their content: programs, dumps, traces, and what is none of them.
 #include <gtest/gtest.h>
 
+#include <filesystem>
 #include <fstream>
 #include <random>
 
@@ -94,4 +95,29 @@ TEST(fileKinds, ACsvTraceWithoutPositionColumnsNamesTheImportCommand) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("isurface-cli import csv"), std::string::npos) << e.what();
   }
+}
+
+TEST(fileKinds, ProseIsNotAProgram) {
+  const std::string readme = written("README.md", "# Programs\n\nThese programs were written by others.\nSee below.\n");
+  EXPECT_NE(kindError(readme).find("is not a G-code program"), std::string::npos) << kindError(readme);
+  // Programs of many styles are: block numbers, comments first, parameters, O-words, lower case.
+  for (const char* text : {"N10 G0 X1\n", "(header)\nG21\n", "#1 = 3\nG1 X#1\n", "o<sub> sub\no<sub> endsub\n",
+                           "%\nO1000\ng0 x 1\n", "; note\nX1 Y2\n", "$H\nG0 X0\n"})
+    EXPECT_EQ(fileKind(written("styles.nc", text)), FileKind::Program) << text;
+  EXPECT_EQ(fileKind(written("empty.nc", "")), FileKind::Program);
+}
+
+TEST(fileKinds, EveryRealProgramAndSampleIsAProgram) {
+  std::vector<std::string> programs;
+  for (const char* folder : {"samples"})
+    for (const auto& e : std::filesystem::directory_iterator(sourcePath(folder)))
+      if (e.path().extension() == ".nc") programs.push_back(e.path().string());
+  const std::filesystem::path realdata = realdataPath("");
+  if (std::filesystem::is_directory(realdata))
+    for (const auto& e : std::filesystem::directory_iterator(realdata)) {
+      const std::string ext = e.path().extension().string();
+      if (ext == ".nc" || ext == ".ngc" || ext == ".NC") programs.push_back(e.path().string());
+    }
+  ASSERT_GT(programs.size(), 3u);
+  for (const std::string& p : programs) EXPECT_EQ(fileKind(p), FileKind::Program) << p;
 }

@@ -21,6 +21,7 @@
 #include "isurface/panels/scene_view.h"
 #include "isurface/app_model/background_job.h"
 #include "isurface/app_model/box_selection.h"
+#include "isurface/app_model/folder_listing.h"
 #include "isurface/app_model/signal_pyramid.h"
 #include "isurface/app_model/text_lines.h"
 #include "isurface/vis/quality_map.h"
@@ -167,6 +168,8 @@ struct Inspector::State {
   bool quit = false;
   bool openDialog = false, locateDialog = false;
   char openPath[1024] = "";
+  app_model::FolderListing browse;  // the Open dialog's folder
+  int browseFilter = 0, browseFilterListed = -1;  // an app_model::FileFilter
   std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
   bool rectangleZoom = false;
   bool boxSelect = false;  // the next drag in the view chooses the region to optimise
@@ -244,6 +247,7 @@ void drawCompareDialog(Inspector::State& s);
 void drawOverwriteQuestion(Inspector::State& s);
 void drawMachineWindow(Inspector::State& s);
 void drawExportDialog(Inspector::State& s);
+void drawOpenDialog(Inspector::State& s);
 void drawHelpWindow(Inspector::State& s);
 // The panel beside the 3D view: its figures on top (begin), then the view beside the main one
 // (afterView) with the main view's camera in the rest of it (end). `close`: the panel's Close

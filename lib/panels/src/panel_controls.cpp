@@ -69,13 +69,6 @@ void setView(Inspector::State& s, vis::ViewDirection view) {
   s.view.setView(view);
 }
 
-bool isProgramOrDump(const std::filesystem::path& p) {
-  const std::string ext = p.extension().string();
-  for (const char* known : {".nc", ".ngc", ".tap", ".gcode", ".cnc", ".biip", ".dat"})
-    if (ext == known) return true;
-  return false;
-}
-
 }  // namespace
 
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags) {
@@ -373,37 +366,7 @@ void drawLocateWindow(Inspector::State& s) {
 }  // namespace
 
 void drawDialogs(Inspector::State& s) {
-  if (s.openDialog) ImGui::OpenPopup("Open file");
-  s.openDialog = false;
-  if (ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) {
-    ImGui::SetNextItemWidth(560);
-    const bool enter = ImGui::InputText("##path", s.openPath, sizeof s.openPath, ImGuiInputTextFlags_EnterReturnsTrue);
-    // The folder of the typed path, for picking a file by clicking.
-    std::error_code error;
-    std::filesystem::path folder = std::filesystem::path(s.openPath).parent_path();
-    if (folder.empty()) folder = ".";
-    ImGui::BeginChild("files", ImVec2(560, 220), true);
-    for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-      if (!entry.is_regular_file(error) || !isProgramOrDump(entry.path())) continue;
-      if (ImGui::Selectable(entry.path().filename().string().c_str()))
-        std::snprintf(s.openPath, sizeof s.openPath, "%s", entry.path().string().c_str());
-    }
-    ImGui::EndChild();
-    if (ImGui::Button("Open") || enter) {
-      if (s.openPath[0]) {
-        s.persistent.addRecent(s.openPath);
-        const std::string path = s.openPath;
-        ImGui::CloseCurrentPopup();
-        ImGui::EndPopup();
-        s.openFile(path);
-        return;
-      }
-    }
-    ImGui::SameLine();
-    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
-    ImGui::EndPopup();
-  }
-
+  drawOpenDialog(s);
   drawLocateWindow(s);
 }
 

@@ -111,6 +111,22 @@ bool looksLikeCsv(const std::vector<std::string>& lines) {
   return true;
 }
 
+// A line as G-code starts: a word letter and a number, a block number, a comment, a parameter,
+// an O-word, a tape mark or a sender command.
+bool looksLikeGcode(const std::string& line) {
+  const std::size_t at = line.find_first_not_of(" \t/");
+  if (at == std::string::npos) return false;
+  const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(line[at])));
+  if (c == '%' || c == '(' || c == ';' || c == '$') return true;
+  const char next = at + 1 < line.size() ? line[at + 1] : '\0';
+  if (c == '#') return next == '<' || std::isdigit(static_cast<unsigned char>(next)) || next == '[';
+  if (c == 'O' && next == '<') return true;
+  if (!std::strchr("ABCDFGHIJKLMNOPQRSTXYZ", c) || c == '\0') return false;
+  const std::size_t value = line.find_first_not_of(" \t", at + 1);
+  return value != std::string::npos && (std::isdigit(static_cast<unsigned char>(line[value])) ||
+                                        std::strchr("+-.#[", line[value]));
+}
+
 }  // namespace
 
 FileKind fileKind(const std::string& path) {
@@ -128,7 +144,8 @@ FileKind fileKind(const std::string& path) {
   const std::vector<std::string> lines = firstLines(head);
   if (looksLikeHalsampler(lines)) return FileKind::HalsamplerTrace;
   if (ext == ".csv" || looksLikeCsv(lines)) return FileKind::CsvTrace;
-  return FileKind::Program;
+  if (lines.empty() || std::any_of(lines.begin(), lines.end(), looksLikeGcode)) return FileKind::Program;
+  fail(path, "is not a G-code program: none of its first lines reads as G-code (a word such as G1, X10 or M3)");
 }
 
 const char* fileKindName(FileKind kind) {
