@@ -286,3 +286,23 @@ TEST(workingDay, TheOpenDialogBrowsesFoldersAndOpensAFile) {
   ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
   EXPECT_EQ(described(ui)["documents"][0]["name"], "transition-surface.nc");
 }
+
+TEST(workingDay, TheScaleBarAgreesWithAMeasuredDistance) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'T');  // from the top: screen distances are workpiece distances
+  settle(*ui);
+  const nlohmann::json bar = described(*ui)["scale_bar"];
+  ASSERT_GT(bar["pixels"].get<double>(), 20.0);
+  EXPECT_EQ(bar["unit"], "mm");
+  const double mmPerPixel = bar["length"].get<double>() / bar["pixels"].get<double>();
+  const auto surface = described(*ui)["controls"]["surface"].get<std::array<float, 4>>();
+  const float cy = (surface[1] + surface[3]) / 2, cx = (surface[0] + surface[2]) / 2;
+  tapLetter(*ui, 'D');
+  click(*ui, cx - 100, cy);
+  click(*ui, cx + 100, cy);
+  const nlohmann::json m = described(*ui)["measure"];
+  ASSERT_TRUE(m.contains("distance_mm")) << m.dump();
+  const double across = std::hypot(m["b"][0].get<double>() - m["a"][0].get<double>(),
+                                   m["b"][1].get<double>() - m["a"][1].get<double>());
+  EXPECT_NEAR(across, 200 * mmPerPixel, 0.15 * across);
+}

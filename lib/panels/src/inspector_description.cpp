@@ -76,6 +76,7 @@ std::string Inspector::describe() const {
   const nlohmann::json out = {{"documents", documents},
                               {"map", map},
                               {"length_unit", s.units().lengthUnit()},
+                              {"scale_bar", {{"length", s.scaleBar.length}, {"unit", s.scaleBar.unit}, {"pixels", s.scaleBar.pixels}}},
                               {"theme", s.persistent.theme},
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},

@@ -137,6 +137,12 @@ struct Inspector::State {
   bool measuring = false;
   std::optional<Vec3> measureA, measureB;
   bool helpOpen = false;
+  // The scale bar last drawn: its length in display units, the unit, its pixels.
+  struct ScaleBar {
+    double length = 0;
+    std::string unit;
+    float pixels = 0;
+  } scaleBar;
   // The export dialog: what (0 view PNG, 1 map figures JSON, 2 samples of lines CSV), where.
   bool exportDialog = false;
   int exportKind = 0, exportWidth = 1920, exportHeight = 1080, exportFirst = 1, exportLast = 1;

@@ -38,6 +38,7 @@ void drawHelpWindow(Inspector::State& s) {
   if (!s.helpOpen) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.45f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(1.0f);
   if (ImGui::Begin("Help", &s.helpOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
     ImGui::Text("iSurface %s", ISURFACE_VERSION);
     ImGui::TextDisabled("Quality maps of NC interpolation: speed, acceleration, jerk, inconsistency, deviation");

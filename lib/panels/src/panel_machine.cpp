@@ -110,6 +110,7 @@ void drawMachineWindow(Inspector::State& s) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.45f), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the figures hard to read
   if (ImGui::Begin("Machine", &s.machineOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
     ImGui::Text("Simulations use: %s (%s)", s.machine.name.c_str(), s.machineSource.c_str());
     if (const Document* doc = s.activeDocument(); doc && doc->samples)
@@ -118,7 +119,7 @@ void drawMachineWindow(Inspector::State& s) {
     ImGui::Separator();
     char name[256];
     std::snprintf(name, sizeof name, "%s", s.machineEdit.name.c_str());
-    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 24);
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 40);
     if (ImGui::InputText("name", name, sizeof name)) s.machineEdit.name = name;
     editScaled("interpolation cycle [ms]", s.machineEdit.cycle, 1000.0, "%.3f");
     ImGui::SameLine();

@@ -110,6 +110,15 @@ std::optional<app_model::ScreenRectangle> screenBox(const app_model::ScreenProje
 
 }  // namespace
 
+double SceneView::millimetresPerPixel() const {
+  if (!scene_ || impl_->height <= 0) return 0;
+  vtkCamera* camera = scene_->renderer()->GetActiveCamera();
+  const double span = camera->GetParallelProjection()
+                          ? 2.0 * camera->GetParallelScale()
+                          : 2.0 * camera->GetDistance() * std::tan(0.5 * camera->GetViewAngle() * M_PI / 180.0);
+  return span / impl_->height;
+}
+
 std::optional<app_model::ScreenRectangle> SceneView::surfaceOnScreen() const {
   if (!scene_ || impl_->height <= 0) return std::nullopt;
   double bounds[6];

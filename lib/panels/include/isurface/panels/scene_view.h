@@ -48,6 +48,8 @@ class SceneView {
   std::optional<std::pair<double, double>> project(const Vec3& point) const;
   // The same mapping for many points at once, as the camera stands now (an empty view: 0 x 0).
   app_model::ScreenProjection projection() const;
+  // Millimetres a pixel spans at the camera's focal point (0 with nothing shown).
+  double millimetresPerPixel() const;
   // Where the surface's bounding box stands in the view (pixels from its top-left corner).
   std::optional<app_model::ScreenRectangle> surfaceOnScreen() const;
 
