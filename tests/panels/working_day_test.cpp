@@ -306,3 +306,22 @@ TEST(workingDay, TheScaleBarAgreesWithAMeasuredDistance) {
                                    m["b"][1].get<double>() - m["a"][1].get<double>());
   EXPECT_NEAR(across, 200 * mmPerPixel, 0.15 * across);
 }
+
+TEST(workingDay, TheMapsFiguresExportAsJson) {
+  auto ui = openedSample();
+  const std::filesystem::path json = test::scratchDir() / "map-figures.json";
+  std::filesystem::remove(json);
+  tapLetter(*ui, 'E', true);
+  clickControl(*ui, "export.json");
+  typeInto(*ui, "export.path", json.string());
+  clickControl(*ui, "export.write");
+  ASSERT_EQ(described(*ui)["last_saved"], json.string()) << ui->inspector().statusText();
+  const nlohmann::json figures = nlohmann::json::parse(test::readFile(json.string()));
+  EXPECT_EQ(figures["quantity"], "Path speed");
+  EXPECT_EQ(figures["unit"], "mm/min");
+  EXPECT_GT(figures["samples"].get<std::size_t>(), 100000u);
+  EXPECT_GT(figures["machining_time_s"].get<double>(), 100.0);
+  EXPECT_LE(figures["values"]["p1"].get<double>(), figures["values"]["median"].get<double>());
+  EXPECT_LE(figures["values"]["median"].get<double>(), figures["values"]["p99"].get<double>());
+  EXPECT_GT(figures["figures"]["speed_fluctuation_mm_min"].get<double>(), 0.0);
+}

@@ -114,6 +114,7 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::RadioButton("the view as PNG", &s.exportKind, 0);
   ImGui::SameLine();
   ImGui::RadioButton("the map's figures as JSON", &s.exportKind, 1);
+  noteControl(s, "export.json");
   ImGui::SameLine();
   ImGui::RadioButton("the samples of lines as CSV", &s.exportKind, 2);
   noteControl(s, "export.csv");
