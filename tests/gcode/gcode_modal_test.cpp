@@ -273,3 +273,13 @@ TEST(gcodeModal, TheControlsPowerOnPlaneAndDistanceModeAreUsedAndNamedWhenRelyin
   // A program that states its modes gets no warning.
   EXPECT_TRUE(run("G21 G90 G18 F100\nG1 X1 Z1\nG2 X2 Z0 R1\n", options).program.warnings.empty());
 }
+
+TEST(gcodeModal, TheProgramSaysWhetherItIsWrittenInInches) {
+  EXPECT_TRUE(runOk("G20\nG0 X1\nG21\nG0 X2\n").program.inch);  // the first G20/G21 decides
+  EXPECT_FALSE(runOk("G21\nG0 X1\nG20\nG0 X2\n").program.inch);
+  EXPECT_TRUE(run("G0 Z0.1\nG20\nG1 X1 F10\n").program.inch);  // a move before the units does not hide them
+  EXPECT_FALSE(run("G0 X1\n").program.inch);
+  InterpreterOptions inchControl;
+  inchControl.inchAtPowerOn = true;
+  EXPECT_TRUE(run("G0 X1\n", inchControl).program.inch);
+}

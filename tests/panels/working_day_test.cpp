@@ -325,3 +325,19 @@ TEST(workingDay, TheMapsFiguresExportAsJson) {
   EXPECT_LE(figures["values"]["median"].get<double>(), figures["values"]["p99"].get<double>());
   EXPECT_GT(figures["figures"]["speed_fluctuation_mm_min"].get<double>(), 0.0);
 }
+
+TEST(workingDay, EscClosesWhatItIsPressedInAndCancelsNothingElse) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'M');
+  typeInto(*ui, "machine.velocity.x", "1500");
+  tap(*ui, ImGuiKey_Enter);
+  // M again, with the window open: the edit stays.
+  tapLetter(*ui, 'M');
+  EXPECT_DOUBLE_EQ(described(*ui)["machine_edited"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
+  clickControl(*ui, "machine.simulate");
+  tap(*ui, ImGuiKey_Escape);  // closes the machine window; the simulation goes on
+  waitForJobs(*ui);
+  EXPECT_EQ(ui->inspector().statusText().find("cancelled"), std::string::npos) << ui->inspector().statusText();
+  EXPECT_FALSE(described(*ui)["windows"]["machine"].get<bool>());
+  EXPECT_DOUBLE_EQ(described(*ui)["machine"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
+}

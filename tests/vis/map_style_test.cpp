@@ -26,3 +26,12 @@ TEST(mapStyle, UnitsAreWrittenAsPeopleWriteThem) {
   EXPECT_STREQ(quantityInfo(Quantity::Deviation).unit, "\u00b5m");
   EXPECT_STREQ(quantityInfo(Quantity::FollowingError).unit, "\u00b5m");
 }
+
+TEST(mapStyle, TheDivergingMapAutoChoosesIsCentredOnZero) {
+  const Trajectory raster = test::zigZagRaster(12, 40.0, 1.0, 50.0);
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::Acceleration;
+  const vis::QualityMap map = vis::buildQualityMap(raster, nullptr, request);
+  EXPECT_DOUBLE_EQ(map.style.range.lo, -map.style.range.hi);
+  EXPECT_GT(map.style.range.hi, 0.0);
+}

@@ -10,6 +10,10 @@ namespace isurface::app_model {
 
 namespace {
 
+// What is read of each file listed to tell its kind: enough for any header, little enough that
+// a folder of thousands of files lists at once.
+constexpr std::size_t kListingHeadBytes = 4096;
+
 std::string lowerCase(std::string text) {
   std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
   return text;
@@ -50,7 +54,13 @@ FolderListing listFolder(const std::string& folder, FileFilter filter, std::size
     out.error = out.folder + ": " + error.message();
     return out;
   }
-  for (const std::filesystem::directory_entry& entry : it) {
+  // Stepped with an error code: an entry that vanishes or cannot be read ends nothing.
+  for (; it != std::filesystem::directory_iterator(); it.increment(error)) {
+    if (error) {
+      out.error = out.folder + ": " + error.message();
+      break;
+    }
+    const std::filesystem::directory_entry& entry = *it;
     const std::string name = entry.path().filename().string();
     if (name.empty() || name[0] == '.') continue;
     if (out.entries.size() >= limit) {
@@ -65,7 +75,7 @@ FolderListing listFolder(const std::string& folder, FileFilter filter, std::size
     if (!entry.is_regular_file(kindError)) continue;
     std::optional<FileKind> kind;
     try {
-      kind = fileKind(entry.path().string());
+      kind = fileKind(entry.path().string(), kListingHeadBytes);
     } catch (const InputError&) {
       // Neither a program, a dump nor a trace: listed only under "all files".
     }

@@ -26,6 +26,7 @@ vis::QualityMapRequest fitRequest(vis::QualityMapRequest request, const Trajecto
     request.quantity = Quantity::Speed;
   }
   if (!request.channel.empty() && !samples.extraChannel(request.channel)) request.channel.clear();
+  if (request.feedbackSurface && !samples.hasFeedback()) request.feedbackSurface = false;
   return request;
 }
 

@@ -93,7 +93,11 @@ void Inspector::State::simulateAgain() {
 }
 
 void Inspector::State::closeActive() {
-  if (active >= documents.size() || job.running()) return;
+  if (active >= documents.size()) return;
+  if (job.running() || pending) {
+    status = "wait until the running job ends (or cancel it) to close " + documents[active]->name;
+    return;
+  }
   const std::string name = documents[active]->name;
   documents.erase(documents.begin() + static_cast<std::ptrdiff_t>(active));
   measureA.reset();
@@ -258,6 +262,7 @@ void Inspector::open(const std::vector<std::string>& paths) { state_->openFiles(
 
 void Inspector::frame() {
   State& s = *state_;
+  s.escapeTaken = false;
   s.takeJobResult();
   s.startQueuedLoad();
   s.syncHighlight();
@@ -292,6 +297,8 @@ void Inspector::frame() {
   drawExportDialog(s);
   drawHelpWindow(s);
   drawOverwriteQuestion(s);
+  // Esc that nothing on screen used cancels the running job (not while a dialog is up).
+  if (s.job.running() && !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId) && s.takeEscape()) s.job.cancel();
 }
 
 // A job's result is taken, and queued files start loading, by the next frame: until then too.
@@ -348,7 +355,7 @@ const Machine* Inspector::activeMachine() const {
   const Document* doc = state_->activeDocument();
   return doc && doc->samples ? &doc->machine : nullptr;
 }
-void Inspector::showMachineWindow() { state_->machineOpen = state_->machineAppearing = true; }
+void Inspector::showMachineWindow() { state_->openMachineWindow(); }
 void Inspector::simulateAgain() { state_->simulateAgain(); }
 
 const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }

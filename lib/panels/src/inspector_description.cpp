@@ -84,13 +84,14 @@ std::string Inspector::describe() const {
                               {"selection", selection},
                               {"machine", machineJson(s.machine)},
                               {"machine_source", s.machineSource},
+                              {"machine_edited", s.machineOpen ? machineJson(s.machineEdit) : nlohmann::json()},
                               {"measure", measure},
                               {"windows", windows},
                               {"last_saved", s.lastSaved},
                               {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
                               {"status", s.status},
                               {"controls", controls}};
-  return out.dump(1);
+  return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace isurface::panels

@@ -137,6 +137,7 @@ struct Inspector::State {
   bool measuring = false;
   std::optional<Vec3> measureA, measureB;
   bool helpOpen = false;
+  bool escapeTaken = false;  // this frame's Esc was used (a window, measuring): it cancels no job
   // The scale bar last drawn: its length in display units, the unit, its pixels.
   struct ScaleBar {
     double length = 0;
@@ -206,6 +207,15 @@ struct Inspector::State {
   void startRecolour();
   // Simulates the active document's program again with `machine` (a dump it came with is left).
   void simulateAgain();
+  // Opens the machine window with the machine in use; an open one keeps its edits.
+  void openMachineWindow() {
+    if (!machineOpen) machineOpen = machineAppearing = true;
+  }
+  // Esc pressed this frame and not yet used by anything else: it is now.
+  bool takeEscape() {
+    if (escapeTaken || !ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
+    return escapeTaken = true;
+  }
   // Closes the active document; the one after it (or before, at the end) becomes active.
   void closeActive();
   // Writes `content` to `path` (atomically), or asks first when the file exists.

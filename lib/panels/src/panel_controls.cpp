@@ -120,7 +120,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     }
     if (ImGui::BeginMenu("Tools")) {
       if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
-      if (ImGui::MenuItem("Machine...", "M")) s.machineOpen = s.machineAppearing = true;
+      if (ImGui::MenuItem("Machine...", "M")) s.openMachineWindow();
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
       if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
       ImGui::MenuItem("Select region box", "B", &s.boxSelect);
@@ -139,7 +139,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (toolButton("Open", "Open a G-code program or a Biip dump (O)") || shortcut('O')) s.openDialog = true;
   if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
   if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut('M'))
-    s.machineOpen = s.machineAppearing = true;
+    s.openMachineWindow();
   if (toolButton("Iso", "Isometric view (I)") || shortcut('I')) setView(s, vis::ViewDirection::Iso);
   if (toolButton("Top", "Top view (T)") || shortcut('T')) setView(s, vis::ViewDirection::Top);
   if (toolButton("Front", "Front view (F)") || shortcut('F')) setView(s, vis::ViewDirection::Front);
@@ -166,7 +166,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (shortcut('E', true) && s.activeDocument()) s.exportDialog = true;
   if (shortcut('W', true) && s.activeDocument()) s.closeActive();
   if (shortcut('H')) s.helpOpen = !s.helpOpen;
-  if (s.measuring && ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) toggleMeasure(s);
+  if (s.measuring && s.takeEscape()) toggleMeasure(s);
   if (locate) s.locateDialog = true;
   if (simulate) s.simulateAgain();
 }
@@ -235,10 +235,8 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   {
     const Document* doc = s.activeDocument();
     const bool feedback = doc && doc->samples && doc->samples->hasFeedback();
-    if (!feedback && s.settings.feedbackSurface) {
-      s.settings.feedbackSurface = false;
-      recolour = doc && doc->samples;
-    }
+    // The map of such a file was made on the commanded surface (see loadDocument).
+    if (!feedback) s.settings.feedbackSurface = false;
     int surface = s.settings.feedbackSurface ? 1 : 0;
     ImGui::TextUnformatted("surface:");
     ImGui::SameLine();
@@ -308,7 +306,7 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
   if (s.job.running()) {
     ImGui::ProgressBar(static_cast<float>(s.job.progress()), ImVec2(width * 0.3f, 0), s.job.label().c_str());
     ImGui::SameLine();
-    if (ImGui::Button("Cancel") || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) s.job.cancel();
+    if (ImGui::Button("Cancel")) s.job.cancel();
     ImGui::SameLine();
   }
   ImGui::TextUnformatted(s.status.c_str());

@@ -74,7 +74,7 @@ std::string figuresJson(const Document& doc) {
                       {"jerk_p99_mm_s3", f.jerkP99}};
     if (f.hasDeviation) out["figures"]["deviation_p99_um"] = f.deviationP99;
   }
-  return out.dump(2) + "\n";
+  return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
 // Every sample of the lines first..last: time, line, commanded (and feedback) position, and the
@@ -135,7 +135,8 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::InputTextWithHint("##path", "file to write", s.exportPath, sizeof s.exportPath);
   noteControl(s, "export.path");
   std::string problem;
-  if (!doc || !doc->samples || !doc->scene) problem = "nothing to export: open a program or a dump first";
+  if (!doc || !doc->samples) problem = "nothing to export: open a program or a dump first";
+  else if (s.exportKind != 2 && !doc->scene) problem = "no map to export: " + doc->name + " has no surface";
   else if (s.exportKind == 0 && (s.exportWidth < 64 || s.exportHeight < 64 || s.exportWidth > 8192 || s.exportHeight > 8192))
     problem = "the size must be 64 to 8192 pixels each way";
   else if (s.exportKind == 2 && (s.exportFirst < 1 || s.exportLast < s.exportFirst))

@@ -27,7 +27,7 @@ constexpr KeyHelp kKeys[] = {
     {"Ctrl+E", "export the view (PNG), the map's figures (JSON) or samples (CSV)"},
     {"Up / Down, PgUp / PgDn, Home / End", "step through the rows of the G-code pane or the data bar"},
     {"Esc", "cancel the running job, end measuring"},
-    {"F1", "this window"},
+    {"H", "this window"},
     {"Ctrl+Q", "quit"},
     {"mouse", "left drag turns, right drag zooms, middle drag pans, wheel zooms, click picks; rest to see the value"},
 };

@@ -151,7 +151,7 @@ void drawMachineWindow(Inspector::State& s) {
     noteControl(s, "machine.close");
     // Esc closes the window when it has the keyboard and no field is being edited.
     if (close || (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && !ImGui::GetIO().WantTextInput &&
-                  ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)))
+                  s.takeEscape()))
       s.machineOpen = false;
     ImGui::Separator();
     drawLoadAndSave(s);

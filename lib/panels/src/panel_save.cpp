@@ -52,7 +52,7 @@ void drawOverwriteQuestion(Inspector::State& s) {
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel");
   noteControl(s, "replace.no");
-  if (cancel || ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) {
+  if (s.overwriteQuestion && (cancel || s.takeEscape())) {
     s.status = "not saved: " + s.overwriteQuestion->path + " kept";
     s.overwriteQuestion.reset();
     ImGui::CloseCurrentPopup();

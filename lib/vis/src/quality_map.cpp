@@ -133,11 +133,16 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   }
 
   MapStyle& style = map.style;
-  style.colorMap = resolveColorMap(request.colorMap, !request.sampleValues && request.channel.empty() &&
-                                                         isSignedQuantity(request.quantity));
+  const bool signedValues = !request.sampleValues && request.channel.empty() && isSignedQuantity(request.quantity);
+  style.colorMap = resolveColorMap(request.colorMap, signedValues);
   if (request.fixedRange) style.range = *request.fixedRange;
   else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
   else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);
+  // The diverging map "auto" chose has its middle colour at zero: the range is made symmetric.
+  if (!request.fixedRange && request.colorMap == kAutoColorMap && signedValues) {
+    const double reach = std::max(std::fabs(style.range.lo), std::fabs(style.range.hi));
+    if (reach > 0 && std::isfinite(reach)) style.range = ValueRange{-reach, reach};
+  }
   style.quantityLabel = request.sampleValues ? request.valuesLabel : request.channel.empty() ? info.label : request.channel;
   style.unit = request.sampleValues ? request.valuesUnit : request.channel.empty() ? info.unit : channelUnit(request.channel);
   style.view = request.view;

@@ -187,9 +187,16 @@ std::string wrapLines(const std::string& text, std::size_t chars) {
     std::string line = text.substr(lineStart, i - lineStart);
     while (line.size() > chars) {
       std::size_t cut = line.rfind(' ', chars);
-      if (cut == std::string::npos || cut == 0) cut = chars;
+      if (cut != std::string::npos && cut > 0) {
+        out += line.substr(0, cut) + "\n";
+        line = line.substr(cut + 1);
+        continue;
+      }
+      // No blank to break at: cut between characters, not inside one (UTF-8).
+      cut = chars;
+      while (cut > 1 && (static_cast<unsigned char>(line[cut]) & 0xC0) == 0x80) --cut;
       out += line.substr(0, cut) + "\n";
-      line = line.substr(cut == chars ? cut : cut + 1);
+      line = line.substr(cut);
     }
     out += line + (i < text.size() ? "\n" : "");
     lineStart = i + 1;

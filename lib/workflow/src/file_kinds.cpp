@@ -21,7 +21,6 @@ namespace isurface {
 
 namespace {
 
-constexpr std::size_t kHeadBytes = 64 * 1024;  // what is read to decide
 constexpr std::size_t kLinesLooked = 20;
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) {
@@ -52,7 +51,8 @@ std::optional<std::size_t> firstBinaryByte(const std::string& head) {
   return std::nullopt;
 }
 
-std::vector<std::string> firstLines(const std::string& head) {
+// `cut`: the file goes on after the head.
+std::vector<std::string> firstLines(const std::string& head, bool cut) {
   std::vector<std::string> lines;
   std::istringstream in(head);
   for (std::string line; lines.size() < kLinesLooked && std::getline(in, line);) {
@@ -61,7 +61,7 @@ std::vector<std::string> firstLines(const std::string& head) {
     lines.push_back(line);
   }
   // The last line of a head cut short may be cut too.
-  if (head.size() == kHeadBytes && lines.size() > 1) lines.pop_back();
+  if (cut && lines.size() > 1) lines.pop_back();
   return lines;
 }
 
@@ -129,19 +129,21 @@ bool looksLikeGcode(const std::string& line) {
 
 }  // namespace
 
-FileKind fileKind(const std::string& path) {
+FileKind fileKind(const std::string& path, std::size_t headBytes) {
   std::ifstream in(path, std::ios::binary);
   if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
-  std::string head(kHeadBytes, '\0');
+  std::string head(std::max<std::size_t>(headBytes, 4), '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
-  head.resize(static_cast<std::size_t>(in.gcount()));
+  const auto got = static_cast<std::size_t>(in.gcount());
+  const bool cut = got == head.size() && in.peek() != EOF;
+  head.resize(got);
   if (head.size() >= 4 && head.compare(0, 4, "BIIP") == 0) return FileKind::Dump;
   const std::string ext = lowerExtension(path);
   if (ext == ".biip") fail(path, "is not a Biip dump: it does not begin with the bytes 'BIIP'");
   if (const auto at = firstBinaryByte(head))
     fail(path, fmt::format("is neither a G-code program, a Biip dump nor a trace: byte 0x{:02x} at offset {} is not text",
                            static_cast<unsigned char>(head[*at]), *at));
-  const std::vector<std::string> lines = firstLines(head);
+  const std::vector<std::string> lines = firstLines(head, cut);
   if (looksLikeHalsampler(lines)) return FileKind::HalsamplerTrace;
   if (ext == ".csv" || looksLikeCsv(lines)) return FileKind::CsvTrace;
   if (lines.empty() || std::any_of(lines.begin(), lines.end(), looksLikeGcode)) return FileKind::Program;

@@ -228,9 +228,10 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
-  if (groups.has(kGroupUnits) && !unitsStated_) {
+  if (groups.has(kGroupUnits)) {
     unitsStated_ = true;
-    result_.program.inch = state_.inch;
+    if (!unitsRecorded_) result_.program.inch = state_.inch;
+    unitsRecorded_ = true;
   }
   if (groups.has(kGroupPlane)) planeStated_ = true;
   if (groups.has(kGroupDistance)) distanceStated_ = true;

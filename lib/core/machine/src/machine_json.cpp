@@ -33,7 +33,8 @@ const char* planeName(Plane p) { return p == Plane::XY ? "G17" : p == Plane::ZX 
 
 }  // namespace
 
-std::string machineLimitsJson(const Machine& m) { return limitsJson(m).dump(); }
+// A name or a folder that is not UTF-8 is written with replacement characters, not refused.
+std::string machineLimitsJson(const Machine& m) { return limitsJson(m).dump(-1, ' ', false, json::error_handler_t::replace); }
 
 std::string machineDescriptionJson(const Machine& m) {
   json root = limitsJson(m);
@@ -54,7 +55,7 @@ std::string machineDescriptionJson(const Machine& m) {
     for (const auto& [tool, diameter] : m.toolDiameters) diameters[std::to_string(tool)] = diameter;
     root["tools"] = {{"units", "mm"}, {"diameters", diameters}};
   }
-  return root.dump(2) + "\n";
+  return root.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
 }
 
 }  // namespace isurface

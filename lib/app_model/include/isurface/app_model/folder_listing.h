@@ -25,7 +25,7 @@ struct FolderListing {
 };
 
 // Lists `folder`, at most `limit` entries. Hidden entries (a leading '.') are left out.
-FolderListing listFolder(const std::string& folder, FileFilter filter, std::size_t limit = 5000);
+FolderListing listFolder(const std::string& folder, FileFilter filter, std::size_t limit = 2000);
 
 const char* fileFilterName(FileFilter filter);
 

@@ -11,7 +11,8 @@ enum class FileKind { Program, Dump, HalsamplerTrace, CsvTrace };
 
 // Throws InputError naming the file when it cannot be read, is binary but not a dump, or is
 // named as a dump (.biip) without being one.
-FileKind fileKind(const std::string& path);
+// `headBytes`: how much of the start is read to decide (64 KB; less when listing many files).
+FileKind fileKind(const std::string& path, std::size_t headBytes = 64 * 1024);
 
 // "G-code program", "Biip dump", "halsampler trace", "CSV trace".
 const char* fileKindName(FileKind kind);
