@@ -1,8 +1,16 @@
 // What a map says about itself: the colour map chosen for the quantity, the legend's title.
 #include <gtest/gtest.h>
+#include <vtkActor2DCollection.h>
+#include <vtkRenderer.h>
+#include <vtkScalarBarActor.h>
+#include <vtkTextActor.h>
+#include <vtkTextProperty.h>
+
+#include <algorithm>
 
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_map.h"
+#include "isurface/vis/quality_scene.h"
 #include "surface_fixtures.h"
 
 using namespace isurface;
@@ -34,4 +42,55 @@ TEST(mapStyle, TheDivergingMapAutoChoosesIsCentredOnZero) {
   const vis::QualityMap map = vis::buildQualityMap(raster, nullptr, request);
   EXPECT_DOUBLE_EQ(map.style.range.lo, -map.style.range.hi);
   EXPECT_GT(map.style.range.hi, 0.0);
+}
+
+namespace {
+
+vtkTextActor* captionOf(vis::QualityScene& scene) {
+  vtkActor2DCollection* actors = scene.renderer()->GetActors2D();
+  actors->InitTraversal();
+  while (vtkActor2D* a = actors->GetNextActor2D())
+    if (auto* text = vtkTextActor::SafeDownCast(a)) return text;
+  return nullptr;
+}
+
+vtkScalarBarActor* legendOf(vis::QualityScene& scene) {
+  vtkActor2DCollection* actors = scene.renderer()->GetActors2D();
+  actors->InitTraversal();
+  while (vtkActor2D* a = actors->GetNextActor2D())
+    if (auto* legend = vtkScalarBarActor::SafeDownCast(a)) return legend;
+  return nullptr;
+}
+
+}  // namespace
+
+TEST(mapStyle, LegendTitlesGoInLinesOfWordsNotAWordALine) {
+  const Trajectory raster = test::zigZagRaster(12, 40.0, 1.0, 50.0);
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::SpeedInconsistency;
+  const vis::QualityMap map = vis::buildQualityMap(raster, nullptr, request);
+  vis::QualityScene scene(map.data, map.style);
+  ASSERT_NE(legendOf(scene), nullptr);
+  EXPECT_STREQ(legendOf(scene)->GetTitle(), "Speed\ninconsistency\nbetween passes\n[mm/min]");
+}
+
+TEST(mapStyle, TextInANarrowViewIsMadeToFit) {
+  const Trajectory raster = test::zigZagRaster(12, 40.0, 1.0, 50.0);
+  vis::QualityMapRequest request;
+  request.caption = "machine: a machine whose name is rather long for a narrow view";
+  const vis::QualityMap map = vis::buildQualityMap(raster, nullptr, request);
+  vis::QualityScene scene(map.data, map.style);
+  vtkTextActor* caption = captionOf(scene);
+  ASSERT_NE(caption, nullptr);
+  scene.fitTextToWidth(1600);
+  EXPECT_EQ(caption->GetTextProperty()->GetFontSize(), map.style.fontSize);  // room enough: as styled
+  const int wideLegend = legendOf(scene)->GetTitleTextProperty()->GetFontSize();
+  scene.fitTextToWidth(300);
+  EXPECT_LT(caption->GetTextProperty()->GetFontSize(), map.style.fontSize);
+  EXPECT_LT(legendOf(scene)->GetTitleTextProperty()->GetFontSize(), wideLegend);
+  // Each caption line now fits: at most 0.8 of 300 pixels at the font's average advance.
+  const std::string text = caption->GetInput();
+  std::size_t longest = 0, length = 0;
+  for (char c : text) length = c == '\n' ? 0 : length + 1, longest = std::max(longest, length);
+  EXPECT_LE(static_cast<double>(longest) * 0.56 * caption->GetTextProperty()->GetFontSize(), 0.8 * 300 + 1);
 }
