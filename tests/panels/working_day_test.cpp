@@ -341,3 +341,54 @@ TEST(workingDay, EscClosesWhatItIsPressedInAndCancelsNothingElse) {
   EXPECT_FALSE(described(*ui)["windows"]["machine"].get<bool>());
   EXPECT_DOUBLE_EQ(described(*ui)["machine"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
 }
+
+TEST(workingDay, AFixedRangeStartsAsTheRangeShown) {
+  auto ui = openedSample();
+  ui->inspector().colourBy("accel");
+  waitForJobs(*ui);
+  const nlohmann::json shown = described(*ui)["map"];
+  clickControl(*ui, "range.fixed");
+  waitForJobs(*ui);
+  const nlohmann::json colour = described(*ui)["colour"];
+  EXPECT_EQ(colour["range_mode"], 2);
+  // Not 0 .. 3000 whatever the quantity: the acceleration range the map showed (symmetric here).
+  EXPECT_LT(colour["fixed"][0].get<double>(), -100.0);
+  EXPECT_GT(colour["fixed"][1].get<double>(), 100.0);
+  EXPECT_NEAR(colour["fixed"][0].get<double>(), -colour["fixed"][1].get<double>(), 1e-3);
+  EXPECT_EQ(shown["quantity"], "Tangential acceleration");
+}
+
+TEST(workingDay, LocateStartsAtTheSelectionAndSaysWhenARequestIsOutOfRange) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  settle(*ui);
+  const std::size_t sample = *ui->inspector().selection().sample;
+  tapLetter(*ui, 'L', true);
+  nlohmann::json locate = described(*ui)["locate"];
+  EXPECT_EQ(locate["sample"].get<std::size_t>(), sample);
+  EXPECT_EQ(locate["line"], 2000);
+  typeInto(*ui, "locate.sample", "999999999");
+  clickControl(*ui, "locate.goSample");
+  locate = described(*ui)["locate"];
+  EXPECT_NE(locate["message"].get<std::string>().find("out of range"), std::string::npos) << locate.dump();
+  EXPECT_EQ(*ui->inspector().selection().sample, sample);  // nothing else moved
+  typeInto(*ui, "locate.sample", "1234");
+  tap(*ui, ImGuiKey_Enter);
+  EXPECT_EQ(*ui->inspector().selection().sample, 1234u);
+}
+
+TEST(workingDay, ARecentFileClickedOpensThatFile) {
+  app_model::Settings settings;
+  settings.addRecent(test::sourcePath("samples/transition-surface.nc"));
+  panels::HeadlessUi ui(kWidth, kHeight, settings);
+  settle(ui);
+  clickControl(ui, "menu.file");
+  const auto recent = ui.inspector().controlRect("menu.recent");
+  ASSERT_TRUE(recent.has_value());
+  ui.mouse(((*recent)[0] + (*recent)[2]) / 2, ((*recent)[1] + (*recent)[3]) / 2, false);  // the submenu opens on hover
+  settle(ui, 4);
+  clickControl(ui, "recent.0");
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
+  EXPECT_EQ(described(ui)["documents"][0]["program"], test::sourcePath("samples/transition-surface.nc"));
+}

@@ -81,12 +81,18 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   bool simulate = false, locate = false;
   const bool boxSelectWasOn = s.boxSelect;
   if (ImGui::BeginMainMenuBar()) {
-    if (ImGui::BeginMenu("File")) {
+    const bool fileMenu = ImGui::BeginMenu("File");
+    noteControl(s, "menu.file");
+    if (fileMenu) {
       if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.openDialog = true;
-      if (ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty())) {
+      const bool recentMenu = ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty());
+      noteControl(s, "menu.recent");
+      if (recentMenu) {
         std::optional<std::string> chosen;
-        for (const std::string& path : s.persistent.recentFiles)
-          if (ImGui::MenuItem(path.c_str())) chosen = path;
+        for (std::size_t i = 0; i < s.persistent.recentFiles.size(); ++i) {
+          if (ImGui::MenuItem(s.persistent.recentFiles[i].c_str())) chosen = s.persistent.recentFiles[i];
+          noteControl(s, "recent." + std::to_string(i));
+        }
         if (chosen) s.openFile(*chosen);  // after the loop: opening reorders the list
         ImGui::EndMenu();
       }
@@ -267,6 +273,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   ImGui::SameLine();
   const int modeBefore = s.settings.rangeMode;
   recolour |= ImGui::RadioButton("fixed", &s.settings.rangeMode, 2);
+  noteControl(s, "range.fixed");
   if (s.settings.rangeMode == 2 && modeBefore != 2) {
     // A fixed range starts as the range shown, in the quantity's own unit.
     if (const Document* doc = s.activeDocument(); doc && doc->scene) {
@@ -334,10 +341,16 @@ void drawLocateWindow(Inspector::State& s) {
     const Document* doc = s.activeDocument();
     const std::size_t samples = doc && doc->samples ? doc->samples->size() : 0;
     const std::size_t lines = doc && doc->text ? doc->text->count() : 0;
-    bool goSample = ImGui::InputInt("sample", &s.locateSample, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue);
+    // The fields take what is typed as it is typed (a click on Go then goes there); Enter goes too.
+    const int enter = ImGui::GetKeyIndex(ImGuiKey_Enter);
+    ImGui::InputInt("sample", &s.locateSample, 1, 100);
+    bool goSample = ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter);
+    noteControl(s, "locate.sample");
     ImGui::SameLine();
     goSample |= ImGui::Button("Go to sample");
-    bool goLine = ImGui::InputInt("G-code line", &s.locateLine, 1, 100, ImGuiInputTextFlags_EnterReturnsTrue);
+    noteControl(s, "locate.goSample");
+    ImGui::InputInt("G-code line", &s.locateLine, 1, 100);
+    bool goLine = ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter);
     ImGui::SameLine();
     goLine |= ImGui::Button("Go to line");
     if (goSample) {
