@@ -252,6 +252,7 @@ TEST(workingDay, AnInchProgramIsShownInInches) {
   ui.inspector().open(inch.string());
   waitForJobs(ui);
   EXPECT_EQ(described(ui)["length_unit"], "in");
+  EXPECT_EQ(described(ui)["map"]["unit"], "in/min");  // the legend too
   ui.inspector().settings().units = "mm";  // the user's choice stands over the program's
   settle(ui);
   EXPECT_EQ(described(ui)["length_unit"], "mm");

@@ -38,7 +38,7 @@ std::string machineCaption(const Machine& machine, bool known) {
 
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
                                        const vis::QualityMapRequest& request, const Machine& machine,
-                                       app_model::JobControl& control) {
+                                       bool unitsOfProgram, app_model::JobControl& control) {
   auto doc = std::make_unique<Document>();
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
@@ -57,6 +57,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   control.progress(0.55);
   vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
   fitted.caption = machineCaption(doc->machine, doc->machineKnown);
+  if (unitsOfProgram) fitted.inch = doc->program && doc->program->inch;
   // Samples with no surface to map (a drilling program, a trace cut short) still open: their
   // curves and rows are there, and the reason stands beside the file's own warnings.
   try {

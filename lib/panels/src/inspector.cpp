@@ -29,6 +29,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   r.colorMap = settings.colorMap;
   r.view = settings.view;
   r.feedbackSurface = settings.feedbackSurface;
+  r.inch = units().inch;
   if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
   if (settings.rangeMode == 2) r.fixedRange = ValueRange{settings.fixedLow, std::max(settings.fixedHigh, settings.fixedLow)};
   // A coarse surface keeps rotation interactive on large maps; the full one shows at rest.
@@ -37,15 +38,19 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
 }
 
 void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces) {
-  const vis::QualityMapRequest request = mapRequest();
+  vis::QualityMapRequest request = mapRequest();
+  // A new document's own units: as it is written, unless the user chose.
+  request.inch = persistent.units == "inch";
+  const bool unitsOfProgram = persistent.units == "auto";
   auto result = std::make_shared<JobResult>();
   result->replaces = replaces;
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
   const bool programOpen = replaces < documents.size();
-  job.start(label, [result, programPath, dumpPath, request, programOpen, machine = machine](app_model::JobControl& control) {
+  job.start(label, [result, programPath, dumpPath, request, programOpen, unitsOfProgram,
+                    machine = machine](app_model::JobControl& control) {
     try {
-      result->document = loadDocument(programPath, dumpPath, request, machine, control);
+      result->document = loadDocument(programPath, dumpPath, request, machine, unitsOfProgram, control);
     } catch (const DumpMismatchError& e) {
       // Not joined: the program stays (or opens) by itself, and the dump opens as a document
       // of its own, saying why; a dump that cannot stand alone says both.
@@ -53,7 +58,7 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
       if (!programOpen) result->programAlone = programPath;
       result->replaces = ~std::size_t(0);
       try {
-        result->document = loadDocument("", dumpPath, request, machine, control);
+        result->document = loadDocument("", dumpPath, request, machine, unitsOfProgram, control);
       } catch (const InputError& alone) {
         throw InputError(Diagnostic{"", 0, 0, notJoined + "; by itself: " + alone.what()});
       }

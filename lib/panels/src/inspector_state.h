@@ -279,10 +279,11 @@ void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRe
 void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
 // Loads a document on the job's thread.
-// `machine`: what a program without a dump is simulated with.
+// `machine`: what a program without a dump is simulated with. `unitsOfProgram`: the map's
+// values in inches when the program is written in inches (else as `request` says).
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
                                        const vis::QualityMapRequest& request, const Machine& machine,
-                                       app_model::JobControl& control);
+                                       bool unitsOfProgram, app_model::JobControl& control);
 // The first line of a map's caption: the machine its samples were made with.
 std::string machineCaption(const Machine& machine, bool known);
 

@@ -55,6 +55,7 @@ void drawLookMenus(Inspector::State& s) {
     }
     ImGui::EndMenu();
   }
+  const std::string unitsBefore = p.units;
   if (ImGui::BeginMenu("Units")) {
     if (ImGui::MenuItem("as the program is written", nullptr, p.units == "auto")) p.units = "auto";
     if (ImGui::MenuItem("mm", nullptr, p.units == "mm")) p.units = "mm";
@@ -62,6 +63,10 @@ void drawLookMenus(Inspector::State& s) {
     ImGui::EndMenu();
   }
   if (look) applyTheme(p.theme, p.uiScale);
+  if (p.units != unitsBefore) {
+    if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was in the other units
+    if (!s.job.running()) s.startRecolour();                   // the map's legend in the new units
+  }
 }
 
 void setView(Inspector::State& s, vis::ViewDirection view) {

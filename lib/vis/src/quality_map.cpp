@@ -7,6 +7,7 @@
 #include <fmt/format.h>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/units.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/gcode/path_segment.h"
 
@@ -25,6 +26,15 @@ std::string channelUnit(const std::string& channel) {
     if (channel.size() > suffix.size() && channel.compare(channel.size() - suffix.size(), suffix.size(), suffix) == 0)
       return std::strcmp(unit, "um") == 0 ? "\u00b5m" : unit;  // shown as people write it
   }
+  return "";
+}
+
+// The inch unit of a length or a rate of one ("" for any other unit).
+std::string inchUnitOf(const std::string& mmUnit) {
+  if (mmUnit == "mm") return "in";
+  if (mmUnit == "mm/min") return "in/min";
+  if (mmUnit == "mm/s^2") return "in/s^2";
+  if (mmUnit == "mm/s^3") return "in/s^3";
   return "";
 }
 
@@ -133,6 +143,18 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   }
 
   MapStyle& style = map.style;
+  style.quantityLabel = request.sampleValues ? request.valuesLabel : request.channel.empty() ? info.label : request.channel;
+  style.unit = request.sampleValues ? request.valuesUnit : request.channel.empty() ? info.unit : channelUnit(request.channel);
+  if (request.inch && !request.sampleValues && !inchUnitOf(style.unit).empty()) {
+    // Before the range is taken: a fixed range is given in the units shown.
+    const auto toInch = [](std::vector<float>& values) {
+      for (float& v : values) v = static_cast<float>(v / kMmPerInch);
+    };
+    toInch(map.data.scalars);
+    toInch(map.data.coarseScalars);
+    for (std::vector<float>& values : map.data.toolpathScalars) toInch(values);
+    style.unit = inchUnitOf(style.unit);
+  }
   const bool signedValues = !request.sampleValues && request.channel.empty() && isSignedQuantity(request.quantity);
   style.colorMap = resolveColorMap(request.colorMap, signedValues);
   if (request.fixedRange) style.range = *request.fixedRange;
@@ -143,8 +165,6 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
     const double reach = std::max(std::fabs(style.range.lo), std::fabs(style.range.hi));
     if (reach > 0 && std::isfinite(reach)) style.range = ValueRange{-reach, reach};
   }
-  style.quantityLabel = request.sampleValues ? request.valuesLabel : request.channel.empty() ? info.label : request.channel;
-  style.unit = request.sampleValues ? request.valuesUnit : request.channel.empty() ? info.unit : channelUnit(request.channel);
   style.view = request.view;
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;

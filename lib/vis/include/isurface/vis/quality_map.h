@@ -36,6 +36,9 @@ struct QualityMapRequest {
   std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
   std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
   std::string caption;                       // prefix of the caption (e.g. the file name)
+  // Values in mm, mm/min, mm/s^2 or mm/s^3 coloured and labelled in inches (in, in/min, ...);
+  // the geometry stays in mm.
+  bool inch = false;
 };
 
 // Held by pointer so that `data` keeps pointing at them when the map is moved; shared so that
