@@ -57,6 +57,16 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   }
 }
 
+// Whether Dear ImGui last saw a mouse button other than it now is: a press and its release in
+// one batch of events (a quick click while a frame took long) are seen as a press in one
+// frame, and the release needs a frame of its own, with no further input to wake the loop.
+bool mouseFrameDue(GLFWwindow* window) {
+  const ImGuiIO& io = ImGui::GetIO();
+  for (int button = 0; button < 3; ++button)
+    if (io.MouseDown[button] != (glfwGetMouseButton(window, button) == GLFW_PRESS)) return true;
+  return false;
+}
+
 // After a frame: the releases it waited for. Returns whether there were any (another frame is due).
 bool releaseHeldKeys(GLFWwindow* window) {
   pressedSinceFrame.clear();
@@ -170,7 +180,7 @@ int run(int argc, char** argv) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
-      frameDue = releaseHeldKeys(window);
+      frameDue = releaseHeldKeys(window) || mouseFrameDue(window);
       tellState(inspector, toldState);
     }
     glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
