@@ -33,3 +33,20 @@ TEST(uiSnapshot, BadInputsExitWithTwoAndWriteNothing) {
   EXPECT_EQ(runCli("ui-snapshot --size 10x10 -o " + out).exitCode, 2);
   EXPECT_FALSE(fileExists(out));
 }
+
+TEST(uiSnapshot, TheMachineGivenSimulatesAndItsWindowIsDrawn) {
+  const std::string plain = (scratchDir() / "ui-default-machine.png").string();
+  const std::string machine = (scratchDir() / "ui-sim-machine.png").string();
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  const CommandResult a = runCli("ui-snapshot " + program + " --size 1280x800 -o " + plain);
+  ASSERT_EQ(a.exitCode, 0) << a.err;
+  const CommandResult b = runCli("ui-snapshot " + program + " --machine " + sourcePath("resources/machines/linuxcnc-sim.json") +
+                                 " --show-machine --size 1280x800 -o " + machine);
+  ASSERT_EQ(b.exitCode, 0) << b.err;
+  // Another machine, another simulation: the status names another number of samples.
+  EXPECT_NE(a.out, b.out);
+  // The machine window stands in the middle of the picture, over the map.
+  const ImageDifference d = compareImages(readPng(plain), readPng(machine));
+  EXPECT_FALSE(matches(d));
+  EXPECT_NE(runCli("ui-snapshot " + program + " --machine /nonexistent.json -o " + machine).exitCode, 0);
+}
