@@ -1,10 +1,5 @@
 // isurface-cli ui-snapshot: the whole application window (panels and 3D view) drawn through
 // OSMesa with no X server, for tests and documentation.
-#include <vtkImageData.h>
-#include <vtkPNGWriter.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnsignedCharArray.h>
-
 #include <cstdio>
 #include <cstring>
 #include <memory>
@@ -16,6 +11,7 @@
 #include "isurface/base/diagnostic.h"
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/headless_ui.h"
+#include "isurface/vis/offscreen_render.h"
 
 namespace isurface::cli {
 namespace {
@@ -29,23 +25,14 @@ struct SnapshotOptions {
   bool showMachine = false;
 };
 
+// The window's RGBA rows, top row first, as a PNG file.
 void writePng(const std::vector<unsigned char>& rgbaTopFirst, int width, int height, const std::string& path) {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  auto* out = static_cast<unsigned char*>(image->GetScalarPointer());
-  // VTK images hold the bottom row first.
+  std::vector<unsigned char> rgb(static_cast<std::size_t>(width) * height * 3);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x)
-      std::memcpy(&out[3 * (static_cast<std::size_t>(height - 1 - y) * width + x)],
+      std::memcpy(&rgb[3 * (static_cast<std::size_t>(height - 1 - y) * width + x)],
                   &rgbaTopFirst[4 * (static_cast<std::size_t>(y) * width + x)], 3);
-  auto png = vtkSmartPointer<vtkPNGWriter>::New();
-  png->SetInputData(image);
-  png->WriteToMemoryOn();
-  png->Write();
-  vtkUnsignedCharArray* bytes = png->GetResult();
-  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-                                             static_cast<std::size_t>(bytes->GetNumberOfValues())));
+  writeFileAtomically(path, vis::pngOfRgb(rgb.data(), width, height));
 }
 
 int runSnapshot(const SnapshotOptions& o) {

@@ -2,10 +2,6 @@
 // JSON, and the samples of a range of G-code lines as CSV. Each goes through the window's save
 // (a file that exists is replaced only when the user says so).
 #include <imgui.h>
-#include <vtkImageData.h>
-#include <vtkPNGWriter.h>
-#include <vtkSmartPointer.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -16,23 +12,11 @@
 
 #include "inspector_state.h"
 #include "isurface/analysis/quality_figures.h"
+#include "isurface/vis/offscreen_render.h"
 
 namespace isurface::panels {
 
 namespace {
-
-std::string pngOf(const std::vector<unsigned char>& rgbBottomFirst, int width, int height) {
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->SetDimensions(width, height, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  std::memcpy(image->GetScalarPointer(), rgbBottomFirst.data(), rgbBottomFirst.size());
-  auto png = vtkSmartPointer<vtkPNGWriter>::New();
-  png->SetInputData(image);
-  png->WriteToMemoryOn();
-  png->Write();
-  vtkUnsignedCharArray* bytes = png->GetResult();
-  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
-}
 
 // The map's colour values: what its range was taken from.
 nlohmann::json valueFigures(const std::vector<float>& values) {
@@ -149,7 +133,7 @@ void drawExportDialog(Inspector::State& s) {
     if (s.exportKind == 0) {
       const std::vector<unsigned char> rgb = s.view.snapshot(s.exportWidth, s.exportHeight);
       if (rgb.empty()) s.status = "error: the view could not be drawn at that size";
-      else s.save(s.exportPath, pngOf(rgb, s.exportWidth, s.exportHeight), "view image");
+      else s.save(s.exportPath, vis::pngOfRgb(rgb.data(), s.exportWidth, s.exportHeight), "view image");
     } else if (s.exportKind == 1) {
       s.save(s.exportPath, figuresJson(*doc), "map figures");
     } else {

@@ -6,7 +6,10 @@
 #include <vtkUnsignedCharArray.h>
 #include <vtkWindowToImageFilter.h>
 
+#include <vtkImageData.h>
+
 #include <chrono>
+#include <cstring>
 #include <string_view>
 
 #include "isurface/io/atomic_file.h"
@@ -14,6 +17,19 @@
 #include "isurface/vis/osmesa_context.h"
 
 namespace isurface::vis {
+
+std::string pngOfRgb(const unsigned char* rgbBottomFirst, int width, int height) {
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  std::memcpy(image->GetScalarPointer(), rgbBottomFirst, static_cast<std::size_t>(width) * height * 3);
+  auto png = vtkSmartPointer<vtkPNGWriter>::New();
+  png->SetInputData(image);
+  png->WriteToMemoryOn();
+  png->Write();
+  vtkUnsignedCharArray* bytes = png->GetResult();
+  return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
+}
 
 double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int height, const std::string& path) {
   const auto start = std::chrono::steady_clock::now();

@@ -6,6 +6,9 @@ namespace isurface::vis {
 
 class QualityScene;
 
+// A PNG of RGB rows, the bottom row first (as OpenGL and VTK hold images), in memory.
+std::string pngOfRgb(const unsigned char* rgbBottomFirst, int width, int height);
+
 // Writes the PNG through a temporary file renamed into place. Returns the render time in s.
 double renderSceneToPng(QualityScene& scene, int width, int height, const std::string& path);
 
