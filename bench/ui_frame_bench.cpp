@@ -1,10 +1,12 @@
 // Interactivity of the application on this machine's software renderer: whole-window frame
 // times with a 1,000,000-sample surface at rest and while the camera is dragged (the coarse
 // surface shows), and the time from a click on the surface to every panel updated.
+// ISURFACE_BENCH_PROGRAM=FILE measures FILE (G-code, simulated on opening, or a dump) instead.
 #include <benchmark/benchmark.h>
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <memory>
 
@@ -35,7 +37,8 @@ std::string writeRaster() {
 panels::HeadlessUi& app() {
   static std::unique_ptr<panels::HeadlessUi> ui = [] {
     auto made = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
-    made->inspector().open(writeRaster());
+    const char* given = std::getenv("ISURFACE_BENCH_PROGRAM");
+    made->inspector().open(given && *given ? std::string(given) : writeRaster());
     made->inspector().waitUntilIdle();
     std::printf("%s\n", made->inspector().statusText().c_str());
     for (int i = 0; i < 3; ++i) made->frame();

@@ -89,6 +89,30 @@ TEST(quantities, SampleValuesAreTheWholeDerivation) {
   EXPECT_DOUBLE_EQ(sampleQuantity(Quantity::Time, t)[5000], 5.0);
 }
 
+// A view of part of a run (the app's curves) gets exactly the values of the whole derivation,
+// at the run's ends and across the derivation's internal pieces too.
+TEST(quantities, RangeValuesAreTheWholeRunsValues) {
+  Trajectory t = wavyPath(150'000);
+  for (const bool irregular : {false, true}) {
+    if (irregular) {
+      for (std::size_t i = 0; i < t.size(); ++i) t.time[i] += (i % 3 ? 0.0001 : 0.0);
+      t.irregularTime = true;
+    }
+    for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk, Quantity::VelocityZ, Quantity::Line}) {
+      const std::vector<double> whole = sampleQuantity(q, t);
+      const std::pair<std::size_t, std::size_t> ranges[] = {
+          {0, 1}, {0, 7}, {65530, 65542}, {3, 140'003}, {t.size() - 2, t.size()}, {t.size() - 5, t.size() + 10}, {42, 42}};
+      for (const auto& [first, last] : ranges) {
+        std::vector<float> part(last - first, -1.0f);
+        sampleQuantityRange(q, t, first, last, part.data());
+        for (std::size_t i = first; i < std::min(last, t.size()); ++i)
+          ASSERT_EQ(part[i - first], static_cast<float>(whole[i])) << quantityInfo(q).name << " " << i << " irregular " << irregular;
+        for (std::size_t i = std::max(first, t.size()); i < last; ++i) ASSERT_EQ(part[i - first], -1.0f);  // left alone
+      }
+    }
+  }
+}
+
 TEST(quantities, IrregularTimeUsesDividedDifferences) {
   Trajectory t = wavyPath(1000);
   for (std::size_t i = 0; i < t.size(); ++i) t.time[i] += (i % 2 ? 0.0002 : 0.0);

@@ -221,3 +221,41 @@ TEST(signalPyramid, SampleAtColumnClamps) {
   EXPECT_EQ(sampleAtColumn(0, 100, 10, 3), 30u);
   EXPECT_EQ(sampleAtColumn(0, 100, 10, 3.5), 35u);
 }
+
+// A long run's curve reads what a view shows from its source, not the run: a whole-run view of
+// 1,000 columns over 10 M samples reads at most the ends of each column (under two blocks).
+TEST(signalPyramid, ViewsReadOnlyWhatTheyShowFromTheSource) {
+  const std::size_t n = 10'000'000;
+  const auto valueAt = [](std::size_t i) { return static_cast<float>(std::sin(0.001 * double(i)) * 100 + (i % 977 == 0 ? 500 : 0)); };
+  std::size_t read = 0;
+  const SignalPyramid pyramid(n, [&](std::size_t first, std::size_t last, float* out) {
+    read += last - first;
+    for (std::size_t i = first; i < last; ++i) out[i - first] = valueAt(i);
+  });
+  EXPECT_EQ(read, n - n % 64);  // built in one pass
+  read = 0;
+  const Envelope whole = pyramid.envelope(0, n, 1000);
+  EXPECT_LE(read, 1000u * 128);
+  for (int c : {0, 1, 417, 999}) {
+    const auto [begin, end] = bruteColumn(0, n, 1000, c);
+    float low = valueAt(begin), high = low;
+    for (std::size_t i = begin; i < end; ++i) low = std::min(low, valueAt(i)), high = std::max(high, valueAt(i));
+    EXPECT_EQ(whole.low[c], low) << c;
+    EXPECT_EQ(whole.high[c], high) << c;
+  }
+  read = 0;
+  EXPECT_EQ(pyramid.envelope(0, n, 1000).low, whole.low);  // the same view again: nothing read
+  EXPECT_EQ(read, 0u);
+  const Envelope zoomed = pyramid.envelope(5'000'000, 5'003'000, 1000);
+  EXPECT_EQ(read, 3000u);
+  for (int c = 0; c < 1000; ++c) {
+    const auto [begin, end] = bruteColumn(5'000'000, 5'003'000, 1000, c);
+    float low = valueAt(begin), high = low;
+    for (std::size_t i = begin; i < end; ++i) low = std::min(low, valueAt(i)), high = std::max(high, valueAt(i));
+    ASSERT_EQ(zoomed.low[c], low) << c;
+    ASSERT_EQ(zoomed.high[c], high) << c;
+  }
+  EXPECT_EQ(pyramid.value(1234567), valueAt(1234567));
+  EXPECT_EQ(pyramid.values(n - 2, n + 5), (std::vector<float>{valueAt(n - 2), valueAt(n - 1)}));
+  EXPECT_TRUE(std::isnan(pyramid.value(n)));
+}

@@ -10,10 +10,23 @@ namespace isurface::panels {
 
 namespace {
 
-Curve curveOf(Quantity q, const Trajectory& samples) {
+// The curves read their values from the samples as a view needs them (nothing copied per
+// curve but its coarse pyramid).
+Curve curveOf(Quantity q, std::shared_ptr<const Trajectory> samples) {
   const QuantityInfo& info = quantityInfo(q);
-  const std::vector<double> values = sampleQuantity(q, samples);
-  return Curve{info.label, info.unit, app_model::SignalPyramid(std::vector<float>(values.begin(), values.end()))};
+  const std::size_t n = samples->size();
+  return Curve{info.label, info.unit,
+               app_model::SignalPyramid(n, [q, samples](std::size_t first, std::size_t last, float* out) {
+                 sampleQuantityRange(q, *samples, first, last, out);
+               })};
+}
+
+Curve channelCurve(const std::string& name, std::shared_ptr<const Trajectory> samples) {
+  const std::vector<double>* values = samples->extraChannel(name);
+  return Curve{name, "",
+               app_model::SignalPyramid(values->size(), [values, samples](std::size_t first, std::size_t last, float* out) {
+                 for (std::size_t i = first; i < last; ++i) out[i - first] = static_cast<float>((*values)[i]);
+               })};
 }
 
 // A colouring remembered from another file that this one cannot show (a quantity that needs
@@ -68,9 +81,8 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
     doc->warnings.push_back(std::string("no map: ") + e.what());
   }
   control.progress(0.85);
-  for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) doc->curves.push_back(curveOf(q, *doc->samples));
-  for (const auto& [name, values] : doc->samples->extra)
-    doc->curves.push_back(Curve{name, "", app_model::SignalPyramid(std::vector<float>(values.begin(), values.end()))});
+  for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) doc->curves.push_back(curveOf(q, doc->samples));
+  for (const auto& channel : doc->samples->extra) doc->curves.push_back(channelCurve(channel.first, doc->samples));
   control.progress(1.0);
   return doc;
 }

@@ -39,6 +39,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
 
 void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces) {
   vis::QualityMapRequest request = mapRequest();
+  request.pickable = true;
   // A new document's own units: as it is written, unless the user chose.
   request.inch = persistent.units == "inch";
   const bool unitsOfProgram = persistent.units == "auto";
@@ -72,6 +73,7 @@ void Inspector::State::startRecolour() {
   Document* doc = activeDocument();
   if (!doc || !doc->samples) return;
   vis::QualityMapRequest request = mapRequest();
+  request.pickable = true;
   request.caption = machineCaption(doc->machine, doc->machineKnown);
   auto result = std::make_shared<JobResult>();
   pending = result;
@@ -175,7 +177,7 @@ void Inspector::State::takeJobResult() {
     if (!doc) return;
     doc->map = std::move(result->map);
     doc->scene = result->scene;
-    view.setScene(doc->scene);
+    view.setScene(doc->scene, doc->map.rayIndex);
     doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
     shownGeneration = ~std::uint64_t(0);
     status = doc->name + ": coloured by " +
@@ -191,7 +193,7 @@ void Inspector::State::activate(std::size_t index) {
   Document* doc = activeDocument();
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();
-  view.setScene(doc ? doc->scene : nullptr);
+  view.setScene(doc ? doc->scene : nullptr, doc ? doc->map.rayIndex : nullptr);
   if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
   view.invalidate();
   curveFirst = 0;

@@ -61,6 +61,8 @@ std::string figuresJson(const Document& doc) {
   return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
+constexpr std::size_t kCsvRun = 65536;
+
 // Every sample of the lines first..last: time, line, commanded (and feedback) position, and the
 // curves (speed, acceleration, jerk, extra channels).
 std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t last, std::size_t& rows) {
@@ -71,14 +73,23 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
   for (const Curve& c : doc.curves) out += "," + c.label + (c.unit.empty() ? "" : " [" + c.unit + "]");
   out += "\n";
   rows = 0;
+  // The curves' values are read a run of consecutive samples at a time.
+  std::vector<std::vector<float>> curveValues(doc.curves.size());
+  std::size_t runFirst = 0, runLast = 0;
   for (std::size_t k = 0; k < t.size(); ++k) {
     if (t.line[k] < first || t.line[k] > last) continue;
+    if (k >= runLast) {
+      runFirst = k;
+      runLast = k;
+      while (runLast < t.size() && runLast - runFirst < kCsvRun && t.line[runLast] >= first && t.line[runLast] <= last) ++runLast;
+      for (std::size_t c = 0; c < doc.curves.size(); ++c) curveValues[c] = doc.curves[c].values.values(runFirst, runLast);
+    }
     out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.time[k], t.line[k], t.x[k], t.y[k], t.z[k]);
     if (feedback) {
       const Vec3 f = t.feedback(k);
       out += fmt::format(",{:.6f},{:.6f},{:.6f}", f.x(), f.y(), f.z());
     }
-    for (const Curve& c : doc.curves) out += fmt::format(",{:.6g}", c.values.value(k));
+    for (const std::vector<float>& values : curveValues) out += fmt::format(",{:.6g}", values[k - runFirst]);
     out += "\n";
     ++rows;
   }

@@ -107,7 +107,7 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
   }
   if (++s.hoverRestFrames == kHoverRestFrames) {
     s.hoverSample.reset();
-    if (const auto point = s.view.pick(mx, my)) s.hoverSample = nearestSample(*doc->samples, *point);
+    if (const auto hit = s.view.pick(mx, my)) s.hoverSample = sampleAtHit(*doc->samples, *doc->map.mesh, *hit);
   }
   if (!s.hoverSample || *s.hoverSample >= doc->samples->size()) return;
   const std::size_t k = *s.hoverSample;
@@ -218,9 +218,10 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       // A click that did not drag picks the surface: the nearest sample becomes the selection,
       // or, while measuring, the point is an end of the distance.
       if (button == 0 && moved < 3 && !s.rectangleZoom) {
-        if (const auto point = s.view.pick(mx, my)) {
-          if (s.measuring) measurePick(s, *point);
-          else s.selection.selectNearest(*point);
+        if (const auto hit = s.view.pick(mx, my)) {
+          Document* doc = s.activeDocument();
+          if (s.measuring) measurePick(s, hit->point);
+          else if (doc && doc->samples && doc->map.mesh) s.selection.selectSample(sampleAtHit(*doc->samples, *doc->map.mesh, *hit));
         }
       }
       s.pressedInView = false;

@@ -2,7 +2,6 @@
 
 #include <vtkCallbackCommand.h>
 #include <vtkCamera.h>
-#include <vtkCellPicker.h>
 #include <vtkGenericOpenGLRenderWindow.h>
 #include <vtkGenericRenderWindowInteractor.h>
 #include <vtkInteractorStyleTrackballCamera.h>
@@ -12,7 +11,6 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 #include <vtkRendererCollection.h>
-#include <vtkStaticCellLocator.h>
 #include <vtkTextureObject.h>
 #include <vtk_glew.h>
 
@@ -30,8 +28,6 @@ struct SceneView::Impl {
   vtkSmartPointer<vtkGenericRenderWindowInteractor> interactor =
       vtkSmartPointer<vtkGenericRenderWindowInteractor>::New();
   vtkSmartPointer<vtkInteractorStyleTrackballCamera> style = vtkSmartPointer<vtkInteractorStyleTrackballCamera>::New();
-  vtkSmartPointer<vtkCellPicker> picker = vtkSmartPointer<vtkCellPicker>::New();
-  vtkSmartPointer<vtkStaticCellLocator> locator;
   vtkRenderer* attached = nullptr;
   int width = 0, height = 0;
   bool initialized = false;
@@ -62,7 +58,6 @@ SceneView::SceneView(GlHooks hooks) : impl_(std::make_unique<Impl>()) {
   impl_->interactor->SetRenderWindow(window);
   impl_->interactor->EnableRenderOff();  // the host renders once a frame
   impl_->interactor->SetInteractorStyle(impl_->style);
-  impl_->picker->SetTolerance(0.0005);
 }
 
 SceneView::~SceneView() {
@@ -73,24 +68,18 @@ SceneView::~SceneView() {
   }
 }
 
-void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene) {
+void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene, std::shared_ptr<const SurfaceRayIndex> picking) {
   vtkGenericOpenGLRenderWindow* window = impl_->window;
   window->GetRenderers()->RemoveAllItems();
   impl_->attached = nullptr;
-  impl_->locator = nullptr;
   scene_ = std::move(scene);
+  picking_ = scene_ ? std::move(picking) : nullptr;
   invalidated_ = true;
   if (!scene_) return;
   if (impl_->width > 0) scene_->fitTextToWidth(impl_->width);
   scene_->attachTo(window);
   impl_->attached = scene_->renderer();
   impl_->interactor->GetInteractorStyle()->SetDefaultRenderer(scene_->renderer());
-  // A static cell locator makes a pick on a million triangles take well under a millisecond.
-  impl_->locator = vtkSmartPointer<vtkStaticCellLocator>::New();
-  impl_->locator->SetDataSet(scene_->surface());
-  impl_->locator->BuildLocator();
-  impl_->picker->InitializePickList();
-  impl_->picker->AddLocator(impl_->locator);
 }
 
 namespace {
@@ -303,13 +292,20 @@ void SceneView::zoomToRectangle(double x0, double y0, double x1, double y1) {
   camera->Zoom(std::min(impl_->width / w, impl_->height / h));
 }
 
-std::optional<Vec3> SceneView::pick(double x, double y) {
-  if (!scene_ || impl_->height <= 0) return std::nullopt;
-  if (!impl_->picker->Pick(x, impl_->height - y, 0, scene_->renderer())) return std::nullopt;
-  if (impl_->picker->GetCellId() < 0) return std::nullopt;
-  double p[3];
-  impl_->picker->GetPickPosition(p);
-  return Vec3(p[0], p[1], p[2]);
+std::optional<SurfaceHit> SceneView::pick(double x, double y) const {
+  if (!scene_ || !picking_ || impl_->height <= 0 || impl_->width <= 0) return std::nullopt;
+  // The pixel's ray: from the near clipping plane through the far one.
+  vtkRenderer* renderer = scene_->renderer();
+  Vec3 ends[2];
+  for (int k = 0; k < 2; ++k) {
+    renderer->SetDisplayPoint(x, impl_->height - y, k);
+    renderer->DisplayToWorld();
+    double w[4];
+    renderer->GetWorldPoint(w);
+    if (w[3] == 0) return std::nullopt;
+    ends[k] = Vec3(w[0], w[1], w[2]) / w[3];
+  }
+  return picking_->firstHit(ends[0], ends[1]);
 }
 
 }  // namespace isurface::panels

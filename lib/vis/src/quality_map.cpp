@@ -112,6 +112,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();
   map.data.scalars = scalarsFor(request, samples, *map.mesh);
+  if (request.pickable) map.rayIndex = std::make_shared<SurfaceRayIndex>(map.data.positions, map.mesh);
   if (request.coarseVertices > 0 && cutting > 2 * request.coarseVertices) {
     meshOptions.stride = (cutting + request.coarseVertices - 1) / request.coarseVertices;
     map.coarseMesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));

@@ -8,7 +8,6 @@
 #include <vtkCaptionActor2D.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
-#include <vtkIdTypeArray.h>
 #include <vtkLookupTable.h>
 #include <vtkPointData.h>
 #include <vtkPoints.h>
@@ -21,6 +20,7 @@
 #include <vtkShaderProperty.h>
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
+#include <vtkTypeInt32Array.h>
 #include <vtkUniforms.h>
 
 #include <algorithm>
@@ -52,17 +52,18 @@ vtkSmartPointer<vtkPolyData> surfacePolyData(const std::vector<Vec3>& positions,
   points->SetNumberOfPoints(static_cast<vtkIdType>(positions.size()));
   for (std::size_t i = 0; i < positions.size(); ++i)
     points->SetPoint(static_cast<vtkIdType>(i), positions[i].x(), positions[i].y(), positions[i].z());
-  // Fill the cell array's offsets and connectivity directly: no per-triangle insertion calls.
-  auto offsets = vtkSmartPointer<vtkIdTypeArray>::New();
-  auto connectivity = vtkSmartPointer<vtkIdTypeArray>::New();
+  // Fill the cell array's offsets and connectivity directly: no per-triangle insertion calls,
+  // and 32-bit ids (half the memory of vtkIdType; a mesh has under 2^31 vertices).
+  auto offsets = vtkSmartPointer<vtkTypeInt32Array>::New();
+  auto connectivity = vtkSmartPointer<vtkTypeInt32Array>::New();
   const vtkIdType triangles = static_cast<vtkIdType>(mesh.triangles.size());
   offsets->SetNumberOfValues(triangles + 1);
   connectivity->SetNumberOfValues(3 * triangles);
   for (vtkIdType t = 0; t < triangles; ++t) {
-    offsets->SetValue(t, 3 * t);
-    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * t + k, mesh.triangles[t][k]);
+    offsets->SetValue(t, static_cast<std::int32_t>(3 * t));
+    for (int k = 0; k < 3; ++k) connectivity->SetValue(3 * t + k, static_cast<std::int32_t>(mesh.triangles[t][k]));
   }
-  offsets->SetValue(triangles, 3 * triangles);
+  offsets->SetValue(triangles, static_cast<std::int32_t>(3 * triangles));
   auto cells = vtkSmartPointer<vtkCellArray>::New();
   cells->SetData(offsets, connectivity);
   auto poly = vtkSmartPointer<vtkPolyData>::New();

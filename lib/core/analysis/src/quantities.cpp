@@ -245,6 +245,21 @@ std::optional<Quantity> parseQuantity(const std::string& name) {
   return std::nullopt;
 }
 
+void sampleQuantityRange(Quantity q, const Trajectory& samples, std::size_t first, std::size_t last, float* out) {
+  checkSampleQuantity(q, samples);
+  last = std::min(last, samples.size());
+  if (first >= last) return;
+  if (!isKinematic(q) || storedChannel(q, samples)) {
+    for (std::size_t i = first; i < last; ++i) out[i - first] = static_cast<float>(plainValue(q, samples, i));
+    return;
+  }
+  for (std::size_t from = first; from < last; from += kKinematicsChunk) {
+    deriveRange(samples, q, from, std::min(last, from + kKinematicsChunk), [&](std::size_t i, const Kinematics& k, std::size_t local) {
+      out[i - first] = static_cast<float>(kinematicValue(q, k, local));
+    });
+  }
+}
+
 std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples) {
   checkSampleQuantity(q, samples);
   const std::size_t n = samples.size();

@@ -10,6 +10,7 @@
 
 #include "isurface/base/geometry.h"
 #include "isurface/app_model/box_selection.h"
+#include "isurface/surface/surface_ray_index.h"
 
 namespace isurface::vis {
 class QualityScene;
@@ -28,7 +29,8 @@ class SceneView {
   explicit SceneView(GlHooks hooks);
   ~SceneView();
 
-  void setScene(std::shared_ptr<vis::QualityScene> scene);  // null: nothing to show
+  // null: nothing to show. `picking` indexes the scene's surface for pick() (none: no picks).
+  void setScene(std::shared_ptr<vis::QualityScene> scene, std::shared_ptr<const SurfaceRayIndex> picking = nullptr);
   vis::QualityScene* scene() const { return scene_.get(); }
   void setView(vis::ViewDirection view);
   // Looks at its scene the way another view looks at its own.
@@ -60,8 +62,8 @@ class SceneView {
   bool interacting() const { return dragging_; }
   // Zooms to a rectangle given in view pixels.
   void zoomToRectangle(double x0, double y0, double x1, double y1);
-  // The surface point under a pixel, if any (mm).
-  std::optional<Vec3> pick(double x, double y);
+  // The surface under a pixel, if any: the point (mm) and the triangle of the picking index.
+  std::optional<SurfaceHit> pick(double x, double y) const;
 
  private:
   void fitToSurface();
@@ -69,6 +71,7 @@ class SceneView {
   struct Impl;
   std::unique_ptr<Impl> impl_;
   std::shared_ptr<vis::QualityScene> scene_;
+  std::shared_ptr<const SurfaceRayIndex> picking_;
   bool pressed_ = false, dragging_ = false;
   double pressX_ = 0, pressY_ = 0;
   bool invalidated_ = true;

@@ -10,6 +10,7 @@
 #include "isurface/gcode/program.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/base/trajectory.h"
+#include "isurface/surface/surface_ray_index.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::vis {
@@ -35,6 +36,7 @@ struct QualityMapRequest {
   PathPattern pattern = PathPattern::Auto;   // how the samples split into passes
   std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
   std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
+  bool pickable = false;                     // also index the surface for picking (QualityMap::rayIndex)
   std::string caption;                       // prefix of the caption (e.g. the file name)
   // Values in mm, mm/min, mm/s^2 or mm/s^3 coloured and labelled in inches (in, in/min, ...);
   // the geometry stays in mm.
@@ -45,6 +47,7 @@ struct QualityMapRequest {
 // picking and region optimisation use the surface the map shows.
 struct QualityMap {
   std::shared_ptr<const SurfaceMesh> mesh, coarseMesh;
+  std::shared_ptr<const SurfaceRayIndex> rayIndex;  // of `mesh`, when the request was pickable
   PassSet passes;
   SurfaceData data;
   MapStyle style;
