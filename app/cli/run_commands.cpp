@@ -1,10 +1,14 @@
 // Parsing a command line against a list of commands and running the one it names.
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <map>
 
 #include "command.h"
 #include "inputs.h"
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/input_files.h"
+#include "isurface/io/output_transaction.h"
 
 namespace isurface::cli {
 
@@ -23,9 +27,23 @@ int runCommands(int argc, char** argv, const std::vector<Command>& commands) {
     const int code = app.exit(e);
     return code == 0 ? kExitOk : kExitInputError;
   }
+  // A command's files appear all together once it has run, or none of them; no output may
+  // replace one of its inputs.
+  protectInputFiles(true);
   try {
-    for (auto& [sub, run] : runners)
-      if (sub->parsed()) return run();
+    OutputTransaction outputs;
+    for (auto& [sub, run] : runners) {
+      if (!sub->parsed()) continue;
+      const int code = run();
+      // What went to standard output (JSON, a listing) is an output too: on a full disk or a
+      // closed pipe it is cut short, and the command has failed.
+      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
+        std::fprintf(stderr, "error: cannot write standard output: %s\n", std::strerror(errno));
+        return kExitFailure;
+      }
+      outputs.publish();
+      return code;
+    }
   } catch (const CommandExit& e) {
     return e.code;
   } catch (const isurface::InputError& e) {

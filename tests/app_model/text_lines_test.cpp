@@ -40,12 +40,23 @@ TEST(textLines, CarriageReturnLineFeedEndingsAreStripped) {
   EXPECT_EQ(text.line(4), "M30");
 }
 
-TEST(textLines, MixedEndingsKeepInnerCarriageReturns) {
+// A carriage return alone ends a line, as the interpreter reads it: the pane's line numbers
+// are the moves' line numbers.
+TEST(textLines, MixedEndingsEndLinesAtLoneCarriageReturns) {
   const TextLines text(writeScratch("mixed.nc", "a\r\nb\nc\rd\r\n"));
-  ASSERT_EQ(text.count(), 3u);
+  ASSERT_EQ(text.count(), 4u);
   EXPECT_EQ(text.line(1), "a");
   EXPECT_EQ(text.line(2), "b");
-  EXPECT_EQ(text.line(3), "c\rd");
+  EXPECT_EQ(text.line(3), "c");
+  EXPECT_EQ(text.line(4), "d");
+}
+
+TEST(textLines, CarriageReturnOnlyEndings) {
+  const TextLines text(writeScratch("mac.nc", "G1 X10 F100\rY20\rM30"));
+  ASSERT_EQ(text.count(), 3u);
+  EXPECT_EQ(text.line(1), "G1 X10 F100");
+  EXPECT_EQ(text.line(2), "Y20");
+  EXPECT_EQ(text.line(3), "M30");
 }
 
 TEST(textLines, LastLineWithoutNewline) {

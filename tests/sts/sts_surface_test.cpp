@@ -79,3 +79,22 @@ TEST(stsSurface, FactoryNames) {
   EXPECT_EQ(makeStsSurface("sinusoid")->name(), "sinusoid");
   EXPECT_EQ(makeStsSurface("sin(x)*y")->name(), "sin(x)*y");
 }
+
+TEST(stsSurface, AnAssignmentIsNotASurface) {
+  // muParser reads "x=1" as setting x: every height would be 1, a flat surface without a word.
+  for (const std::string bad : {"x=1", "y = x*2", "x+=1", "z=sin(x)"}) {
+    try {
+      makeStsSurface(bad);
+      ADD_FAILURE() << bad << " was taken for a surface";
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("'='"), std::string::npos) << e.what();
+    }
+  }
+  for (const std::string good : {"x==1", "x<=1 ? 0 : 1", "(x>=0) * 0.1", "x!=0"}) EXPECT_NO_THROW(makeStsSurface(good)) << good;
+}
+
+TEST(stsSurface, DeepNestingIsRefusedUpFront) {
+  const std::string deep = std::string(5000, '(') + "x" + std::string(5000, ')');
+  EXPECT_THROW(makeStsSurface(deep), InputError);
+  EXPECT_THROW(makeStsSurface("x+" + std::string(20000, '1')), InputError);
+}

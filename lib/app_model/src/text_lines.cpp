@@ -11,8 +11,11 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/shrink_guard.h"
+#include "isurface/gcode/line_ends.h"
 
 namespace isurface::app_model {
 
@@ -28,6 +31,14 @@ template <class Offset>
 void indexLineStarts(const char* data, std::size_t size, std::vector<Offset>& starts) {
   if (size == 0) return;
   starts.push_back(0);
+  if (hasLoneCarriageReturn(std::string_view(data, size))) {
+    // Lines end at LF, CR LF or CR alone, as the interpreter reads them.
+    for (std::size_t i = 0; i < size; ++i)
+      if (data[i] == '\n' || (data[i] == '\r' && (i + 1 == size || data[i + 1] != '\n')))
+        starts.push_back(static_cast<Offset>(i + 1));
+    if (data[size - 1] != '\n' && data[size - 1] != '\r') starts.push_back(static_cast<Offset>(size + 1));
+    return;
+  }
   const char* cursor = data;
   const char* const end = data + size;
   while (cursor < end) {
@@ -50,11 +61,14 @@ struct TextLines::Impl {
   bool wideOffsets = false;
   std::vector<std::uint32_t> starts32;
   std::vector<std::uint64_t> starts64;
+  // The pane shows zeros, not a crash, where another program cut the file short.
+  std::unique_ptr<ShrinkGuard> guard;
 
   std::size_t sentinelCount() const { return wideOffsets ? starts64.size() : starts32.size(); }
   std::uint64_t start(std::size_t i) const { return wideOffsets ? starts64[i] : starts32[i]; }
 
   ~Impl() {
+    guard.reset();
     if (data) munmap(const_cast<char*>(data), size);
   }
 };
@@ -82,6 +96,7 @@ TextLines::TextLines(const std::string& path) : impl_(std::make_unique<Impl>()) 
     }
     impl_->data = static_cast<const char*>(mapped);
     impl_->size = size;
+    impl_->guard = std::make_unique<ShrinkGuard>(mapped, size);
   }
   ::close(fd);  // the mapping keeps the file's pages reachable
 

@@ -15,6 +15,8 @@
 #include <functional>
 
 #include "interpreter_state.h"
+#include "isurface/base/shrink_guard.h"
+#include "isurface/base/input_files.h"
 
 namespace isurface {
 namespace gcode {
@@ -379,6 +381,7 @@ std::string withFileText(const std::string& path, bool readAhead,
                          const std::function<void(std::string_view, bool)>& use) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return fmt::format("cannot open: {}", std::strerror(errno));
+  noteInputFile(fd);
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int e = errno;
@@ -405,7 +408,17 @@ std::string withFileText(const std::string& path, bool readAhead,
         std::size_t size;
         ~Unmap() { ::munmap(map, size); }
       } unmap{map, size};
-      use(std::string_view(static_cast<const char*>(map), size), true);
+      const ShrinkGuard guard(map, size);
+      const auto cutShort = [&] {
+        return fmt::format("the file was cut short while it was read (it had {} bytes when opened)", size);
+      };
+      try {
+        use(std::string_view(static_cast<const char*>(map), size), true);
+      } catch (...) {
+        if (guard.shrank()) return cutShort();
+        throw;
+      }
+      if (guard.shrank()) return cutShort();
       return {};
     }
   }

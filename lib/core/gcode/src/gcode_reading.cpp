@@ -9,6 +9,7 @@
 #include <cstring>
 
 #include "interpreter_state.h"
+#include "isurface/gcode/line_ends.h"
 
 namespace isurface::gcode {
 
@@ -63,6 +64,11 @@ void InterpreterState::deliverMoves(bool all) {
 }
 
 void InterpreterState::run(std::string_view text) {
+  if (hasLoneCarriageReturn(text)) {
+    lineFedText_ = withLineFeeds(text);
+    text = lineFedText_;
+    released_ = nullptr;  // the copy is read, not the mapping
+  }
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   if (sink_) {

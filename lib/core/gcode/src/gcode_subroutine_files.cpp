@@ -11,6 +11,8 @@
 #include <sstream>
 
 #include "interpreter_state.h"
+#include "isurface/gcode/line_ends.h"
+#include "isurface/base/input_files.h"
 
 namespace isurface::gcode {
 
@@ -39,12 +41,14 @@ std::optional<LinePosition> InterpreterState::findSubroutineFile(const std::stri
       for (const SubroutineFile& loaded : files_)
         if (loaded.path == path.string()) return LinePosition{loaded.text.data(), 1};
       std::ifstream in(path, std::ios::binary);
+      noteInputFile(path.string());
       if (!in) continue;
       std::ostringstream text;
       text << in.rdbuf();
       SubroutineFile& file = files_.emplace_back();
       file.path = path.string();
       file.text = text.str();
+      if (hasLoneCarriageReturn(file.text)) file.text = withLineFeeds(file.text);
       const std::size_t bom = file.text.compare(0, 3, "\xEF\xBB\xBF") == 0 ? 3 : 0;
       return LinePosition{file.text.data() + bom, 1};
     }

@@ -213,6 +213,7 @@ class InterpreterState {
     const char* end = nullptr;
   };
   TextSpan mainText_;
+  std::string lineFedText_;  // the main text, when its lines end in lone carriage returns
   std::deque<SubroutineFile> files_;
   const SubroutineFile* reading_ = nullptr;  // null: the main text
   const char* textEnd_ = nullptr;            // the end of the text being read

@@ -14,6 +14,9 @@
 #include <thread>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/base/input_files.h"
+#include "isurface/io/output_transaction.h"
+#include "temporary_files.h"
 
 namespace isurface {
 
@@ -68,6 +71,24 @@ std::string folderOf(const std::string& path) {
   if (slash == 0) return "/";
   return path.substr(0, slash);
 }
+
+std::string baseNameOf(const std::string& path) {
+  const auto slash = path.find_last_of('/');
+  return slash == std::string::npos ? path : path.substr(slash + 1);
+}
+
+// A temporary name beside `destination`: its own name and a suffix, or a short hidden name
+// when a legal long name would pass the file system's limit with the suffix.
+std::string temporaryPattern(const std::string& destination) {
+  constexpr std::size_t kSuffix = 10;  // ".tmpXXXXXX"
+  const long longest = ::pathconf(folderOf(destination).c_str(), _PC_NAME_MAX);
+  const std::size_t limit = longest > 0 ? static_cast<std::size_t>(longest) : 255;
+  if (baseNameOf(destination).size() + kSuffix <= limit) return destination + ".tmpXXXXXX";
+  const std::string folder = folderOf(destination);
+  return (folder == "/" ? "" : folder) + "/.isurface-tmpXXXXXX";
+}
+
+constexpr const char* kInputMessage = "cannot write: it is an input of this command (give another output name)";
 
 // Past this many bytes written since the last request, the file is synced in the background.
 constexpr std::uint64_t kBackgroundSyncBytes = std::uint64_t{8} << 20;
@@ -151,6 +172,7 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
   struct stat st {};
   if (::stat(target_.c_str(), &st) == 0) {
     if (S_ISDIR(st.st_mode)) fail(EISDIR);
+    if (isProtectedInputFile(target_)) throw InputError(Diagnostic{target_, 0, 0, kInputMessage});
     if (!S_ISREG(st.st_mode)) {
       // A device, pipe or socket: it cannot be replaced, so write it in place.
       direct_ = true;
@@ -172,10 +194,11 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
     }
   }
   if (!direct_) {
-    std::string pattern = destination + ".tmpXXXXXX";
+    std::string pattern = temporaryPattern(destination);
     fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
     if (fd_ < 0) fail(errno, "cannot create a temporary file in '" + folderOf(destination) + "'");
     temp_ = pattern;
+    signalSlot_ = detail::rememberTemporary(temp_.c_str());
     if (::fchmod(fd_, mode) != 0) fail(errno);
     destination_ = destination;
   }
@@ -190,10 +213,10 @@ void AtomicOutputFile::discard() noexcept {
     ::close(fd_);
     fd_ = -1;
   }
-  if (!direct_ && !committed_ && !temp_.empty()) {
-    ::unlink(temp_.c_str());
-    temp_.clear();
-  }
+  if (!direct_ && !committed_ && !temp_.empty()) ::unlink(temp_.c_str());
+  detail::forgetTemporary(signalSlot_);
+  signalSlot_ = -1;
+  if (!direct_ && !committed_) temp_.clear();
 }
 
 void AtomicOutputFile::fail(int error, const std::string& context) {
@@ -261,7 +284,20 @@ void AtomicOutputFile::commit() {
   fd_ = -1;
   if (::close(fd) != 0 && errno != EINTR) fail(errno);
   if (!direct_) {
+    if (isProtectedInputFile(destination_)) {
+      discard();
+      throw InputError(Diagnostic{target_, 0, 0, kInputMessage});
+    }
+    if (detail::deferRename(temp_, destination_, target_)) {
+      detail::forgetTemporary(signalSlot_);  // the transaction removes it now
+      signalSlot_ = -1;
+      committed_ = true;
+      temp_.clear();
+      return;
+    }
     if (::rename(temp_.c_str(), destination_.c_str()) != 0) fail(errno);
+    detail::forgetTemporary(signalSlot_);
+    signalSlot_ = -1;
     committed_ = true;
     temp_.clear();
     // Make the rename itself durable; a failure here loses nothing already visible.

@@ -12,6 +12,7 @@
 #include <unordered_set>
 
 #include "isurface/io/biip.h"
+#include "isurface/base/input_files.h"
 #include "isurface/base/diagnostic.h"
 
 namespace isurface {
@@ -69,6 +70,7 @@ BiipReader::BiipReader(const std::string& path) : path_(path) {
 BiipReader::~BiipReader() { unmap(); }
 
 void BiipReader::unmap() noexcept {
+  guard_.reset();
   if (data_ != nullptr && size_ > 0) ::munmap(const_cast<unsigned char*>(data_), size_);
   data_ = nullptr;
 }
@@ -83,11 +85,19 @@ void BiipReader::parse() {
   parseChannelTable(channelCount);
   parseMetadata(kBiipFixedHeaderBytes + std::size_t(kBiipChannelEntryBytes) * channelCount, metadataBytes);
   countRecords();
+  checkIntact();
+}
+
+void BiipReader::checkIntact() const {
+  if (guard_ && guard_->shrank())
+    refuse("the file was cut short while it was read (it had " + std::to_string(size_) +
+           " bytes when opened): another program changed it");
 }
 
 void BiipReader::mapFile() {
   const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) refuse("cannot read: " + std::error_code(errno, std::generic_category()).message());
+  noteInputFile(fd);
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int error = errno;
@@ -109,6 +119,7 @@ void BiipReader::mapFile() {
   if (map == MAP_FAILED) refuse("cannot map: " + std::error_code(mapError, std::generic_category()).message());
   data_ = static_cast<const unsigned char*>(map);
   size_ = size;
+  guard_ = std::make_unique<ShrinkGuard>(map, size);
   ::madvise(map, size, MADV_SEQUENTIAL);
 }
 

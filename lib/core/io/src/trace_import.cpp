@@ -1,4 +1,5 @@
 #include "isurface/io/trace_import.h"
+#include "isurface/base/input_files.h"
 
 #include <fast_float/fast_float.h>
 
@@ -206,6 +207,7 @@ class TrajectoryBuilder {
 
 std::ifstream openTrace(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
+  noteInputFile(path);
   if (!in) fail(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
   return in;
 }

@@ -104,6 +104,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
       nextReport += kProgressRecords;
     }
   }
+  reader.checkIntact();
   if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
   if (progress) progress(1.0);
   return out;

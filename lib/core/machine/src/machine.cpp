@@ -1,8 +1,13 @@
 #include "isurface/machine/machine.h"
+#include "isurface/base/input_files.h"
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
+#include <vector>
 #include <filesystem>
 #include <fstream>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
@@ -47,6 +52,46 @@ Vec3 position(const json& object, const char* key, const Vec3& fallback, const s
   return p;
 }
 
+// Edits (insertions, deletions, substitutions) that turn a into b.
+std::size_t editDistance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t above = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+      diagonal = above;
+    }
+  }
+  return row[b.size()];
+}
+
+// A misspelled key would leave its limit at the default without a word: every key must be one
+// this description knows. Notes may stand in "comment", "description" and keys starting "_".
+void rejectUnknownKeys(const json& object, std::initializer_list<const char*> known, const std::string& where,
+                       const std::string& source) {
+  for (const auto& item : object.items()) {
+    const std::string& key = item.key();
+    if (key == "comment" || key == "description" || (!key.empty() && key[0] == '_')) continue;
+    const char* nearest = nullptr;
+    std::size_t best = 3;  // suggest only a close key
+    bool found = false;
+    for (const char* k : known) {
+      if (key == k) found = true;
+      const std::size_t d = editDistance(key, k);
+      if (d < best) best = d, nearest = k;
+    }
+    if (found) continue;
+    std::string list;
+    for (const char* k : known) list += (list.empty() ? "" : ", ") + std::string(k);
+    fail(source, "unknown key \"" + where + key + "\"" +
+                     (nearest ? std::string(" (did you mean \"") + where + nearest + "\"?)" : std::string()) +
+                     "; the keys here are " + list);
+  }
+}
+
 Machine builtInFallback() {
   Machine m;
   m.name = "built-in";
@@ -56,6 +101,7 @@ Machine builtInFallback() {
 // "tools": {"units": "mm" | "inch", "table": "tools.tbl"} or {"units": .., "diameters": {"1": 6}}.
 void readTools(const json& tools, const std::string& source, Machine& m) {
   if (!tools.is_object()) fail(source, "tools must be an object");
+  rejectUnknownKeys(tools, {"units", "table", "diameters"}, "tools.", source);
   if (tools.contains("units")) {
     const std::string u = tools["units"].is_string() ? tools["units"].get<std::string>() : "";
     if (u != "mm" && u != "inch") fail(source, "tools.units must be \"mm\" or \"inch\"");
@@ -92,6 +138,10 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
     fail(source, std::string("not valid JSON: ") + e.what());
   }
   if (!root.is_object()) fail(source, "a machine description must be a JSON object");
+  rejectUnknownKeys(root,
+                    {"name", "cycle_s", "rapid_mm_min", "chord_tolerance_mm", "axes", "control", "tools",
+                     "reference_positions_mm"},
+                    "", source);
   Machine m = base;
   if (root.contains("name")) {
     if (!root["name"].is_string()) fail(source, "name must be a string");
@@ -122,6 +172,10 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       const json& a = axes[names[i]];
       const std::string where = std::string("axes.") + names[i] + ".";
       if (!a.is_object()) fail(source, where.substr(0, where.size() - 1) + " must be an object");
+      rejectUnknownKeys(a,
+                        {"max_velocity_mm_min", "max_acceleration_mm_s2", "max_jerk_mm_s3", "position_gain_1_s",
+                         "velocity_feed_forward", "velocity_loop_time_constant_s"},
+                        where, source);
       AxisLimits& limits = m.axes[i];
       const double velocity = number(a, "max_velocity_mm_min", mmPerSToMmPerMin(limits.maxVelocity), source, where);
       requirePositive(velocity, source, where + "max_velocity_mm_min");
@@ -140,8 +194,6 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       }
       limits.positionGain = number(a, "position_gain_1_s", limits.positionGain, source, where);
       requirePositive(limits.positionGain, source, where + "position_gain_1_s");
-      if (limits.positionGain * m.cycle > 0.5)
-        fail(source, where + "position_gain_1_s is too high for cycle_s (gain x cycle must be <= 0.5)");
       limits.velocityFeedForward = number(a, "velocity_feed_forward", limits.velocityFeedForward, source, where);
       if (limits.velocityFeedForward < 0 || limits.velocityFeedForward > 1)
         fail(source, where + "velocity_feed_forward must be between 0 and 1");
@@ -154,6 +206,8 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   if (root.contains("control")) {
     const json& c = root["control"];
     if (!c.is_object()) fail(source, "control must be an object");
+    rejectUnknownKeys(c, {"dialect", "units_at_power_on", "plane_at_power_on", "distance_at_power_on", "subroutine_path"},
+                      "control.", source);
     if (c.contains("dialect")) {
       const std::string d = c["dialect"].is_string() ? c["dialect"].get<std::string>() : "";
       if (d != "linuxcnc" && d != "fanuc") fail(source, "control.dialect must be \"linuxcnc\" or \"fanuc\"");
@@ -192,9 +246,18 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   if (root.contains("reference_positions_mm")) {
     const json& refs = root["reference_positions_mm"];
     if (!refs.is_object()) fail(source, "reference_positions_mm must be an object");
+    rejectUnknownKeys(refs, {"g28", "g30"}, "reference_positions_mm.", source);
     m.g28Position = position(refs, "g28", m.g28Position, source);
     m.g30Position = position(refs, "g30", m.g30Position, source);
   }
+  // Checked on every axis, given or inherited from the default: a new cycle_s alone can make
+  // the default servo diverge.
+  static const char* axisNames[3] = {"x", "y", "z"};
+  for (int i = 0; i < 3; ++i)
+    if (m.axes[i].positionGain * m.cycle > 0.5)
+      fail(source, fmt::format("axes.{}.position_gain_1_s is too high for cycle_s ({:g} 1/s x {:g} s must be at most "
+                               "0.5 for the servo to settle)",
+                               axisNames[i], m.axes[i].positionGain, m.cycle));
   return m;
 }
 
@@ -211,6 +274,7 @@ Machine parseMachine(const std::string& jsonText, const std::string& sourceName)
 
 Machine loadMachine(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
+  noteInputFile(path);
   if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open machine description"});
   std::ostringstream text;
   text << in.rdbuf();

@@ -1,5 +1,6 @@
 // LinuxCNC's tool table format: words of a letter and a number, a ';' comment to the line end.
 #include "isurface/machine/tool_table.h"
+#include "isurface/base/input_files.h"
 
 #include <fast_float/fast_float.h>
 
@@ -67,6 +68,7 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
 
 ToolDiameters readToolTable(const std::string& path, bool inch) {
   std::ifstream in(path, std::ios::binary);
+  noteInputFile(path);
   if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open tool table"});
   std::ostringstream text;
   text << in.rdbuf();

@@ -18,12 +18,16 @@ namespace isurface {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// No segment is planned slower than this (mm/s): degenerate geometry (a 1e-9 mm arc) must
-// still be passed in finite time, not skipped.
+// No curve's own limit is lower than this (mm/s): degenerate geometry (a 1e-9 mm arc) must
+// still be passed in finite time, not skipped. Programmed feeds have no floor.
 constexpr double kSlowestSpeed = 0.1;
 // A single move or dwell longer than this (s) is a mistake in the program, not machining: it
 // would make billions of samples.
 constexpr double kLongestMove = 24 * 3600.0;
+
+std::string speedName(float feedMmMin) {
+  return feedMmMin < 0 ? std::string("at the machine's rapid speed") : fmt::format("at F{:g}", feedMmMin);
+}
 
 // Odd number of cycles closest to a filter time, at least 1.
 int filterTaps(double time, double cycle) {
@@ -102,7 +106,7 @@ class Planner {
       const double seconds = std::max(0.0, move.dwellSeconds());
       if (seconds > kLongestMove)
         throw InputError(Diagnostic{source_, move.line, 0,
-                                    fmt::format("a dwell of {:.0f} s is longer than {:.0f} h: not a real program",
+                                    fmt::format("a dwell of {:.4g} s is longer than {:.0f} h: not a real program",
                                                 seconds, kLongestMove / 3600)});
       if (segments_ == 0) holdBefore_ += seconds;
       else window_.back().planned.holdAfter += seconds;
@@ -176,8 +180,8 @@ class Planner {
       s.peakSpeed = std::max({std::min(s.cap, reachable), s.entrySpeed, s.exitSpeed});
       if (s.motionTime() > kLongestMove)
         throw InputError(Diagnostic{source_, window_[head_ + k].line, 0,
-                                    fmt::format("this move takes {:.0f} h at F{:g}: an impossible feed for {:.1f} mm",
-                                                s.motionTime() / 3600, window_[head_ + k].feedMmMin, s.length)});
+                                    fmt::format("this move takes {:.3g} h {}: an impossible speed for {:.4g} mm",
+                                                s.motionTime() / 3600, speedName(window_[head_ + k].feedMmMin), s.length)});
       out.push_back(s);
     }
     head_ += last;
@@ -199,7 +203,7 @@ class Planner {
     double entryRadius = 0;   // mm, three-point radius at its start junction between lines
     double entryForward = 0;  // mm/s, the forward pass's speed at its start
     std::uint32_t line = 0;   // of its move, for messages
-    float feedMmMin = 0;      // mm/min, its move's F word as programmed (for messages)
+    float feedMmMin = 0;      // mm/min, its move's F word as programmed (for messages); < 0: a rapid
   };
 
   // The machine comes to rest at the current junction and waits `hold` seconds; by default
@@ -222,7 +226,7 @@ class Planner {
     ps.length = seg.length;
     double speed = move.kind == MoveKind::Rapid
                        ? machine_.rapidVelocity
-                       : mmPerMinToMmPerS(std::max(static_cast<double>(move.feed), 1.0));
+                       : mmPerMinToMmPerS(static_cast<double>(move.feed));
     if (seg.arc) {
       const ArcGeometry& g = seg.arcGeometry;
       const auto& ax = machine_.axes;
@@ -236,7 +240,12 @@ class Planner {
     } else {
       speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
     }
-    speed = std::max(speed, kSlowestSpeed);
+    // The feed and the axes' speeds are honoured however slow; only a curve's own limits have a
+    // floor (kSlowestSpeed), so that degenerate geometry is still passed in finite time.
+    if (!(speed > 0))
+      throw InputError(Diagnostic{source_, move.line, 0,
+                                  move.kind == MoveKind::Rapid ? "the machine's rapid speed is not above 0"
+                                                               : fmt::format("feed F{:g} is not above 0", move.feed)});
     ps.peakSpeed = speed;  // the cap until commit() settles the profile
     ps.cap = speed;
     ps.accel = tangentialAccel(seg);
@@ -256,7 +265,7 @@ class Planner {
                                                          2.0 * before.planned.accel * before.planned.length));
     }
     e.line = move.line;
-    e.feedMmMin = move.feed;
+    e.feedMmMin = move.kind == MoveKind::Rapid ? -1.0f : move.feed;
     window_.push_back(e);
     ++segments_;
     junctionLimit_ = kInfinity;

@@ -1,4 +1,6 @@
 #include "isurface/sts/sts_surface.h"
+
+#include <fmt/format.h>
 #include "isurface/base/units.h"
 
 #include <cmath>
@@ -97,8 +99,40 @@ struct ExpressionSurface::Parser {
   double x = 0, y = 0;
 };
 
+namespace {
+
+constexpr std::size_t kLongestExpression = 10000;  // characters
+constexpr int kDeepestNesting = 64;                 // parentheses
+
+// muParser also reads assignments ("x=1" sets x and evaluates to 1: a flat surface) and runs
+// out of stack on deep nesting; neither is a surface z = f(x, y).
+void checkExpressionShape(const std::string& expression) {
+  const auto refuse = [&](const std::string& why) {
+    throw InputError({"sts", 0, 0, "surface expression '" + expression.substr(0, 80) +
+                                       (expression.size() > 80 ? "...'" : "'") + ": " + why});
+  };
+  if (expression.size() > kLongestExpression)
+    refuse(fmt::format("{} characters, more than {}", expression.size(), kLongestExpression));
+  int depth = 0;
+  for (std::size_t i = 0; i < expression.size(); ++i) {
+    const char c = expression[i];
+    if (c == '(' && ++depth > kDeepestNesting) refuse(fmt::format("nested deeper than {} parentheses", kDeepestNesting));
+    if (c == ')') --depth;
+    if (c != '=') continue;
+    if (i + 1 < expression.size() && expression[i + 1] == '=') {
+      ++i;  // ==
+      continue;
+    }
+    if (i > 0 && (expression[i - 1] == '<' || expression[i - 1] == '>' || expression[i - 1] == '!')) continue;
+    refuse(fmt::format("'=' at character {} assigns: give only the height, f(x, y) for z = f(x, y), in mm", i + 1));
+  }
+}
+
+}  // namespace
+
 ExpressionSurface::ExpressionSurface(const std::string& expression)
     : expression_(expression), parser_(std::make_unique<Parser>()) {
+  checkExpressionShape(expression);
   try {
     parser_->parser.DefineVar("x", &parser_->x);
     parser_->parser.DefineVar("y", &parser_->y);

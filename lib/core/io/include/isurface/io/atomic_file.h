@@ -9,8 +9,11 @@
 // A target that already exists and is not a regular file (a terminal, a pipe, /dev/stdout,
 // /dev/null, /dev/full) cannot be replaced by renaming; it is written directly instead.
 //
-// Every failure (folder missing or not writable, disk full, I/O error) throws InputError with
-// Diagnostic{file = target, message = "cannot write: <reason>"}.
+// Every failure (folder missing or not writable, disk full, I/O error, a target that is one of
+// the process's protected inputs: see input_files.h) throws InputError with
+// Diagnostic{file = target, message = "cannot write: <reason>"}. A temporary file is removed
+// when SIGINT, SIGTERM, SIGHUP or SIGQUIT ends the process, and while an OutputTransaction is
+// open, commit() leaves the rename to it.
 //
 // The data is on disk before the rename, so that a system crash too leaves the old file or the
 // whole new one: the rename alone is atomic for every process, but after a power cut the new
@@ -88,6 +91,7 @@ class AtomicOutputFile {
   std::uint64_t syncRequested_ = 0;       // bytes written when the last background sync was asked for
   bool backgroundSyncFailed_ = false;     // no thread could be made: commit() syncs it all
   bool replacing_ = false;                // the target is a file that commit() replaces
+  int signalSlot_ = -1;                   // of the temporary file's removal on a signal
 };
 
 // Writes `content` to `path` through an AtomicOutputFile. Throws InputError.

@@ -10,6 +10,8 @@
 #include <utility>
 #include <vector>
 
+#include "isurface/base/shrink_guard.h"
+
 namespace isurface {
 
 enum class BiipType : std::uint8_t { F64 = 1, F32 = 2, I32 = 3, U32 = 4, I64 = 5, U64 = 6 };
@@ -124,6 +126,9 @@ class BiipReader {
   // The raw bytes of record i (recordBytes() of them), in place in the mapping.
   const unsigned char* record(std::size_t i) const { return data_ + header_.headerBytes + i * header_.recordBytes; }
   std::size_t fileBytes() const { return size_; }
+  // Throws InputError when another process cut the file short while it was read: the records
+  // read past its new end held zeros, not the dump.
+  void checkIntact() const;
 
  private:
   [[noreturn]] void refuse(const std::string& problem) const;
@@ -142,6 +147,7 @@ class BiipReader {
   std::vector<std::string> warnings_;
   const unsigned char* data_ = nullptr;
   std::size_t size_ = 0;
+  std::unique_ptr<ShrinkGuard> guard_;
   BiipChannelView t_;
   std::size_t nonFinite_ = 0;
 };

@@ -1,0 +1,74 @@
+// Feeds are honoured however slow: a program at F1 takes the minutes it says, not a tenth.
+#include <gtest/gtest.h>
+
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/machine/machine.h"
+#include "isurface/nc/simulator.h"
+
+using namespace isurface;
+
+namespace {
+
+SimulationReport simulateText(const std::string& text, const Machine& machine = defaultMachine()) {
+  InterpretResult r = interpretGcode(text, "slow.nc");
+  EXPECT_TRUE(r.ok()) << (r.errors.empty() ? "" : r.errors.front().str());
+  SampleBuffer buffer;
+  return simulate(r.program, machine, buffer);
+}
+
+}  // namespace
+
+TEST(SlowFeeds, OneMillimetreAtF1TakesAMinute) {
+  const SimulationReport r = simulateText("G21 G90\nG1 X1 F1\n");
+  EXPECT_NEAR(r.machiningTime, 60.0, 0.5);
+}
+
+TEST(SlowFeeds, HalfAMillimetrePerMinuteIsNotRaised) {
+  const SimulationReport r = simulateText("G21 G90\nG1 X0.1 F0.5\n");
+  EXPECT_NEAR(r.machiningTime, 12.0, 0.5);
+}
+
+TEST(SlowFeeds, TinyInverseTimeFeedTakesItsTime) {
+  // G93 F0.1: the move takes 1 / 0.1 = 10 minutes.
+  const SimulationReport r = simulateText("G21 G90\nG93 G1 X1 F0.1\n");
+  EXPECT_NEAR(r.machiningTime, 600.0, 1.0);
+}
+
+TEST(SlowFeeds, ASlowAxisOfTheMachineIsHonoured) {
+  Machine m = parseMachine(R"({"axes": {"x": {"max_velocity_mm_min": 2}}})", "slow-axis.json");
+  const SimulationReport r = simulateText("G21 G90\nG1 X1 F1000\n", m);
+  EXPECT_NEAR(r.machiningTime, 30.0, 0.5);
+}
+
+TEST(SlowFeeds, ARapidThatWouldTakeDaysNamesTheRapidSpeedNotF0) {
+  Machine m = parseMachine(R"({"rapid_mm_min": 0.0001})", "slow-rapid.json");
+  InterpretResult r = interpretGcode("G21 G90\nG0 X100\n", "rapid.nc");
+  ASSERT_TRUE(r.ok());
+  SampleBuffer buffer;
+  try {
+    simulate(r.program, m, buffer);
+    FAIL() << "a rapid of 1.7e4 hours was simulated";
+  } catch (const InputError& e) {
+    const std::string message = e.what();
+    EXPECT_NE(message.find("rapid speed"), std::string::npos) << message;
+    EXPECT_EQ(message.find("F0"), std::string::npos) << message;
+    EXPECT_LT(message.size(), 200u) << message;
+  }
+}
+
+TEST(SlowFeeds, AbsurdDurationsAreRefusedInFewWords) {
+  for (const std::string block : {"G4 P[10**150]", "G1 X[10**150] F1", "G1 X1000000 F0.000001"}) {
+    InterpretResult r = interpretGcode("G21 G90\n" + block + "\n", "absurd.nc");
+    if (!r.ok()) {
+      EXPECT_LT(r.errors.front().message.size(), 200u) << r.errors.front().message;
+      continue;
+    }
+    SampleBuffer buffer;
+    try {
+      simulate(r.program, defaultMachine(), buffer);
+      ADD_FAILURE() << block << " was simulated";
+    } catch (const InputError& e) {
+      EXPECT_LT(std::string(e.what()).size(), 200u) << e.what();
+    }
+  }
+}

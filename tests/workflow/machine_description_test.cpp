@@ -1,0 +1,59 @@
+// What a machine description says is what the simulation uses: no key ignored, no servo left
+// unchecked, the reference positions honoured.
+#include <gtest/gtest.h>
+
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/machine/machine.h"
+#include "isurface/workflow/run_inputs.h"
+
+using namespace isurface;
+
+namespace {
+
+std::string refusal(const std::string& json) {
+  try {
+    parseMachine(json, "m.json");
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(MachineDescription, AMisspelledKeyIsRefusedWithTheKeyItMeant) {
+  const std::string root = refusal(R"({"rapid_mm_mn": 5000})");
+  EXPECT_NE(root.find("unknown key \"rapid_mm_mn\""), std::string::npos) << root;
+  EXPECT_NE(root.find("did you mean \"rapid_mm_min\""), std::string::npos) << root;
+  const std::string axis = refusal(R"({"axes": {"x": {"max_acceleration_mm_s": 500}}})");
+  EXPECT_NE(axis.find("axes.x.max_acceleration_mm_s2"), std::string::npos) << axis;
+  EXPECT_NE(refusal(R"({"control": {"dialekt": "fanuc"}})").find("control.dialect"), std::string::npos);
+  EXPECT_NE(refusal(R"({"reference_positions_mm": {"g29": [0, 0, 0]}})").find("unknown key"), std::string::npos);
+  EXPECT_NE(refusal(R"({"tools": {"diameter": {"1": 6}}})").find("tools.diameters"), std::string::npos);
+  EXPECT_NE(refusal(R"({"spindle": 1})").find("unknown key \"spindle\""), std::string::npos);
+}
+
+TEST(MachineDescription, NotesAreAllowed) {
+  EXPECT_EQ(refusal(R"({"comment": "shop machine 3", "_by": "me", "description": "x"})"), "");
+}
+
+TEST(MachineDescription, ACycleAloneIsCheckedAgainstTheDefaultServo) {
+  // The default position gain (40 1/s) and a 0.1 s cycle: the servo model would diverge.
+  const std::string why = refusal(R"({"cycle_s": 0.1})");
+  EXPECT_NE(why.find("position_gain_1_s is too high for cycle_s"), std::string::npos) << why;
+  EXPECT_EQ(refusal(R"({"cycle_s": 0.01})"), "");
+}
+
+TEST(MachineDescription, G28GoesToTheReferencePositionItGives) {
+  const Machine m = parseMachine(R"({"reference_positions_mm": {"g28": [10, 20, 30], "g30": [-1, -2, -3]}})", "m.json");
+  const InterpretResult r = interpretGcode("G21 G90\nG28\nG30\nM2\n", "home.nc", interpreterOptions(m));
+  ASSERT_TRUE(r.ok()) << r.errors.front().str();
+  ASSERT_GE(r.program.moves.size(), 2u);
+  bool reached28 = false, reached30 = false;
+  for (const Move& move : r.program.moves) {
+    reached28 = reached28 || move.end.isApprox(Vec3(10, 20, 30));
+    reached30 = reached30 || move.end.isApprox(Vec3(-1, -2, -3));
+  }
+  EXPECT_TRUE(reached28);
+  EXPECT_TRUE(reached30);
+}
