@@ -82,7 +82,7 @@ gcode="$work/raster-2gb.nc"
 lines=$(wc -l < "$gcode")
 printf 'G-code: %s, %d bytes, %d lines\n' "$gcode" "$(stat -c %s "$gcode")" "$lines"
 run "canon, 2 GB G-code -> /dev/null" $small_kb "$cli" canon "$gcode" -o /dev/null
-run "simulate, 2 GB G-code -> /dev/null" $small_kb "$cli" simulate "$gcode" -o /dev/null
+run "simulate, 2 GB G-code -> /dev/null" $small_kb "$cli" simulate "$gcode" -o /dev/null --max-hours 1000
 tail -1 "$work/out.txt"
 
 run "simulate, first part -> 10 M-sample dump" $small_kb \

@@ -81,7 +81,10 @@ int runSnapshot(const SnapshotOptions& o) {
     std::fprintf(stderr, "error: line %ld produced no samples\n", o.pickLine);
     status = kExitInputError;
   }
-  if (o.pickSample >= 0) inspector.selectSample(static_cast<std::size_t>(o.pickSample));
+  if (o.pickSample >= 0 && !inspector.selectSample(static_cast<std::size_t>(o.pickSample))) {
+    std::fprintf(stderr, "error: sample %ld is out of range\n", o.pickSample);
+    status = kExitInputError;
+  }
   if (o.showMachine) inspector.showMachineWindow();
   // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
   for (int frame = 0; frame < 4; ++frame) ui.frame();
@@ -99,8 +102,9 @@ Command uiSnapshotCommand() {
       sub.add_option("-o,--output", o->output, "PNG file to write")->required();
       sub.add_option("--size", o->size, "window size WxH")->capture_default_str();
       sub.add_option("--color", o->color, "quantity to colour the map by")->capture_default_str();
-      sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line");
-      sub.add_option("--pick-sample", o->pickSample, "select this sample");
+      sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line")
+          ->check(CLI::NonNegativeNumber);
+      sub.add_option("--pick-sample", o->pickSample, "select this sample (0 is the first)")->check(CLI::NonNegativeNumber);
       CLI::Option* optimize =
           sub.add_option("--optimize-lines", o->optimizeLines, "re-optimise the lines A-B and show both maps");
       sub.add_option("--optimize-view", o->optimizeView,

@@ -31,11 +31,16 @@ void MachineOption::addTo(CLI::App& sub, const std::string& help) {
   sub.add_option("--tool-table", toolTable,
                  "tool table for cutter radius compensation (LinuxCNC .tbl; its lengths in the machine's "
                  "tools.units, mm unless it says inch)");
+  sub.add_option("--max-hours", maxHours,
+                 "the longest machining time simulated, h (a longer run is refused: its samples would fill the disk)")
+      ->capture_default_str()
+      ->check(CLI::PositiveNumber);
 }
 
 Machine loadMachineOption(const MachineOption& option) {
   Machine machine = loadMachineOption(option.description);
   if (!option.toolTable.empty()) machine.toolDiameters = readToolTable(option.toolTable, machine.toolTableInch);
+  machine.longestRun = option.maxHours * 3600.0;
   return machine;
 }
 

@@ -23,6 +23,7 @@ Program loadProgram(const std::string& path, bool keepGoing, bool showProgress =
 struct MachineOption {
   std::string description;  // JSON; empty: the built-in machine
   std::string toolTable;    // LinuxCNC .tbl, in the machine's tool table units (tools.units)
+  double maxHours = 100;    // the longest run simulated, h
   bool given() const { return !description.empty() || !toolTable.empty(); }
   void addTo(CLI::App& sub, const std::string& help);
 };

@@ -23,7 +23,7 @@ OpenedRun openRunOnTerminal(const RunFiles& files, const MachineOption& machineO
                             const TrajectoryChannels& channels) {
   OpenRunRequest request;
   request.files = files;
-  if (machineOption.given()) request.machine = loadMachineOption(machineOption);
+  request.machine = loadMachineOption(machineOption);  // the built-in one, with --max-hours, when none is given
   request.channels = channels;
   request.force = force;
   const std::string& first = files.program.empty() ? files.dump : files.program;

@@ -206,3 +206,39 @@ TEST(runComparison, quantityNamesRoundTrip) {
 
 }  // namespace
 }  // namespace isurface
+
+namespace isurface {
+namespace {
+
+// A run at one point on one line: `n` samples, 1 ms apart.
+Trajectory standing(std::size_t n, std::uint32_t line) {
+  Trajectory t;
+  t.source = "standing";
+  t.cycle = 0.001;
+  t.hasLine = true;
+  t.x.assign(n, 1.0), t.y.assign(n, 2.0), t.z.assign(n, 3.0);
+  t.line.assign(n, line);
+  t.time.resize(n);
+  for (std::size_t i = 0; i < n; ++i) t.time[i] = 0.001 * double(i);
+  return t;
+}
+
+TEST(runComparison, theLastLineNumberCostsWhatTheFirstDoes) {
+  // Line 4294967295 once made an index of 4 G entries (bad_alloc).
+  const Trajectory a = standing(100, 0xffffffffu);
+  const RunComparison c = compareRuns(a, a);
+  ASSERT_EQ(c.lines.size(), 1u);
+  EXPECT_EQ(c.lines.front().line, 0xffffffffu);
+}
+
+TEST(runComparison, aMillionSamplesStandingAtOnePointAreComparedInLinearTime) {
+  // Every sample of B within the search radius of every sample of A once made this quadratic
+  // (35 s for 147 thousand samples; a million took over half an hour).
+  const Trajectory a = standing(1000000, 7);
+  const RunComparison c = compareRuns(a, a);
+  ASSERT_EQ(c.lines.size(), 1u);
+  EXPECT_EQ(c.lines.front().figures.maxPathDistance, 0.0);
+}
+
+}  // namespace
+}  // namespace isurface

@@ -50,6 +50,8 @@ struct BiipSpec {
   std::int64_t channelCount = -1;   // -1: channels.size()
   std::uint32_t metadataBytes = 0;  // declared only; no metadata is written
   std::size_t truncateTo = std::string::npos;
+  std::vector<double> times;  // the "t" channel's values, record by record (0 past them)
+  std::string metadata;       // written after the channel table, metadataBytes set to its size
 };
 
 template <typename T>
@@ -58,7 +60,7 @@ void put(std::string& s, std::size_t at, T v) {
 }
 
 std::string biip(const BiipSpec& b) {
-  const std::size_t natural = (64 + 32 * b.channels.size() + 7) / 8 * 8;
+  const std::size_t natural = (64 + 32 * b.channels.size() + b.metadata.size() + 7) / 8 * 8;
   std::string s(natural, '\0');
   std::memcpy(&s[0], b.magic.data(), 4);
   put<std::uint16_t>(s, 4, b.major);
@@ -72,7 +74,8 @@ std::string biip(const BiipSpec& b) {
   put<double>(s, 24, b.cycle);
   put<std::uint64_t>(s, 32, b.records);
   put<double>(s, 40, 0.0);
-  put<std::uint32_t>(s, 48, b.metadataBytes);
+  put<std::uint32_t>(s, 48, b.metadata.empty() ? b.metadataBytes : static_cast<std::uint32_t>(b.metadata.size()));
+  if (!b.metadata.empty()) std::memcpy(&s[64 + 32 * b.channels.size()], b.metadata.data(), b.metadata.size());
   for (std::size_t i = 0; i < b.channels.size(); ++i) {
     const std::size_t at = 64 + 32 * i;
     const auto& name = b.channels[i].name;
@@ -84,7 +87,10 @@ std::string biip(const BiipSpec& b) {
     std::string rec(b.recordBytes, '\0');
     for (const auto& c : b.channels)
       if (c.type == 1 && c.offset + 8 <= b.recordBytes)
-        put<double>(rec, c.offset, c.name == "x" ? static_cast<double>(r) : 0.0);
+        put<double>(rec, c.offset,
+                    c.name == "x"   ? static_cast<double>(r)
+                    : c.name == "t" ? (r < b.times.size() ? b.times[r] : 0.0)
+                                    : 0.0);
     s += rec;
   }
   if (b.truncateTo != std::string::npos) s.resize(b.truncateTo);
@@ -165,6 +171,17 @@ void writeInputs() {
   { BiipSpec b; b.channels[0].type = 9; writeBytes("bad_type.biip", biip(b)); }
   { BiipSpec b; b.channels[0].name = "X!"; writeBytes("bad_name.biip", biip(b)); }
   { BiipSpec b; b.metadataBytes = 0xffffffffu; writeBytes("meta_huge.biip", biip(b)); }
+  const auto timed = [](std::vector<double> times) {
+    BiipSpec b;
+    b.channels.push_back({"t", 1, 24});
+    b.recordBytes = 32;
+    b.records = times.size();
+    b.times = std::move(times);
+    return biip(b);
+  };
+  writeBytes("t_nan.biip", timed({0.0, std::nan(""), 0.002}));
+  writeBytes("t_backwards.biip", timed({0.0, 0.001, 0.0005, 0.002}));
+  writeBytes("t_still.biip", timed({5.0, 5.0, 5.0}));
 
   // Machine descriptions
   writeBytes("m_malformed.json", "{\"name\": \"x\", \"cycle_s\": 0.001,\n \"axes\": {\n");
@@ -186,6 +203,14 @@ void writeInputs() {
   // Machine traces
   writeBytes("trace.csv", "x,y,z,ax\n0,0,0,0\n1,0,0,1\n2,0,0,2\n");
   writeBytes("trace_time_inf.csv", "x,y,z,t\n0,0,0,0\n1,0,0,inf\n");
+  writeBytes("trace_time_back.csv", "x,y,z,t\n0,0,0,0\n1,0,0,0.2\n2,0,0,0.1\n");
+  writeBytes("trace_time_still.csv", "x,y,z,t\n0,0,0,3\n1,0,0,3\n2,0,0,3\n");
+  writeBytes("trace_line_neg.csv", "x,y,z,n\n0,0,0,1\n1,0,0,-1\n");
+  writeBytes("trace_line_frac.csv", "x,y,z,n\n0,0,0,1\n1,0,0,3.7\n");
+  writeBytes("trace_line_huge.csv", "x,y,z,n\n0,0,0,1\n1,0,0,1e11\n");
+  writeBytes("m_cycle_only.json", "{\"cycle_s\": 0.1}\n");
+  writeBytes("m_misspelled.json", "{\"rapid_mm_mn\": 5000}\n");
+  writeBytes("m_axis_misspelled.json", "{\"axes\": {\"z\": {\"max_jerk_mm_s\": 5000}}}\n");
   {  // the umich preset keeps every numeric column: 250 more than its own are too many channels
     std::string header = "X1_CommandPosition,Y1_CommandPosition,Z1_CommandPosition,X1_ActualPosition,"
                          "Y1_ActualPosition,Z1_ActualPosition,M1_CURRENT_FEEDRATE";
@@ -404,6 +429,29 @@ const std::vector<Row>& catalogue() {
       {"trace_too_many_columns", "import csv {in}/wide.csv --preset umich -o {out}/wide.biip", 2,
        {"wide.csv", "more than 247 extra channels", "'c247'"}, "wide.biip"},
 
+      {"biip_time_nan", "info {in}/t_nan.biip", 2, {"t_nan.biip", "record 1: time t is not finite"}, ""},
+      {"biip_time_backwards", "render {in}/t_backwards.biip -o {out}/t_back.png --size 64x48", 2,
+       {"t_backwards.biip", "record 2: time t runs backwards"}, "t_back.png"},
+      {"biip_time_still", "info {in}/t_still.biip", 2, {"t_still.biip", "time t stands still"}, ""},
+      {"trace_time_backwards", "import csv {in}/trace_time_back.csv --map x=x,y=y,z=z,t=t -o {out}/t_back.biip", 2,
+       {"trace_time_back.csv:4:", "runs backwards"}, "t_back.biip"},
+      {"trace_time_still", "import csv {in}/trace_time_still.csv --map x=x,y=y,z=z,t=t -o {out}/t_still.biip", 2,
+       {"trace_time_still.csv", "time stands still"}, "t_still.biip"},
+      {"trace_line_negative", "import csv {in}/trace_line_neg.csv --map x=x,y=y,z=z,line=n -o {out}/l_neg.biip", 2,
+       {"trace_line_neg.csv:3:", "line number '-1'"}, "l_neg.biip"},
+      {"trace_line_fraction", "import csv {in}/trace_line_frac.csv --map x=x,y=y,z=z,line=n -o {out}/l_frac.biip", 2,
+       {"trace_line_frac.csv:3:", "line number '3.7'"}, "l_frac.biip"},
+      {"trace_line_huge", "import csv {in}/trace_line_huge.csv --map x=x,y=y,z=z,line=n -o {out}/l_huge.biip", 2,
+       {"trace_line_huge.csv:3:", "line number '1e11'"}, "l_huge.biip"},
+      {"machine_cycle_only", "simulate {in}/good.nc --machine {in}/m_cycle_only.json -o {out}/m_cycle.biip", 2,
+       {"m_cycle_only.json", "axes.x.position_gain_1_s is too high for cycle_s"}, "m_cycle.biip"},
+      {"machine_misspelled_key", "simulate {in}/good.nc --machine {in}/m_misspelled.json -o {out}/m_typo.biip", 2,
+       {"m_misspelled.json", "unknown key \"rapid_mm_mn\"", "did you mean \"rapid_mm_min\""}, "m_typo.biip"},
+      {"machine_misspelled_axis_key", "simulate {in}/good.nc --machine {in}/m_axis_misspelled.json -o {out}/m_typo2.biip", 2,
+       {"m_axis_misspelled.json", "axes.z.max_jerk_mm_s3"}, "m_typo2.biip"},
+      {"sts_assignment", "sts --surface x=1 -o {out}/flat.nc", 2, {"'='", "assigns"}, "flat.nc"},
+      {"sts_compound_assignment", "sts --surface y+=2 -o {out}/flat2.nc", 2, {"'='"}, "flat2.nc"},
+
       // Outputs that cannot be written (canon documents exit code 1 for these)
       {"output_missing_dir_canon", "canon {in}/good.nc -o {out}/no_dir/a.txt", 2,
        {"no_dir/a.txt", "cannot write"}, "no_dir/a.txt"},
@@ -497,6 +545,7 @@ TEST(BadInputCatalogue, HasAtLeastFortyRows) { EXPECT_GE(catalogue().size(), 40u
 // Inputs that look odd but are accepted on purpose: they must not be reported as errors.
 TEST(BadInputCatalogue, AcceptedOddities) {
   fs::create_directories(inDir());
+  fs::create_directories(outDir());
   writeBytes("really_empty.nc", "");
   writeBytes("unknown_m.nc", "G0 X0 Y0 Z0\nM77\nG1 X1 F100\n");
   const auto empty = runCli("canon " + (inDir() / "really_empty.nc").string());
@@ -504,6 +553,26 @@ TEST(BadInputCatalogue, AcceptedOddities) {
   EXPECT_TRUE(empty.out.empty());
   const auto m = runCli("canon " + (inDir() / "unknown_m.nc").string());
   EXPECT_EQ(m.exitCode, 0) << m.err;
+  // Old Mac line ends: three lines, two moves (not one diagonal move).
+  writeBytes("mac.nc", "G21 G90 G1 X10 F100\rY20\rM2\r");
+  const auto mac = runCli("canon " + (inDir() / "mac.nc").string());
+  EXPECT_EQ(mac.exitCode, 0) << mac.err;
+  EXPECT_NE(mac.out.find("1 G1 10.0000 0.0000 0.0000"), std::string::npos) << mac.out;
+  EXPECT_NE(mac.out.find("2 G1 10.0000 20.0000 0.0000"), std::string::npos) << mac.out;
+  // A CSV saved with a UTF-8 byte order mark names its first column like any other.
+  writeBytes("bom.csv", "\xEF\xBB\xBFx,y,z\n0,0,0\n1,0,0\n");
+  const auto bom = runCli("import csv " + (inDir() / "bom.csv").string() + " --map x=x,y=y,z=z -o " +
+                          (outDir() / "bom.biip").string());
+  EXPECT_EQ(bom.exitCode, 0) << bom.err;
+  // Metadata nested thousands deep is set aside with a warning: info stays short and alive.
+  BiipSpec deep;
+  deep.metadata = std::string(20000, '[') + std::string(20000, ']');
+  deep.metadata = "{\"a\": " + deep.metadata + "}";
+  writeBytes("meta_deep.biip", biip(deep));
+  const auto info = runCli("info " + (inDir() / "meta_deep.biip").string());
+  EXPECT_EQ(info.exitCode, 0) << info.err;
+  EXPECT_NE(info.err.find("nested"), std::string::npos) << info.err;
+  EXPECT_LT(info.out.size(), 20000u);
 }
 
 }  // namespace

@@ -43,13 +43,12 @@ struct CommandResult {
   std::string err;  // stderr
 };
 
-// Runs isurface-cli with the given argument string (shell syntax).
-inline CommandResult runCli(const std::string& args) {
+// Runs a shell command line, its output captured.
+inline CommandResult runShell(const std::string& commandLine) {
   static int counter = 0;
   const auto base = scratchDir() / ("cli" + std::to_string(counter++));
   const std::string outPath = base.string() + ".out", errPath = base.string() + ".err";
-  const std::string command =
-      std::string(ISURFACE_CLI) + " " + args + " >" + outPath + " 2>" + errPath + " </dev/null";
+  const std::string command = "(" + commandLine + ") >" + outPath + " 2>" + errPath + " </dev/null";
   const int status = std::system(command.c_str());
   CommandResult r;
   r.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
@@ -57,6 +56,9 @@ inline CommandResult runCli(const std::string& args) {
   r.err = readFile(errPath);
   return r;
 }
+
+// Runs isurface-cli with the given argument string (shell syntax).
+inline CommandResult runCli(const std::string& args) { return runShell(std::string(ISURFACE_CLI) + " " + args); }
 #endif
 
 }  // namespace isurface::test

@@ -36,11 +36,12 @@ void SelectionModel::setTrajectory(const Trajectory* samples) {
   }
 }
 
-void SelectionModel::selectSample(std::size_t sample) {
-  if (!samples_ || sample >= samples_->size()) return;
+bool SelectionModel::selectSample(std::size_t sample) {
+  if (!samples_ || sample >= samples_->size()) return false;
   selection_.sample = sample;
   selection_.line = lineOfSample(*samples_, sample);
   bump();
+  return true;
 }
 
 std::optional<std::size_t> SelectionModel::firstSampleOfLineCached(std::uint32_t line) {

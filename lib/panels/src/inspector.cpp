@@ -322,7 +322,7 @@ void Inspector::waitUntilIdle() {
   } while (state_->job.running());
 }
 
-void Inspector::selectSample(std::size_t sample) { state_->selection.selectSample(sample); }
+bool Inspector::selectSample(std::size_t sample) { return state_->selection.selectSample(sample); }
 bool Inspector::selectLine(std::uint32_t line) { return state_->selection.selectLine(line); }
 
 void Inspector::colourBy(const std::string& name) {

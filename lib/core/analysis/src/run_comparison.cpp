@@ -22,17 +22,25 @@ constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
 // than a typical pass.
 constexpr double kPathSearchRadius = 2.0;
 
-// The samples of every line of a run, grouped by line (CSR layout), and the run's own timing.
+// The samples of every line of a run, grouped by line (CSR layout over the lines that occur,
+// so that a line numbered 4294967295 costs what line 1 does), and the run's own timing.
 struct LineIndex {
-  std::vector<std::size_t> offsets;  // per line number, plus the end
+  std::vector<std::uint32_t> lines;  // the line numbers that occur, ascending
+  std::vector<std::size_t> offsets;  // per entry of `lines`, plus the end
   std::vector<std::size_t> samples;  // sample indices, by line then in time order
   std::vector<std::uint32_t> order;  // lines in the order of their first sample
   double firstTime = 0, lastTime = 0;
 
-  std::size_t count(std::uint32_t line) const {
-    return line + 1 < offsets.size() ? offsets[line + 1] - offsets[line] : 0;
+  // The entry of `line` in `lines`, or lines.size() when it does not occur.
+  std::size_t slot(std::uint32_t line) const {
+    const auto it = std::lower_bound(lines.begin(), lines.end(), line);
+    return it != lines.end() && *it == line ? std::size_t(it - lines.begin()) : lines.size();
   }
-  const std::size_t* begin(std::uint32_t line) const { return samples.data() + offsets[line]; }
+  std::size_t count(std::uint32_t line) const {
+    const std::size_t k = slot(line);
+    return k < lines.size() ? offsets[k + 1] - offsets[k] : 0;
+  }
+  const std::size_t* begin(std::uint32_t line) const { return samples.data() + offsets[slot(line)]; }
 };
 
 // `keys`: the key each line is indexed under (see RunComparisonOptions::lineKeyA); the index
@@ -40,14 +48,24 @@ struct LineIndex {
 LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys) {
   const auto keyOf = [&](std::uint32_t line) { return line != 0 && line < keys.size() ? keys[line] : line; };
   LineIndex index;
-  std::uint32_t maxLine = 0;
-  for (std::uint32_t line : t.line) maxLine = std::max(maxLine, keyOf(line));
-  index.offsets.assign(std::size_t(maxLine) + 2, 0);
+  // Samples come in runs of one line: the run's slot is looked up once.
+  std::uint32_t lastLine = 0;
+  std::size_t lastSlot = 0;
+  const auto slotOf = [&](std::uint32_t line) {
+    if (line != lastLine) lastLine = line, lastSlot = index.slot(line);
+    return lastSlot;
+  };
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (const std::uint32_t line = keyOf(t.line[i]); line != 0 && (index.lines.empty() || index.lines.back() != line))
+      index.lines.push_back(line);
+  std::sort(index.lines.begin(), index.lines.end());
+  index.lines.erase(std::unique(index.lines.begin(), index.lines.end()), index.lines.end());
+  index.offsets.assign(index.lines.size() + 1, 0);
   bool started = false;
   for (std::size_t i = 0; i < t.size(); ++i) {
     const std::uint32_t line = keyOf(t.line[i]);
     if (line == 0) continue;
-    if (index.offsets[line + 1]++ == 0) index.order.push_back(line);
+    if (index.offsets[slotOf(line) + 1]++ == 0) index.order.push_back(line);
     if (!started) index.firstTime = t.time[i], started = true;
     index.lastTime = t.time[i];
   }
@@ -55,7 +73,7 @@ LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys
   std::vector<std::size_t> fill(index.offsets.begin(), index.offsets.end() - 1);
   index.samples.resize(index.offsets.back());
   for (std::size_t i = 0; i < t.size(); ++i)
-    if (const std::uint32_t line = keyOf(t.line[i]); line != 0) index.samples[fill[line]++] = i;
+    if (const std::uint32_t line = keyOf(t.line[i]); line != 0) index.samples[fill[slotOf(line)]++] = i;
   return index;
 }
 
@@ -127,7 +145,10 @@ class Aligner {
  public:
   Aligner(const Trajectory& a, const Trajectory& b, RunComparison& out)
       : a_(a), b_(b), out_(out), speedA_(sampleQuantity(Quantity::Speed, a)),
-        speedB_(sampleQuantity(Quantity::Speed, b)), pathB_(cumulativeArcLength(b)) {}
+        speedB_(sampleQuantity(Quantity::Speed, b)), pathB_(cumulativeArcLength(b)) {
+    for (std::size_t j = 0; j + 1 < pathB_.size(); ++j)
+      if (pathB_[j + 1] > pathB_[j]) movingB_.push_back(j);
+  }
 
   LineDifference compareLine(std::uint32_t line, const LineIndex& ia, const LineIndex& ib) {
     const std::size_t* sa = ia.begin(line);
@@ -168,13 +189,13 @@ class Aligner {
   double pathDistance(const Vec3& p, const Aligned& at) const {
     if (!p.allFinite()) return std::numeric_limits<double>::quiet_NaN();
     const double s = at.at([&](std::size_t j) { return pathB_[j]; });
-    std::size_t j = std::size_t(std::lower_bound(pathB_.begin(), pathB_.end(), s - searchRadius_) - pathB_.begin());
-    if (j > 0) --j;
+    // Only the steps where B moved are segments: a run standing at one point for a million
+    // samples must not be walked for each of A's samples.
+    auto k = std::lower_bound(movingB_.begin(), movingB_.end(), s - searchRadius_,
+                              [&](std::size_t j, double value) { return pathB_[j + 1] < value; });
     double best = (p - b_.commanded(at.from)).norm();
-    for (; j + 1 < b_.size() && pathB_[j] <= s + searchRadius_; ++j) {
-      if (pathB_[j + 1] == pathB_[j]) continue;  // B stood still: no segment
-      best = std::min(best, distanceToSegment(p, b_.commanded(j), b_.commanded(j + 1)));
-    }
+    for (; k != movingB_.end() && pathB_[*k] <= s + searchRadius_; ++k)
+      best = std::min(best, distanceToSegment(p, b_.commanded(*k), b_.commanded(*k + 1)));
     return best;
   }
 
@@ -183,6 +204,7 @@ class Aligner {
   RunComparison& out_;
   std::vector<double> speedA_, speedB_;  // mm/min, path speed per sample of each run
   std::vector<double> pathB_;            // mm, B's arc length at each sample
+  std::vector<std::size_t> movingB_;     // the samples j where B moves on to j + 1
   double searchRadius_ = kPathSearchRadius;  // mm, for the line being compared
 };
 

@@ -5,8 +5,12 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
+
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <system_error>
 #include <unordered_set>
@@ -54,6 +58,34 @@ std::size_t countNonFinite(const BiipChannelView& x, const BiipChannelView& y, c
     bad += static_cast<std::size_t>(s != s);
   }
   return bad;
+}
+
+}  // namespace
+
+namespace {
+
+// Metadata is a few notes (the program, the machine): nesting deeper than this is no note, and
+// printing it indented would take the square of its depth in bytes.
+constexpr std::size_t kDeepestMetadata = 64;
+
+// The deepest nesting of objects and arrays in JSON text, strings skipped; no parsing.
+std::size_t jsonNestingDepth(std::string_view text) {
+  std::size_t depth = 0, deepest = 0;
+  bool inString = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (inString) {
+      if (c == '\\') ++i;
+      else if (c == '"') inString = false;
+    } else if (c == '"') {
+      inString = true;
+    } else if (c == '{' || c == '[') {
+      deepest = std::max(deepest, ++depth);
+    } else if ((c == '}' || c == ']') && depth > 0) {
+      --depth;
+    }
+  }
+  return deepest;
 }
 
 }  // namespace
@@ -222,8 +254,13 @@ void BiipReader::parseMetadata(std::size_t tableEnd, std::uint32_t metadataBytes
       text.remove_suffix(1);
     }
     if (!text.empty()) {
-      const auto parsed = nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
-      if (parsed.is_discarded()) {
+      const std::size_t depth = jsonNestingDepth(text);
+      const auto parsed = depth > kDeepestMetadata ? nlohmann::json(nlohmann::json::value_t::discarded)
+                                                   : nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
+      if (depth > kDeepestMetadata) {
+        warnings_.push_back("metadata is nested " + std::to_string(depth) + " levels deep, more than " +
+                            std::to_string(kDeepestMetadata) + "; ignored");
+      } else if (parsed.is_discarded()) {
         warnings_.push_back("metadata is not valid UTF-8 JSON; ignored");
       } else if (!parsed.is_object()) {
         warnings_.push_back("metadata is JSON but not an object; ignored");
@@ -264,11 +301,27 @@ void BiipReader::countRecords() {
   }
 
   t_ = channel("t");
+  if (t_.valid()) checkTimeChannel();
   nonFinite_ = countNonFinite(channel("x"), channel("y"), channel("z"), records_);
   if (nonFinite_ > 0) {
     warnings_.push_back(std::to_string(nonFinite_) + (nonFinite_ == 1 ? " sample" : " samples") +
                         " with non-finite x/y/z " + (nonFinite_ == 1 ? "is" : "are") + " kept out of geometry");
   }
+}
+
+// Every duration, speed and derivative is taken over the time channel: one that is not a clock
+// (NaN, standing still, running backwards) would give a duration of 0 or infinite speeds.
+void BiipReader::checkTimeChannel() const {
+  double previous = -std::numeric_limits<double>::infinity();
+  for (std::size_t i = 0; i < records_; ++i) {
+    const double t = t_[i];
+    if (!std::isfinite(t)) refuse("record " + std::to_string(i) + ": time t is not finite");
+    if (t < previous)
+      refuse(fmt::format("record {}: time t runs backwards ({:.9g} s after {:.9g} s)", i, t, previous));
+    previous = t;
+  }
+  if (records_ > 1 && !(t_[records_ - 1] > t_[0]))
+    refuse(fmt::format("time t stands still ({:.9g} s in all {} records)", t_[0], records_));
 }
 
 const BiipChannel* BiipReader::findChannel(const std::string& name) const {

@@ -1,4 +1,6 @@
 #include "isurface/io/trace_import.h"
+
+#include <fmt/format.h>
 #include "isurface/base/input_files.h"
 
 #include <fast_float/fast_float.h>
@@ -129,6 +131,15 @@ class TrajectoryBuilder {
       // divided by time differences.
       if (b.target == Target::Time && !std::isfinite(v))
         fail(file_, lineNumber, cell.column, "column " + b.label + ": time '" + std::string(cell.text.substr(0, 40)) + "' is not finite");
+      if (b.target == Target::Time && !time_.empty() && v < time_.back())
+        fail(file_, lineNumber, cell.column,
+             "column " + b.label + ": time " + std::string(cell.text.substr(0, 40)) + " runs backwards (the row before: " +
+                 fmt::format("{:.9g}", time_.back()) + ")");
+      // A line number names a line of the program: a whole number, 0 for none.
+      if (b.target == Target::Line && !(v >= 0 && v <= 4294967295.0 && v == std::floor(v)))
+        fail(file_, lineNumber, cell.column,
+             "column " + b.label + ": line number '" + std::string(cell.text.substr(0, 40)) +
+                 "' is not a whole number from 0 (no line) to 4294967295");
       target(b).push_back(v);
     }
     ++rows_;
@@ -143,6 +154,8 @@ class TrajectoryBuilder {
     if (feedbackAxes != 0 && feedbackAxes != 3)
       fail(file_, 0, 0, "the column mapping needs fb_x, fb_y and fb_z together, or none of them");
     t.cycle = cycle;
+    if (rows_ > 1 && !time_.empty() && !(time_.back() > time_.front()))
+      fail(file_, 0, 0, fmt::format("time stands still ({:.9g} s on every row)", time_.front()));
     if (!time_.empty()) {
       // A recorded time column: its mean step is the nominal cycle unless one was given.
       if (!cycleGiven && rows_ > 1 && time_.back() > time_.front()) {
@@ -298,6 +311,7 @@ Trajectory importCsv(const std::string& path, const TraceImportOptions& options)
   unsigned lineNumber = 0;
   std::vector<std::string> header;
   while (header.empty() && std::getline(in, text)) {
+    if (lineNumber == 0 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);  // a UTF-8 byte order mark
     ++lineNumber;
     if (trim(text).empty()) continue;
     splitCsv(text, cells);

@@ -1,17 +1,55 @@
 #include "isurface/nc/simulator.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <cstddef>
+#include <stdexcept>
 
 namespace isurface {
+
+namespace {
+
+// The interpolator does not know the program's name; its errors get it here.
+InputError naming(const InputError& e, const std::string& source) {
+  if (!e.diagnostic().file.empty()) return e;
+  Diagnostic d = e.diagnostic();
+  d.file = source;
+  return InputError(d);
+}
+
+// Refuses a run whose planned time passes the machine's longest run, before its samples are
+// made: `line` is where the plan passes it.
+void checkRunLength(double seconds, const Machine& machine, std::uint32_t line, const std::string& source) {
+  if (seconds <= machine.longestRun) return;
+  throw InputError(Diagnostic{
+      source, line, 0,
+      fmt::format("the run passes {:.4g} h of machining here ({:.4g} samples at {:g} ms): a longer run is refused "
+                  "(raise --max-hours to simulate it)",
+                  machine.longestRun / 3600, machine.longestRun / machine.cycle, machine.cycle * 1000)});
+}
+
+}  // namespace
 
 SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
                           const ProgressCallback& progress) {
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
   });
-  const InterpolationSummary summary = interpolate(program, machine, plan, sink, [&](double f) {
-    if (progress) progress(0.1 + 0.9 * f);
-  });
+  double planned = plan.holdBefore;
+  for (const PlannedSegment& segment : plan.segments) {
+    planned += segment.motionTime() + segment.holdAfter;
+    checkRunLength(planned, machine, program.moves[segment.move].line, program.source);
+  }
+  checkRunLength(planned, machine, 0, program.source);
+  InterpolationSummary summary;
+  try {
+    summary = interpolate(program, machine, plan, sink, [&](double f) {
+      if (progress) progress(0.1 + 0.9 * f);
+    });
+  } catch (const InputError& e) {
+    throw naming(e, program.source);
+  }
   SimulationReport report;
   report.samples = summary.samples;
   report.machiningTime = summary.duration;
@@ -29,8 +67,7 @@ StreamingSimulation::StreamingSimulation(const Machine& machine, const Vec3& sta
       planner_(machine, LimitBudget{}, source, window),
       source_(source),
       start_(start),
-      moveStart_(start),
-      firstMoveStart_(start) {
+      moveStart_(start) {
   report_.filterTime1 = planner_.filterTime1();
   report_.filterTime2 = planner_.filterTime2();
 }
@@ -45,13 +82,18 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
         throw InputError(
             Diagnostic{source_, moves[i].line, 0, "more than 4,294,967,295 moves: too many for a Biip block channel"});
       planner_.add(static_cast<std::uint32_t>(firstIndex + i), moves[i], moveStart_);
-      moves_.push_back(moves[i]);
+      // Only moves that may become segments wait for the interpolator: a program of millions
+      // of dwells or zero-length moves must not pile them up.
+      const bool standing = moves[i].kind == MoveKind::Dwell ||
+                            ((moves[i].kind == MoveKind::Linear || moves[i].kind == MoveKind::Rapid) &&
+                             moves[i].end == moveStart_);
+      if (!standing) moves_.push_back({firstIndex + i, moves[i], moveStart_});
       moveStart_ = moves[i].end;
       planner_.take(final_);
       if (!final_.empty()) interpolateFinalSegments();
     }
   } catch (const InputError& e) {
-    simulationError_ = e;
+    simulationError_ = naming(e, source_);
   }
 }
 
@@ -60,13 +102,14 @@ void StreamingSimulation::interpolateFinalSegments() {
     interpolator_ = std::make_unique<StreamingInterpolator>(machine_, start_, planner_.holdBefore(),
                                                             planner_.filterTime1(), planner_.filterTime2(), sink_);
   for (const PlannedSegment& segment : final_) {
-    // The moves before this segment's (dwells, zero-length moves, segments walked) are done.
-    while (firstMove_ < segment.move) {
-      firstMoveStart_ = moves_.front().end;
-      moves_.pop_front();
-      ++firstMove_;
-    }
-    interpolator_->add(segment, moves_.front(), firstMoveStart_);
+    // The moves before this segment's (segments walked) are done.
+    while (!moves_.empty() && moves_.front().index < segment.move) moves_.pop_front();
+    if (moves_.empty() || moves_.front().index != segment.move)
+      throw std::logic_error("a planned segment's move was not kept for the interpolator");
+    if (plannedTime_ == 0) plannedTime_ = planner_.holdBefore();
+    plannedTime_ += segment.motionTime() + segment.holdAfter;
+    checkRunLength(plannedTime_, machine_, moves_.front().move.line, source_);
+    interpolator_->add(segment, moves_.front().move, moves_.front().start);
     report_.pathLength += segment.length;
     ++report_.segments;
   }
@@ -75,10 +118,16 @@ void StreamingSimulation::interpolateFinalSegments() {
 
 SimulationReport StreamingSimulation::finish() {
   if (simulationError_) throw *simulationError_;
-  planner_.finish();
-  planner_.take(final_);
-  interpolateFinalSegments();
-  const InterpolationSummary summary = interpolator_->finish();
+  InterpolationSummary summary;
+  try {
+    planner_.finish();
+    planner_.take(final_);
+    interpolateFinalSegments();
+    checkRunLength(std::max(plannedTime_, planner_.holdBefore()), machine_, 0, source_);
+    summary = interpolator_->finish();
+  } catch (const InputError& e) {
+    throw naming(e, source_);
+  }
   report_.samples = summary.samples;
   report_.machiningTime = summary.duration;
   return report_;

@@ -25,7 +25,7 @@ class SelectionModel {
   void setTrajectory(const Trajectory* samples);
   const Trajectory* trajectory() const { return samples_; }
 
-  void selectSample(std::size_t sample);        // and its line; ignored when out of range
+  bool selectSample(std::size_t sample);        // and its line; false (ignored) when out of range
   // The first sample of the line, as the paper's locate does; with no sample the line alone.
   // Returns whether a sample was found.
   bool selectLine(std::uint32_t line);

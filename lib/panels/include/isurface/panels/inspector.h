@@ -41,7 +41,7 @@ class Inspector {
   // Lets background work finish and takes over its results (for snapshots and tests).
   void waitUntilIdle();
 
-  void selectSample(std::size_t sample);
+  bool selectSample(std::size_t sample);  // false when out of range
   bool selectLine(std::uint32_t line);
   void colourBy(const std::string& quantityName);  // "speed", "accel", ...
   // Re-optimises the G1 moves of the lines in the background; the new map then stands beside

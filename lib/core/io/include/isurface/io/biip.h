@@ -139,6 +139,7 @@ class BiipReader {
   void parseChannelTable(std::uint32_t channelCount);
   void parseMetadata(std::size_t tableEnd, std::uint32_t metadataBytes);
   void countRecords();
+  void checkTimeChannel() const;
   void unmap() noexcept;
 
   std::string path_;

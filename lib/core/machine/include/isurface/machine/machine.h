@@ -45,6 +45,9 @@ struct Machine {
   // control's machine units.
   ToolDiameters toolDiameters;
   bool toolTableInch = false;
+  // s; a simulated run longer than this is refused: its samples would fill the disk or memory
+  // (100 h at 1 ms is 360 million samples). Not part of the description: a command's option.
+  double longestRun = 100 * 3600.0;
 
   bool jerkLimited() const { return axes[0].maxJerk > 0 && axes[1].maxJerk > 0 && axes[2].maxJerk > 0; }
 };

@@ -57,9 +57,14 @@ class StreamingSimulation : public MoveSink {
   std::unique_ptr<StreamingInterpolator> interpolator_;  // once the dwell before the first motion is known
   Vec3 start_;
   Vec3 moveStart_;                 // where the next move handed over starts
-  std::deque<Move> moves_;         // from the move of the segment being interpolated on
-  std::uint64_t firstMove_ = 0;    // index of moves_.front()
-  Vec3 firstMoveStart_;            // where moves_.front() starts
+  // The moves that may become segments, from the one being interpolated on.
+  struct HeldMove {
+    std::uint64_t index;  // in the whole program
+    Move move;
+    Vec3 start;
+  };
+  std::deque<HeldMove> moves_;
+  double plannedTime_ = 0;  // s, of the segments handed to the interpolator and the dwells
   std::vector<PlannedSegment> final_;
   SimulationReport report_;
   std::optional<InputError> simulationError_;
