@@ -48,6 +48,8 @@ double maxJoinAngleDeg(const std::vector<CubicSegment>& segments) {
 
 int runFit(const FitOptions& o) {
   if (!(o.tolerance > 0)) badOption(o.input, "--tolerance must be > 0 mm");
+  // Finer than a nanometre, the resampled moves would number in the billions.
+  if (!(o.tolerance >= 1e-6 && o.tolerance <= 10)) badOption(o.input, "--tolerance must be from 1e-06 to 10 mm");
   LineRange range;
   try {
     range = parseLineRange(o.lines);

@@ -113,6 +113,8 @@ int runOptimize(const OptimizeCliOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, "give one of --lines A-B, --box X0,Y0,X1,Y1, --auto or --all"});
   if (!o.box.empty()) parseBox(o.box);  // a malformed box fails before any work
   if (!(o.chordTolerance > 0)) throw InputError(Diagnostic{"", 0, 0, "--tolerance must be greater than 0"});
+  if (!(o.chordTolerance >= 1e-6 && o.chordTolerance <= 10))
+    throw InputError(Diagnostic{"", 0, 0, "--tolerance must be from 1e-06 to 10 mm"});
   const OpenedRun opened = openRunOnTerminal({o.input, ""}, o.machine, false);
   const Machine& machine = opened.machine;
   const Program& program = *opened.program;

@@ -209,6 +209,7 @@ void writeInputs() {
   writeBytes("trace_line_frac.csv", "x,y,z,n\n0,0,0,1\n1,0,0,3.7\n");
   writeBytes("trace_line_huge.csv", "x,y,z,n\n0,0,0,1\n1,0,0,1e11\n");
   writeBytes("m_cycle_only.json", "{\"cycle_s\": 0.1}\n");
+  writeBytes("m_huge.json", "{\"comment\": \"" + std::string(3 << 20, 'x') + "\"}\n");
   writeBytes("m_misspelled.json", "{\"rapid_mm_mn\": 5000}\n");
   writeBytes("m_axis_misspelled.json", "{\"axes\": {\"z\": {\"max_jerk_mm_s\": 5000}}}\n");
   {  // the umich preset keeps every numeric column: 250 more than its own are too many channels
@@ -451,6 +452,18 @@ const std::vector<Row>& catalogue() {
        {"m_axis_misspelled.json", "axes.z.max_jerk_mm_s3"}, "m_typo2.biip"},
       {"sts_assignment", "sts --surface x=1 -o {out}/flat.nc", 2, {"'='", "assigns"}, "flat.nc"},
       {"sts_compound_assignment", "sts --surface y+=2 -o {out}/flat2.nc", 2, {"'='"}, "flat2.nc"},
+      {"sts_tiny_angle_step", "sts --surface toric --angle-step 1e-9 -o {out}/tiny_angle.nc", 2,
+       {"--angle-step", "contact points, more than"}, "tiny_angle.nc"},
+      {"sts_tiny_arc_step", "sts --surface toric --discretise arc --arc-step 1e-9 -o {out}/tiny_arc.nc", 2,
+       {"--arc-step", "contact points, more than"}, "tiny_arc.nc"},
+      {"sts_huge_samples", "sts --surface toric --samples 2000000000 -o {out}/many_samples.nc", 2,
+       {"--samples must be at most"}, "many_samples.nc"},
+      {"sts_huge_node_count", "sts --surface toric --uniform-nodes 999999999999 -o {out}/many_nodes.nc", 2,
+       {"--uniform-nodes must be at most"}, "many_nodes.nc"},
+      {"fit_absurd_tolerance", "fit {in}/good.nc --lines 2-3 --tolerance 1e-15", 2,
+       {"--tolerance must be from 1e-06 to 10 mm"}, ""},
+      {"machine_huge_file", "simulate {in}/good.nc --machine {in}/m_huge.json -o {out}/m_huge.biip", 2,
+       {"m_huge.json", "a machine description is at most 1 MB"}, "m_huge.biip"},
 
       // Outputs that cannot be written (canon documents exit code 1 for these)
       {"output_missing_dir_canon", "canon {in}/good.nc -o {out}/no_dir/a.txt", 2,

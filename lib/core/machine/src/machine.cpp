@@ -276,6 +276,13 @@ Machine loadMachine(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   noteInputFile(path);
   if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open machine description"});
+  // A description is a few hundred bytes; a JSON document held in memory takes many times its
+  // size, so a huge file is refused before it is read.
+  constexpr std::uintmax_t kLargestDescription = 1 << 20;
+  std::error_code sizeError;
+  const std::uintmax_t bytes = std::filesystem::file_size(path, sizeError);
+  if (!sizeError && bytes > kLargestDescription)
+    throw InputError(Diagnostic{path, 0, 0, fmt::format("{} bytes: a machine description is at most 1 MB", bytes)});
   std::ostringstream text;
   text << in.rdbuf();
   return parseMachine(text.str(), path);

@@ -39,6 +39,10 @@ StsJobResult runStsJob(const StsSurface& surface, const SpiralParameters& p, con
     throw InputError({"sts", 0, 0, "--spindle-rpm must be positive"});
   if (o.samplesPerSegment < 1) throw InputError({"sts", 0, 0, "--samples must be at least 1"});
   if (o.maxInserted < 0) throw InputError({"sts", 0, 0, "--max-inserted must not be negative"});
+  // Bounded up front: each costs that many surface evaluations per contact point or node.
+  if (o.samplesPerSegment > 10000) throw InputError({"sts", 0, 0, "--samples must be at most 10000"});
+  if (o.maxInserted > 1000) throw InputError({"sts", 0, 0, "--max-inserted must be at most 1000"});
+  if (o.uniformNodeCount > 20000000) throw InputError({"sts", 0, 0, "--uniform-nodes must be at most 20000000"});
   StsJobResult r;
   r.contactPoints = discretiseSpiral(surface, p, o.discretisation);
   r.discrete = discreteError(surface, p, r.contactPoints, o.samplesPerSegment);

@@ -14,6 +14,8 @@ namespace {
 // Halving stops below this step (rad): a surface with a jump could otherwise halve forever.
 constexpr double kSmallestAngleStep = 1e-9;
 constexpr int kMaxHalvings = 60;
+// A path of more contact points than this is no turning job (about 1.5 GB of points and nodes).
+constexpr std::size_t kMostContactPoints = 20000000;
 
 [[noreturn]] void badParameter(const std::string& message) {
   throw InputError({"sts", 0, 0, message});
@@ -50,6 +52,15 @@ void SpiralParameters::validate() const {
   if (feedPerRev > workpieceRadius) badParameter("--feed must not exceed the workpiece radius");
   // 10^7 revolutions of points would not fit in memory anyway.
   if (workpieceRadius / feedPerRev > 1e5) badParameter("--radius / --feed: too many revolutions");
+  // The steps bound the number of contact points ahead: refused before minutes of work.
+  const double byAngle = endAngle() / angleStep;
+  const double spiralLength = kPi * workpieceRadius * workpieceRadius / feedPerRev;  // mm, about
+  if (byAngle > kMostContactPoints)
+    badParameter(fmt::format("--angle-step {:.3g} deg makes {:.3g} contact points, more than {:.3g}: give a larger step",
+                             angleStep * kDegreesPerRadian, byAngle, double(kMostContactPoints)));
+  if (spiralLength / arcStep > kMostContactPoints)
+    badParameter(fmt::format("--arc-step {:.3g} mm makes {:.3g} contact points, more than {:.3g}: give a larger step",
+                             arcStep, spiralLength / arcStep, double(kMostContactPoints)));
 }
 
 double SpiralParameters::endAngle() const { return kTwoPi * workpieceRadius / feedPerRev; }
@@ -109,6 +120,10 @@ std::vector<SpiralPoint> discretiseSpiral(const StsSurface& surface, const Spira
       }
     }
     points.push_back(next);
+    // Equal height halves its steps where the surface is steep: no estimate bounds it ahead.
+    if (points.size() > kMostContactPoints)
+      badParameter(fmt::format("more than {:.3g} contact points: give a larger --height-step or --arc-step",
+                               double(kMostContactPoints)));
   }
   return points;
 }
