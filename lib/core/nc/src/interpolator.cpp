@@ -52,13 +52,34 @@ class MovingAverage3 {
   unsigned pushesSinceResum_ = 0;
 };
 
+// A sample is labelled with a neighbouring block only when it is this much nearer to its
+// segment (mm): where the path goes straight on, both are as near.
+constexpr double kRelabelMargin = 0.0005;
+// How far before a junction (mm, along the direction there) a neighbour is still looked at.
+constexpr double kJunctionMargin = 0.01;
+
+// A power of two at least n: the ring of tags is indexed by a mask, not a division.
+std::size_t ringSize(int n) {
+  std::size_t size = 1;
+  while (size < static_cast<std::size_t>(n)) size *= 2;
+  return size;
+}
+
 int taps(double time, double cycle) {
   return time > 0 ? 2 * static_cast<int>(std::lround((time / cycle - 1.0) / 2.0)) + 1 : 1;
 }
 
 struct SampleTag {
   std::uint32_t line, block;
-  double feedMmMin;  // programmed feed (the rapid rate on a G0), for the `feed` channel
+  double feedMmMin;           // programmed feed (the rapid rate on a G0), for the `feed` channel
+  std::uint32_t segment = 0;  // its geometry's place in the interpolator's ring of segments
+};
+
+// A segment the filters' window still reaches, for labelling the samples near its ends.
+struct RecentSegment {
+  std::uint32_t block;
+  PathSegment geometry;
+  Vec3 startTangent, endTangent;
 };
 
 // A segment of the plan with what walking it needs.
@@ -106,6 +127,7 @@ class ProfileWalker {
                      q.move.kind == MoveKind::Rapid ? rapidFeedMmMin : static_cast<double>(q.move.feed)};
   }
   void advance(double dt) { tau_ += dt; }
+  const PathSegment& geometry() const { return geometry_; }
 
  private:
   void enter() {
@@ -156,7 +178,9 @@ struct StreamingInterpolator::Impl {
         jerkFilter(taps(filterTime1, m.cycle), startPosition),
         cornerFilter(taps(filterTime2, m.cycle), startPosition),
         delay(jerkFilter.lag() + cornerFilter.lag()),
-        tags(delay + 1),
+        tags(ringSize(2 * delay + 1)),
+        pendingChanges(tags.size()),
+        segments(tags.size()),
         servos{AxisServo(m.axes[0], m.cycle, startPosition[0]), AxisServo(m.axes[1], m.cycle, startPosition[1]),
                AxisServo(m.axes[2], m.cycle, startPosition[2])} {
     batch.reserve(kBatch);
@@ -191,14 +215,53 @@ struct StreamingInterpolator::Impl {
     batch.clear();
   }
   void push(const Vec3& raw, const SampleTag& tag) {
-    const std::size_t slot = rawIndex % tags.size();
-    tags[slot] = tag;
+    if (rawIndex > 0 && tag.block != tagOf(rawIndex - 1).block) pendingChanges[changesIn++ & ringMask()] = rawIndex;
+    tags[rawIndex & ringMask()] = tag;
     const Vec3 smoothed = cornerFilter.push(jerkFilter.push(raw));
     // The filters start moving `delay` cycles before the profile does: those samples belong
     // to the first move too.
-    emit(smoothed, rawIndex >= static_cast<std::uint64_t>(delay) ? tags[(rawIndex + 1) % tags.size()] : tags[0]);
+    emit(smoothed, rawIndex >= static_cast<std::uint64_t>(delay) ? nearestLabel(smoothed) : tags[0]);
     ++rawIndex;
   }
+  // The output stands for the raw profile `delay` cycles back, but averaged over the cycles
+  // around it: where a block ends within that window, the sample may lie on the next (or the
+  // previous) block's segment. It is labelled with the block whose segment it is nearest to,
+  // so that a pick there names the line the tool is on.
+  SampleTag nearestLabel(const Vec3& p) {
+    const std::uint64_t centre = rawIndex - static_cast<std::uint64_t>(delay);
+    // The changes of block at or before the centre have passed it: the last is the one before.
+    while (changesOut < changesIn && pendingChanges[changesOut & ringMask()] <= centre)
+      lastChange = pendingChanges[changesOut++ & ringMask()];
+    const SampleTag& own = tagOf(centre);
+    const bool hasNext = changesOut < changesIn;
+    // The block before the last change, while its samples are still in the filters' window.
+    const bool hasPrevious = lastChange != kNoChange && lastChange + static_cast<std::uint64_t>(delay) > centre;
+    if (!hasNext && !hasPrevious) return own;
+    SampleTag chosen = own;
+    double best = -1;  // the distance to the own segment, once needed
+    const auto consider = [&](const SampleTag& other) {
+      if (best < 0) best = segmentOf(own).geometry.nearest(p).distance;
+      const double d = segmentOf(other).geometry.nearest(p).distance;
+      if (d < best - kRelabelMargin) best = d, chosen = other;
+    };
+    // A neighbour can be nearer only past the junction, along its direction there (with a
+    // margin for a curving arc): most samples are decided without a distance.
+    if (hasNext) {
+      const SampleTag& next = tagOf(pendingChanges[changesOut & ringMask()]);
+      const RecentSegment& n = segmentOf(next);
+      if ((p - n.geometry.start).dot(n.startTangent) > -kJunctionMargin) consider(next);
+    }
+    if (hasPrevious) {
+      const SampleTag& previous = tagOf(lastChange - 1);
+      const RecentSegment& b = segmentOf(previous);
+      if ((p - b.geometry.end).dot(b.endTangent) < kJunctionMargin) consider(previous);
+    }
+    return chosen;
+  }
+  std::uint64_t ringMask() const { return tags.size() - 1; }
+  const SampleTag& tagOf(std::uint64_t raw) const { return tags[raw & ringMask()]; }
+  const RecentSegment& segmentOf(const SampleTag& tag) const { return segments[tag.segment & ringMask()]; }
+
   // Samples every cycle whose position is known.
   void run(bool final) {
     const double cycle = machine.cycle;
@@ -208,7 +271,14 @@ struct StreamingInterpolator::Impl {
         advanced = false;
       }
       if (!walker.active()) return;
+      const std::uint32_t previousBlock = lastTag.block;
       lastTag = walker.tag(mmPerSToMmPerMin(machine.rapidVelocity));
+      // A ring as long as the tags' holds every segment a tag in the window can name.
+      if (rawIndex == 0 || lastTag.block != previousBlock) {
+        const PathSegment& g = walker.geometry();
+        segments[++segmentsIn & ringMask()] = {lastTag.block, g, g.startTangent(), g.endTangent()};
+      }
+      lastTag.segment = segmentsIn;
       push(walker.position(), lastTag);
       walker.advance(cycle);
       advanced = true;
@@ -224,7 +294,16 @@ struct StreamingInterpolator::Impl {
   const double holdBefore;
   MovingAverage3 jerkFilter, cornerFilter;
   const int delay;
+  // Rings (a power of two, at least 2 delay + 1 long): the tags of the last raw samples, the
+  // raw indices where the block changes after the centre of the filters' window, and the
+  // segments the tags name.
   std::vector<SampleTag> tags;
+  std::vector<std::uint64_t> pendingChanges;
+  std::vector<RecentSegment> segments;
+  std::uint64_t changesIn = 0, changesOut = 0;
+  static constexpr std::uint64_t kNoChange = ~std::uint64_t{0};
+  std::uint64_t lastChange = kNoChange;  // the last change at or before the centre
+  std::uint32_t segmentsIn = 0;
   std::array<AxisServo, 3> servos;
   std::vector<SimSample> batch;
   std::uint64_t rawIndex = 0, samples = 0;

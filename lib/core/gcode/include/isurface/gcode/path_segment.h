@@ -3,7 +3,16 @@
 #include "isurface/gcode/arc.h"
 #include "isurface/gcode/program.h"
 
+#include <limits>
+
 namespace isurface {
+
+// The point of a segment nearest to a given point.
+struct PathPoint {
+  double distance = std::numeric_limits<double>::infinity();  // mm
+  Vec3 tangent = Vec3::Zero();  // unit direction of travel there (zero on a degenerate move)
+  double along = 0;             // mm of the move's length before the nearest point
+};
 
 struct PathSegment {
   bool arc = false;
@@ -21,6 +30,8 @@ struct PathSegment {
   Vec3 at(double s) const;
   Vec3 startTangent() const { return arc ? arcGeometry.tangentAt(0) : direction; }
   Vec3 endTangent() const { return arc ? arcGeometry.tangentAt(1) : direction; }
+  // The nearest point to `p` (on arcs: found within 1 nm of arc length).
+  PathPoint nearest(const Vec3& p) const;
 };
 
 }  // namespace isurface
