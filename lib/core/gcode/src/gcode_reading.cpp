@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstring>
+#include <optional>
 
 #include "interpreter_state.h"
 #include "isurface/gcode/line_ends.h"
@@ -53,6 +54,21 @@ void InterpreterState::streamTo(MoveSink& sink, std::size_t chunkMoves, std::fun
 
 void InterpreterState::deliverMoves(bool all) {
   const std::size_t last = all ? moves_.size() : firstHeldMove();
+  // The moves handed over without a copy when only a few at the end are held (the last one,
+  // which a later block may still mark as a stop): those few are set aside and put back.
+  constexpr std::size_t kHeldAside = 4;
+  const std::size_t held = moves_.size() - last;
+  if (last > 0 && held <= kHeldAside && moves_.size() <= chunkMoves_ + 64) {
+    Move aside[kHeldAside];
+    std::copy(moves_.begin() + static_cast<std::ptrdiff_t>(last), moves_.end(), aside);
+    moves_.resize(last);
+    if (sink_->adopt(moves_, delivered_)) {
+      delivered_ += last;
+      moves_.assign(aside, aside + held);
+      return;
+    }
+    moves_.insert(moves_.end(), aside, aside + held);
+  }
   std::size_t first = 0;
   while (first < last) {
     const std::size_t count = std::min(chunkMoves_, last - first);
@@ -72,7 +88,7 @@ void InterpreterState::run(std::string_view text) {
   const char* const begin = text.data();
   const char* const end = begin + text.size();
   if (sink_) {
-    moves_.reserve(chunkMoves_ + 16);
+    moves_.reserve(chunkMoves_ + 64);
   } else {
     result_.program.lineCount = clampToU32(countLines(begin, end));
     // One move per line is the common case; a line of a move is rarely under 8 bytes.
@@ -152,7 +168,11 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
     errorColumn_ = lexError.column + shift;
     errorMessage_ = std::move(lexError.message);
   } else {
-    const ModalState saved = state_;
+    // A bad block has no effect: with --keep-going the interpretation goes on as if it were
+    // not there, so its modal changes are undone; without, it ends at the block, and a million
+    // good blocks need not copy the modal state for nothing.
+    std::optional<ModalState> saved;
+    if (options_.keepGoing) saved = state_;
     // Only a block under compensation has compensation to undo (one that turns it on and fails
     // turns it off again below).
     std::optional<CompensationSnapshot> compBefore;
@@ -162,7 +182,7 @@ bool InterpreterState::runBlock(const char* begin, const char* end) {
       if (parameters_.hasStaged()) parameters_.commit();
       return true;
     }
-    state_ = saved;  // a bad block has no effect
+    if (saved) state_ = *saved;
     moves_.resize(movesBefore);
     if (compBefore) {
       restoreCompensation(*compBefore);

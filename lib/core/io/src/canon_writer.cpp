@@ -266,6 +266,21 @@ class PipelinedCanonWriter final : public MoveSink {
     }
   }
 
+  bool adopt(std::vector<Move>& moves, std::uint64_t) override {
+    if (!threadTried_) start();
+    if (!thread_.joinable()) return false;
+    std::vector<Move>& batch = emptyBatch();
+    batch.clear();
+    batch.swap(moves);  // the interpreter goes on in the batch's room
+    bool wake;
+    {
+      const std::lock_guard<std::mutex> lock(mutex_);
+      wake = ++queued_ >= kWakeAt && formatterAsleep_;
+    }
+    if (wake) ready_.notify_one();
+    return true;
+  }
+
   // Waits until every move is formatted and written; passes on what the formatting threw.
   void finish() {
     stop(false);
@@ -283,7 +298,8 @@ class PipelinedCanonWriter final : public MoveSink {
 
   void start() {
     threadTried_ = true;
-    for (auto& batch : batches_) batch.reserve(kBatchMoves);
+    // As much room as the interpreter keeps for a chunk: batches and its buffer trade places.
+    for (auto& batch : batches_) batch.reserve(kBatchMoves + 64);
     try {
       thread_ = std::thread([this] { formatQueued(); });
     } catch (const std::system_error&) {

@@ -19,6 +19,13 @@ class MoveSink {
   // `count` consecutive moves; `firstIndex` is the index of moves[0] in the whole program.
   // The moves are final: no later block changes them.
   virtual void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) = 0;
+  // The same for every move in `moves`, which the sink may take whole by swapping the vector
+  // with an empty one of its own (returning true) instead of copying them; false: consume()
+  // is called instead.
+  virtual bool adopt(std::vector<Move>& moves, std::uint64_t firstIndex) {
+    (void)moves, (void)firstIndex;
+    return false;
+  }
 };
 
 // What interpretGcodeStream leaves besides the moves: a Program without its moves.
