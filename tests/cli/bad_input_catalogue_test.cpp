@@ -456,6 +456,8 @@ const std::vector<Row>& catalogue() {
        {"--angle-step", "contact points, more than"}, "tiny_angle.nc"},
       {"sts_tiny_arc_step", "sts --surface toric --discretise arc --arc-step 1e-9 -o {out}/tiny_arc.nc", 2,
        {"--arc-step", "contact points, more than"}, "tiny_arc.nc"},
+      {"sts_too_steep_for_height_step", "sts --surface x^25 -o {out}/steep.nc", 2,
+       {"rises more than --height-step"}, "steep.nc"},
       {"sts_huge_samples", "sts --surface toric --samples 2000000000 -o {out}/many_samples.nc", 2,
        {"--samples must be at most"}, "many_samples.nc"},
       {"sts_huge_node_count", "sts --surface toric --uniform-nodes 999999999999 -o {out}/many_nodes.nc", 2,

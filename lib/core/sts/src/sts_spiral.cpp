@@ -14,8 +14,12 @@ namespace {
 // Halving stops below this step (rad): a surface with a jump could otherwise halve forever.
 constexpr double kSmallestAngleStep = 1e-9;
 constexpr int kMaxHalvings = 60;
-// A path of more contact points than this is no turning job (about 1.5 GB of points and nodes).
-constexpr std::size_t kMostContactPoints = 20000000;
+// A path of more contact points than this is no turning job: a real one has thousands (a
+// 20 mm part at 0.5 mm/rev and 5 degrees: 2,880), and each costs surface evaluations.
+constexpr std::size_t kMostContactPoints = 2000000;
+// Halving the step for the height rule evaluates the surface again each time; a surface too
+// steep for the height step would halve at every point down to 1e-9 rad.
+constexpr std::size_t kMostHeightEvaluations = 20000000;
 
 [[noreturn]] void badParameter(const std::string& message) {
   throw InputError({"sts", 0, 0, message});
@@ -94,12 +98,18 @@ std::vector<SpiralPoint> discretiseSpiral(const StsSurface& surface, const Spira
   const double end = p.endAngle();
   std::vector<SpiralPoint> points{spiralContactPoint(surface, p, 0.0)};
   // Halves the step until the height difference is allowed (Figure 3).
+  std::size_t evaluations = 0;
   auto limitHeight = [&](const SpiralPoint& from, double candidate) {
     SpiralPoint next = spiralContactPoint(surface, p, candidate);
     for (int i = 0; i < kMaxHalvings && std::abs(next.z - from.z) > p.heightStep &&
                     next.theta - from.theta > kSmallestAngleStep;
-         ++i)
+         ++i) {
+      if (++evaluations > kMostHeightEvaluations)
+        badParameter(fmt::format("the surface rises more than --height-step {:g} mm between points too close to "
+                                 "count (at r = {:.4g} mm): give a larger --height-step",
+                                 p.heightStep, next.r));
       next = spiralContactPoint(surface, p, 0.5 * (from.theta + next.theta));
+    }
     return next;
   };
   while (points.back().theta < end) {
