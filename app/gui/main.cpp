@@ -106,17 +106,45 @@ void tellState(const isurface::panels::Inspector& inspector, std::string& told) 
   if (std::rename(temporary.c_str(), path) == 0) told = std::move(state);
 }
 
-void setWindowIcon(GLFWwindow* window, const std::string& path) {
-  if (path.empty()) return;
+void setWindowIcon(GLFWwindow* window, const std::string& png) {
+  if (png.empty()) return;
   GLFWimage icon;
   int channels = 0;
-  icon.pixels = stbi_load(path.c_str(), &icon.width, &icon.height, &channels, 4);
+  icon.pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(png.data()), static_cast<int>(png.size()),
+                                      &icon.width, &icon.height, &channels, 4);
   if (!icon.pixels) return;
   glfwSetWindowIcon(window, 1, &icon);
   stbi_image_free(icon.pixels);
 }
 
+constexpr const char* kUsage = R"(Usage: isurface [FILE...]
+
+iSurface: NC interpolation quality maps in a window. Opens the G-code programs, Biip dumps
+(Biip.dat) and machine traces (LinuxCNC halsampler text, CSV) named, a dump or trace after its
+program joining it; a program without a dump is simulated with the machine chosen in the window
+(the built-in 3-axis machining centre at first). Files may also be dropped on the window or
+opened with File > Open (Ctrl+O).
+
+In the window: click the surface to pick a sample (every panel follows: the G-code line, the
+data bar, the inspector); click a G-code line to find it on the surface; drag to rotate, scroll
+to zoom; P re-optimises a region, M edits the machine, H lists every key. Settings (window size,
+theme, units, recent files) are kept in $XDG_CONFIG_HOME/isurface/settings.json.
+
+Options:
+  -h, --help               print this help and exit
+  --version                print the version and exit
+  --exit-after-frames N    quit by itself N frames after everything named has loaded
+
+The headless jobs (render, simulate, analyze, optimize, ...) are isurface-cli's: see
+isurface-cli(1).
+)";
+
 int run(int argc, char** argv) {
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg == "-h" || arg == "--help") return std::fputs(kUsage, stdout) >= 0 && std::fflush(stdout) == 0 ? 0 : 1;
+    if (arg == "--version") return std::printf("isurface %s\n", ISURFACE_VERSION) > 0 && std::fflush(stdout) == 0 ? 0 : 1;
+  }
   glfwSetErrorCallback([](int code, const char* text) { std::fprintf(stderr, "GLFW error %d: %s\n", code, text); });
   if (!glfwInit()) {
     std::fprintf(stderr, "isurface: cannot open a window (no display?); isurface-cli does the headless work\n");
@@ -140,7 +168,7 @@ int run(int argc, char** argv) {
   ImGui::CreateContext();
   const isurface::panels::UiLook look = isurface::panels::uiLook();
   isurface::panels::applyUiLook(look);
-  setWindowIcon(window, look.iconFile);
+  setWindowIcon(window, look.iconPng);
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; settings.json keeps the rest
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetKeyCallback(window, onKey);  // in front of Dear ImGui's, which it calls

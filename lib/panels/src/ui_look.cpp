@@ -20,9 +20,7 @@ UiLook uiLook() {
     }
   }
   look.fontSize = settings.value("font_size_px", 14.0f);
-  const std::string icon = std::string(ISURFACE_RESOURCE_DIR) + "/" + settings.value("window_icon", std::string());
-  std::error_code error;
-  if (std::filesystem::is_regular_file(icon, error)) look.iconFile = icon;
+  look.iconPng = vis::resourceText("resources/" + settings.value("window_icon", std::string()));
   return look;
 }
 

@@ -7,7 +7,7 @@ namespace isurface::panels {
 struct UiLook {
   std::string fontFile;   // "" when none of the listed fonts exists: ImGui's own font
   float fontSize = 14;    // pixels
-  std::string iconFile;   // absolute path of the window icon PNG ("" when missing)
+  std::string iconPng;    // the window icon, PNG bytes (compiled in: no file is looked for)
 };
 
 UiLook uiLook();
