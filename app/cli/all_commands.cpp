@@ -7,7 +7,7 @@ namespace isurface::cli {
 
 std::vector<Command> allCommands() {
   std::vector<Command> all = plainCommands();
-  for (Command c : {analyzeCommand(), compareCommand(), exportCommand(), optimizeCommand(), renderCommand(),
+  for (Command c : {analyzeCommand(), compareCommand(), exportCommand(), optimizeCommand(), renderCommand(), reportCommand(),
                     stsCommand(), uiSnapshotCommand()})
     all.push_back(std::move(c));
   std::sort(all.begin(), all.end(), [](const Command& a, const Command& b) { return a.name < b.name; });

@@ -26,6 +26,7 @@ Command intervalsCommand();
 Command locateCommand();
 Command optimizeCommand();
 Command renderCommand();
+Command reportCommand();
 Command sampleCommand();
 Command simulateCommand();
 Command stsCommand();

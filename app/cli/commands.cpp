@@ -11,7 +11,7 @@ std::vector<Command> plainCommands() {
 }
 
 bool drawsPictures(const std::string& command) {
-  static const char* const kDrawing[] = {"analyze", "compare", "export", "optimize", "render", "sts", "ui-snapshot"};
+  static const char* const kDrawing[] = {"analyze", "compare", "export", "optimize", "render", "report", "sts", "ui-snapshot"};
   return std::find(std::begin(kDrawing), std::end(kDrawing), command) != std::end(kDrawing);
 }
 

@@ -9,6 +9,7 @@
 #include <vtkImageData.h>
 
 #include <chrono>
+#include <functional>
 #include <cstring>
 #include <string_view>
 
@@ -31,8 +32,7 @@ std::string pngOfRgb(const unsigned char* rgbBottomFirst, int width, int height)
   return std::string(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
 }
 
-double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int height, const std::string& path) {
-  const auto start = std::chrono::steady_clock::now();
+std::string renderOffscreen(int width, int height, const std::function<void(vtkRenderWindow*)>& draw) {
   OsMesaContext context(width, height);
   auto window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
   window->SetSize(width, height);
@@ -53,8 +53,7 @@ double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int heigh
   window->AddObserver(vtkCommand::WindowMakeCurrentEvent, makeCurrent);
   window->AddObserver(vtkCommand::WindowIsCurrentEvent, isCurrent);
   window->InitializeFromCurrentContext();
-  scene.attachTo(window);
-  scene.syncAxes();
+  draw(window);
   window->Render();
 
   auto grab = vtkSmartPointer<vtkWindowToImageFilter>::New();
@@ -67,9 +66,21 @@ double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int heigh
   png->WriteToMemoryOn();
   png->Write();
   vtkUnsignedCharArray* bytes = png->GetResult();
-  writeFileAtomically(path, std::string_view(reinterpret_cast<const char*>(bytes->GetPointer(0)),
-                                             static_cast<std::size_t>(bytes->GetNumberOfValues())));
+  std::string out(reinterpret_cast<const char*>(bytes->GetPointer(0)), static_cast<std::size_t>(bytes->GetNumberOfValues()));
   window->Finalize();
+  return out;
+}
+
+std::string renderSceneToPngBytes(QualityScene& scene, int width, int height) {
+  return renderOffscreen(width, height, [&](vtkRenderWindow* window) {
+    scene.attachTo(window);
+    scene.syncAxes();
+  });
+}
+
+double renderSceneToPng(isurface::vis::QualityScene& scene, int width, int height, const std::string& path) {
+  const auto start = std::chrono::steady_clock::now();
+  writeFileAtomically(path, renderSceneToPngBytes(scene, width, height));
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 

@@ -1,0 +1,105 @@
+#include "report_html.h"
+
+#include <cstdint>
+
+namespace isurface::cli {
+
+std::string escapeHtml(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default:
+        // Control bytes of a program (a NUL, a lone carriage return) are not text.
+        if (static_cast<unsigned char>(c) < 0x20 && c != '\t') out += "\xEF\xBF\xBD";
+        else out += c;
+    }
+  }
+  return out;
+}
+
+std::string base64(std::string_view bytes) {
+  static const char* const kAlphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  std::size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const std::uint32_t v = (std::uint32_t(std::uint8_t(bytes[i])) << 16) | (std::uint32_t(std::uint8_t(bytes[i + 1])) << 8) |
+                            std::uint8_t(bytes[i + 2]);
+    out += kAlphabet[v >> 18], out += kAlphabet[(v >> 12) & 63], out += kAlphabet[(v >> 6) & 63], out += kAlphabet[v & 63];
+  }
+  if (i < bytes.size()) {
+    std::uint32_t v = std::uint32_t(std::uint8_t(bytes[i])) << 16;
+    if (i + 1 < bytes.size()) v |= std::uint32_t(std::uint8_t(bytes[i + 1])) << 8;
+    out += kAlphabet[v >> 18], out += kAlphabet[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? kAlphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+HtmlDocument::HtmlDocument(const std::string& title) : title_(title) {}
+
+void HtmlDocument::heading(int level, const std::string& text, const std::string& id) {
+  const std::string tag = "h" + std::to_string(level);
+  body_ += "<" + tag + (id.empty() ? "" : " id=\"" + escapeHtml(id) + "\"") + ">" + escapeHtml(text) + "</" + tag + ">\n";
+}
+
+void HtmlDocument::paragraph(const std::string& text) { body_ += "<p>" + escapeHtml(text) + "</p>\n"; }
+
+void HtmlDocument::table(const std::vector<std::vector<std::string>>& rows, const std::string& cssClass) {
+  body_ += "<table" + (cssClass.empty() ? std::string() : " class=\"" + cssClass + "\"") + ">\n";
+  for (std::size_t r = 0; r < rows.size(); ++r) {
+    const char* cell = r == 0 ? "th" : "td";
+    body_ += "<tr>";
+    for (const std::string& text : rows[r]) body_ += std::string("<") + cell + ">" + escapeHtml(text) + "</" + cell + ">";
+    body_ += "</tr>\n";
+  }
+  body_ += "</table>\n";
+}
+
+void HtmlDocument::image(const std::string& png, const std::string& caption, const std::string& cssClass) {
+  body_ += "<figure" + (cssClass.empty() ? std::string() : " class=\"" + cssClass + "\"") +
+           "><img alt=\"" + escapeHtml(caption) + "\" src=\"data:image/png;base64," + base64(png) + "\"><figcaption>" +
+           escapeHtml(caption) + "</figcaption></figure>\n";
+}
+
+void HtmlDocument::code(const std::vector<std::pair<std::uint32_t, std::string>>& numberedLines, std::uint32_t mark) {
+  body_ += "<pre class=\"gcode\">";
+  for (const auto& [number, text] : numberedLines) {
+    const bool marked = number == mark;
+    body_ += std::string(marked ? "<mark>" : "") + "<span class=\"ln\">" + std::to_string(number) + "</span>" +
+             escapeHtml(text) + (marked ? "</mark>" : "") + "\n";
+  }
+  body_ += "</pre>\n";
+}
+
+void HtmlDocument::openSection(const std::string& id, const std::string& cssClass) {
+  body_ += "<section id=\"" + escapeHtml(id) + "\"" + (cssClass.empty() ? "" : " class=\"" + cssClass + "\"") + ">\n";
+}
+
+void HtmlDocument::closeSection() { body_ += "</section>\n"; }
+
+std::string HtmlDocument::finish() const {
+  return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + escapeHtml(title_) +
+         "</title>\n<style>\n"
+         "body{font-family:'DejaVu Sans',Arial,sans-serif;margin:2em auto;max-width:1100px;color:#222;line-height:1.4}\n"
+         "h1{border-bottom:2px solid #2c6fbb}h2{margin-top:1.6em;border-bottom:1px solid #ccc}\n"
+         "table{border-collapse:collapse;margin:.6em 0}th,td{border:1px solid #bbb;padding:.25em .6em;text-align:left}\n"
+         "th{background:#eef3fa}td.num{text-align:right}\n"
+         ".maps{display:flex;flex-wrap:wrap;gap:1em}.maps figure{flex:1 1 45%;max-width:49%}figure{margin:.4em 0}figure img{max-width:100%;border:1px solid #ddd}\n"
+         "figcaption{font-size:.85em;color:#555}\n"
+         "pre.gcode{background:#f7f7f7;border:1px solid #ddd;padding:.5em;font-size:.85em;overflow-x:auto}\n"
+         "pre.gcode .ln{display:inline-block;width:4.5em;color:#888;user-select:none}mark{background:#ffe08a}\n"
+         ".near{background:#fde2e1}\n"
+         "@media print{body{max-width:none;margin:0}section{page-break-inside:avoid}h2{page-break-before:auto}}\n"
+         "</style>\n</head>\n<body>\n" +
+         body_ + "</body>\n</html>\n";
+}
+
+}  // namespace isurface::cli

@@ -1,0 +1,35 @@
+#pragma once
+// A self-contained HTML document: text escaped, images embedded as data URIs, a style that
+// reads on screen and prints. No script, no link to anything outside the file.
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace isurface::cli {
+
+std::string escapeHtml(std::string_view text);
+std::string base64(std::string_view bytes);
+
+class HtmlDocument {
+ public:
+  explicit HtmlDocument(const std::string& title);
+
+  void heading(int level, const std::string& text, const std::string& id = "");
+  void paragraph(const std::string& text);
+  // A table: the first row is the header.
+  void table(const std::vector<std::vector<std::string>>& rows, const std::string& cssClass = "");
+  // A PNG, embedded, with its alternative text as caption.
+  void image(const std::string& png, const std::string& caption, const std::string& cssClass = "");
+  // Lines of G-code with their line numbers; `mark` is highlighted.
+  void code(const std::vector<std::pair<std::uint32_t, std::string>>& numberedLines, std::uint32_t mark);
+  void openSection(const std::string& id, const std::string& cssClass = "");
+  void closeSection();
+  void raw(const std::string& html) { body_ += html; }
+
+  std::string finish() const;
+
+ private:
+  std::string title_, body_;
+};
+
+}  // namespace isurface::cli

@@ -1,0 +1,107 @@
+// The HTML report: one self-contained file (every image embedded and decodable, nothing loaded
+// from elsewhere) with its sections, and every region it lists with its G-code lines; opened
+// in a real headless browser when Debian's Chromium is installed.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <cstring>
+#include <string>
+
+#include "image_compare.h"
+#include "test_support.h"
+
+namespace fs = std::filesystem;
+using isurface::test::readPng;
+using isurface::test::runCli;
+using isurface::test::runShell;
+using isurface::test::scratchDir;
+
+namespace {
+
+std::string readAll(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+std::string decodeBase64(const std::string& text) {
+  std::string out;
+  int bits = 0, value = 0;
+  for (const char c : text) {
+    const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    const char* at = std::strchr(alphabet, c);
+    if (c == '=' || !at || !*at) break;
+    value = (value << 6) | int(at - alphabet);
+    bits += 6;
+    if (bits >= 8) out += char((value >> (bits -= 8)) & 0xff);
+  }
+  return out;
+}
+
+// Writes the report of `program` and checks it; returns the HTML path.
+std::string checkReport(const std::string& name, const std::string& program) {
+  const std::string html = (scratchDir() / (name + ".html")).string(), json = (scratchDir() / (name + ".json")).string();
+  const auto r = runCli("report " + program + " -o " + html + " --json " + json + " --regions 3");
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = readAll(html);
+  for (const char* section : {"summary", "maps", "regions", "limits"})
+    EXPECT_NE(text.find(std::string("<section id=\"") + section + "\""), std::string::npos) << section;
+  // Self-contained: nothing fetched, nothing run.
+  EXPECT_EQ(text.find("http://"), std::string::npos);
+  EXPECT_EQ(text.find("https://"), std::string::npos);
+  EXPECT_EQ(text.find("<script"), std::string::npos);
+  // Found by hand: std::regex recurses once a character, too deep for an image's hundred kilobytes.
+  const std::string prefix = "src=\"data:image/png;base64,";
+  int images = 0;
+  for (std::size_t at = text.find(prefix); at != std::string::npos; at = text.find(prefix, at + 1)) {
+    const std::size_t begin = at + prefix.size(), end = text.find('"', begin);
+    if (end == std::string::npos) break;
+    const std::string png = (scratchDir() / (name + "-image.png")).string();
+    std::ofstream(png, std::ios::binary) << decodeBase64(text.substr(begin, end - begin));
+    const auto decoded = readPng(png);
+    EXPECT_FALSE(decoded.empty()) << "image " << images << " does not decode";
+    ++images;
+  }
+  EXPECT_GE(images, 8);
+  const nlohmann::json figures = nlohmann::json::parse(readAll(json));
+  for (const auto& region : figures["regions"]) {
+    const std::string lines = "Lines " + std::to_string(region["first_line"].get<int>()) + "-" +
+                              std::to_string(region["last_line"].get<int>());
+    EXPECT_NE(text.find(lines), std::string::npos) << lines;
+    const std::string worst = "<span class=\"ln\">" + std::to_string(region["worst_line"].get<int>()) + "</span>";
+    EXPECT_NE(text.find(worst), std::string::npos) << "the worst line's G-code: " << worst;
+  }
+  EXPECT_EQ(figures["axes"].size(), 3u);
+  return html;
+}
+
+}  // namespace
+
+TEST(Report, ABundledSample) {
+  const std::string html = checkReport("transition", std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc");
+  EXPECT_NE(readAll(html).find("Programmed feeds"), std::string::npos);
+}
+
+TEST(Report, AProgramWrittenByOthers) {
+  const std::string program = std::string(ISURFACE_SHARED_DIR) + "/realdata/linuxcnc_test.ngc";
+  if (!fs::exists(program)) GTEST_SKIP() << program << " is not here";
+  checkReport("linuxcnc-test", program);
+}
+
+// The page as a reader sees it: Debian's Chromium (apt-get install chromium) draws it headless.
+TEST(Report, OpensInABrowserAndIsNotBlank) {
+  if (!fs::exists("/usr/bin/chromium")) GTEST_SKIP() << "Debian's chromium is not installed";
+  const std::string html = checkReport("browser", std::string(ISURFACE_SOURCE_DIR) + "/samples/cola-bottle-bottom.nc");
+  const std::string shot = (scratchDir() / "report-shot.png").string();
+  const auto r = runShell("timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
+                          "--window-size=1200,1600 --enable-logging=stderr --v=0 --screenshot=" + shot + " file://" + html);
+  EXPECT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.err.find("CONSOLE"), std::string::npos) << r.err;
+  const auto image = readPng(shot);
+  ASSERT_FALSE(image.empty());
+  std::size_t coloured = 0;
+  for (std::size_t i = 0; i + 2 < image.rgb.size(); i += 3)
+    if (image.rgb[i] < 200 || image.rgb[i + 1] < 200 || image.rgb[i + 2] < 200) ++coloured;
+  EXPECT_GT(coloured, image.rgb.size() / 3 / 20) << "the page is nearly blank";
+}
