@@ -2,6 +2,9 @@
 // quality maps, the worst regions with their G-code and the speed over them, and how close each
 // axis came to the machine's limits.
 #include <algorithm>
+#include <cstdlib>
+#include <iterator>
+#include <vector>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +24,7 @@
 #include "isurface/vis/line_plot.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/vis/quality_map.h"
+#include "isurface/workflow/file_kinds.h"
 #include "progress.h"
 #include "report_html.h"
 #include "trajectory_input.h"
@@ -29,11 +33,57 @@ namespace isurface::cli {
 namespace {
 
 struct ReportOptions {
-  std::string program, dump, output, json;
+  std::string program, dump, output, json, batch;
+  std::vector<std::string> failOn;
   MachineOption machine;
   int regions = 5;
   bool force = false;
 };
+
+// A threshold of --fail-on: "NAME>VALUE" on a figure of the report.
+struct Threshold {
+  std::string name;
+  double limit = 0;
+};
+
+// The figures a threshold may name, from a report's JSON (0 where it has none).
+double figureOf(const nlohmann::json& report, const std::string& name) {
+  double worst = 0;
+  const char* key = name == "speed_inconsistency"   ? "max_speed_inconsistency_mm_min"
+                    : name == "accel_inconsistency" ? "max_accel_inconsistency_mm_s2"
+                    : name == "jerk"                ? "max_jerk_mm_s3"
+                                                    : "max_predicted_deviation_um";
+  if (name == "machining_time") return report["summary"]["machining_time_s"].get<double>();
+  for (const auto& r : report["regions"]) worst = std::max(worst, r[key].get<double>());
+  return worst;
+}
+
+std::vector<Threshold> parseThresholds(const std::vector<std::string>& texts) {
+  static const char* const kNames[] = {"speed_inconsistency", "accel_inconsistency", "jerk", "deviation", "machining_time"};
+  std::vector<Threshold> out;
+  for (const std::string& text : texts) {
+    const std::size_t gt = text.find('>');
+    Threshold t;
+    t.name = text.substr(0, gt);
+    char* end = nullptr;
+    if (gt != std::string::npos) t.limit = std::strtod(text.c_str() + gt + 1, &end);
+    if (gt == std::string::npos || !end || *end || end == text.c_str() + gt + 1 || !std::isfinite(t.limit) ||
+        std::find(std::begin(kNames), std::end(kNames), t.name) == std::end(kNames))
+      throw InputError(Diagnostic{"", 0, 0, "bad --fail-on '" + text + "': expected NAME>VALUE with NAME one of "
+                                            "speed_inconsistency (mm/min), accel_inconsistency (mm/s^2), jerk (mm/s^3), "
+                                            "deviation (um), machining_time (s)"});
+    out.push_back(t);
+  }
+  return out;
+}
+
+// The thresholds a report crosses, one sentence each.
+std::vector<std::string> crossed(const nlohmann::json& report, const std::vector<Threshold>& thresholds) {
+  std::vector<std::string> out;
+  for (const Threshold& t : thresholds)
+    if (const double v = figureOf(report, t.name); v > t.limit) out.push_back(fmt::format("{} {:.4g} > {:g}", t.name, v, t.limit));
+  return out;
+}
 
 constexpr int kMapWidth = 720, kMapHeight = 450;
 constexpr int kPlotWidth = 720, kPlotHeight = 260;
@@ -199,14 +249,15 @@ void axisLimits(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
   if (!run.machineKnown) doc.paragraph("The dump names no machine: the limits are the built-in machine's.");
 }
 
-int runReport(const ReportOptions& o) {
-  if (o.regions < 0 || o.regions > 50) throw InputError(Diagnostic{"", 0, 0, "--regions must be 0 to 50"});
+// Writes one program's report to `html` (and `json`); returns its figures.
+nlohmann::json reportOne(const ReportOptions& o, const std::string& program, const std::string& dump,
+                         const std::string& html, const std::string& json) {
   TrajectoryChannels channels;
   channels.feedback = true;
-  const bool dumpOnly = o.dump.empty() && isBiipFile(o.program);
-  const OpenedRun run = openRunOnTerminal({dumpOnly ? "" : o.program, dumpOnly ? o.program : o.dump}, o.machine, o.force, channels);
-  if (!run.samples) throw InputError(Diagnostic{o.program, 0, 0, "the program makes no motion: nothing to report"});
-  const std::string name = std::filesystem::path(dumpOnly ? o.program : o.program).filename().string();
+  const bool dumpOnly = dump.empty() && isBiipFile(program);
+  const OpenedRun run = openRunOnTerminal({dumpOnly ? "" : program, dumpOnly ? program : dump}, o.machine, o.force, channels);
+  if (!run.samples) throw InputError(Diagnostic{program, 0, 0, "the program makes no motion: nothing to report"});
+  const std::string name = std::filesystem::path(program).filename().string();
   HtmlDocument doc("iSurface report: " + name);
   nlohmann::json out;
   ProgressLine progress("reporting on " + name);
@@ -246,11 +297,91 @@ int runReport(const ReportOptions& o) {
   doc.closeSection();
   progress.finish();
 
-  writeFileAtomically(o.output, doc.finish());
-  if (!o.json.empty()) writeFileAtomically(o.json, out.dump(2) + "\n");
-  std::printf("%s: %zu maps, %zu regions (%zu beyond the thresholds)\n", o.output.c_str(), quantities.size() * 2,
+  writeFileAtomically(html, doc.finish());
+  if (!json.empty()) writeFileAtomically(json, out.dump(2) + "\n");
+  std::printf("%s: %zu maps, %zu regions (%zu beyond the thresholds)\n", html.c_str(), quantities.size() * 2,
               out["regions"].size(), report.regions.size());
-  return kExitOk;
+  return out;
+}
+
+// Every G-code program in a folder: a report each and an index ranking them by their worst
+// region. A program that cannot be read is listed with its error; the others go on.
+int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
+  std::vector<std::string> programs;
+  std::error_code error;
+  for (const auto& entry : std::filesystem::directory_iterator(o.batch, error))
+    if (entry.is_regular_file()) programs.push_back(entry.path().string());
+  if (error) throw InputError(Diagnostic{o.batch, 0, 0, "cannot list the folder: " + error.message()});
+  std::sort(programs.begin(), programs.end());
+  std::filesystem::create_directories(o.output, error);
+  if (error) throw InputError(Diagnostic{o.output, 0, 0, "cannot make the folder: " + error.message()});
+  struct Row {
+    std::string name, page, problem;
+    double severity = -1;
+    nlohmann::json figures;
+  };
+  std::vector<Row> rows;
+  for (const std::string& path : programs) {
+    try {
+      if (fileKind(path, 4096) != FileKind::Program) continue;
+    } catch (const InputError&) {
+      continue;  // not a program (binary, unreadable): not part of the batch
+    }
+    Row row;
+    row.name = std::filesystem::path(path).filename().string();
+    row.page = row.name + ".html";
+    try {
+      row.figures = reportOne(o, path, "", (std::filesystem::path(o.output) / row.page).string(),
+                              (std::filesystem::path(o.output) / (row.name + ".json")).string());
+      row.severity = row.figures["regions"].empty() ? 0 : row.figures["regions"][0]["severity"].get<double>();
+      const std::vector<std::string> over = crossed(row.figures, thresholds);
+      for (const std::string& c : over) row.problem += (row.problem.empty() ? "" : "; ") + c;
+    } catch (const InputError& e) {
+      row.problem = std::string("not reported: ") + e.what();
+      std::fprintf(stderr, "error: %s\n", e.what());
+    }
+    rows.push_back(std::move(row));
+  }
+  std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.severity > b.severity; });
+  HtmlDocument index("iSurface reports: " + o.batch);
+  index.heading(1, "iSurface reports: " + o.batch);
+  index.paragraph(fmt::format("{} programs, ranked by the severity of their worst region.", rows.size()));
+  std::string table = "<table>\n<tr><th>program</th><th>worst region</th><th>severity</th><th>machining time</th>"
+                      "<th>thresholds crossed</th></tr>\n";
+  bool failed = false;
+  for (const Row& r : rows) {
+    failed = failed || !r.problem.empty();
+    const bool reported = r.severity >= 0;
+    const std::string worst = reported && !r.figures["regions"].empty()
+                                  ? fmt::format("lines {}-{}", r.figures["regions"][0]["first_line"].get<int>(),
+                                                r.figures["regions"][0]["last_line"].get<int>())
+                                  : "-";
+    table += std::string("<tr") + (r.problem.empty() ? "" : " class=\"near\"") + "><td>" +
+             (reported ? "<a href=\"" + escapeHtml(r.page) + "\">" + escapeHtml(r.name) + "</a>" : escapeHtml(r.name)) +
+             "</td><td>" + escapeHtml(worst) + "</td><td>" + (reported ? fmt::format("{:.1f}", r.severity) : "-") +
+             "</td><td>" + (reported ? hms(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
+             escapeHtml(r.problem.empty() ? "none" : r.problem) + "</td></tr>\n";
+  }
+  index.raw(table + "</table>\n");
+  writeFileAtomically((std::filesystem::path(o.output) / "index.html").string(), index.finish());
+  std::printf("%s: %zu programs reported\n", (std::filesystem::path(o.output) / "index.html").string().c_str(), rows.size());
+  return failed ? kExitFailure : kExitOk;
+}
+
+int runReport(const ReportOptions& o) {
+  if (o.regions < 0 || o.regions > 50) throw InputError(Diagnostic{"", 0, 0, "--regions must be 0 to 50"});
+  const std::vector<Threshold> thresholds = parseThresholds(o.failOn);
+  if (!o.batch.empty()) {
+    if (!o.program.empty() || !o.dump.empty() || !o.json.empty())
+      throw InputError(Diagnostic{"", 0, 0, "--batch takes a folder: give no program, dump or --json with it"});
+    return runBatch(o, thresholds);
+  }
+  if (o.program.empty()) throw InputError(Diagnostic{"", 0, 0, "give a program (or a dump), or --batch FOLDER"});
+  const nlohmann::json figures = reportOne(o, o.program, o.dump, o.output, o.json);
+  const std::vector<std::string> over = crossed(figures, thresholds);
+  for (const std::string& c : over) std::fprintf(stderr, "%s: threshold crossed: %s\n", o.program.c_str(), c.c_str());
+  // The report stays: it says why the job fails.
+  return over.empty() ? kExitOk : kExitFailure;
 }
 
 }  // namespace
@@ -259,9 +390,13 @@ Command reportCommand() {
   return Command{"report", "Write one self-contained HTML report of a program: summary, quality maps, worst regions with their G-code and speed, axis limits",
     [](CLI::App& sub) {
       auto o = std::make_shared<ReportOptions>();
-      sub.add_option("program", o->program, "G-code program (or a Biip dump alone)")->required();
+      sub.add_option("program", o->program, "G-code program (or a Biip dump alone)");
       sub.add_option("dump", o->dump, "Biip dump or trace of the program (default: simulate it)");
-      sub.add_option("-o,--output", o->output, "HTML file to write")->required();
+      sub.add_option("-o,--output", o->output, "HTML file to write (with --batch: the folder of the reports)")->required();
+      sub.add_option("--batch", o->batch, "report on every G-code program in this folder, with an index.html ranking them");
+      sub.add_option("--fail-on", o->failOn,
+                     "exit 1 when a figure crosses NAME>VALUE: speed_inconsistency (mm/min), accel_inconsistency "
+                     "(mm/s^2), jerk (mm/s^3), deviation (um) of the worst region shown, or machining_time (s); repeatable");
       sub.add_option("--json", o->json, "also write the report's figures as JSON");
       sub.add_option("--regions", o->regions, "worst regions shown, 0 to 50")->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");

@@ -105,3 +105,36 @@ TEST(Report, OpensInABrowserAndIsNotBlank) {
     if (image.rgb[i] < 200 || image.rgb[i + 1] < 200 || image.rgb[i + 2] < 200) ++coloured;
   EXPECT_GT(coloured, image.rgb.size() / 3 / 20) << "the page is nearly blank";
 }
+
+// A CI job gates on the report: a threshold crossed is exit code 1, the report written anyway.
+TEST(Report, AThresholdCrossedFailsTheJob) {
+  const std::string program = std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc";
+  const std::string html = (scratchDir() / "gate.html").string();
+  const auto crossed = runCli("report " + program + " -o " + html + " --regions 1 --fail-on 'jerk>1'");
+  EXPECT_EQ(crossed.exitCode, 1) << crossed.err;
+  EXPECT_NE(crossed.err.find("threshold crossed: jerk"), std::string::npos) << crossed.err;
+  EXPECT_TRUE(fs::exists(html));
+  const auto kept = runCli("report " + program + " -o " + html + " --regions 1 --fail-on 'jerk>1e12'");
+  EXPECT_EQ(kept.exitCode, 0) << kept.err;
+  const auto bad = runCli("report " + program + " -o " + html + " --fail-on 'jerk=1'");
+  EXPECT_EQ(bad.exitCode, 2);
+  EXPECT_NE(bad.err.find("bad --fail-on"), std::string::npos);
+}
+
+TEST(Report, ABatchRanksEveryProgramOfAFolder) {
+  const fs::path in = scratchDir() / "batch-in", out = scratchDir() / "batch-out";
+  fs::remove_all(in), fs::remove_all(out);
+  fs::create_directories(in);
+  fs::copy_file(std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc", in / "transition.nc");
+  std::ofstream(in / "stops.nc") << "G21 G90\nG1 X10 F600\nG4 P-\n";  // an error: listed, not reported
+  std::ofstream(in / "notes.txt") << "\x01\x02 binary";              // not a program: left out
+  const auto r = runCli("report --batch " + in.string() + " -o " + out.string() + " --regions 1");
+  EXPECT_EQ(r.exitCode, 1) << r.err;  // one program could not be reported
+  const std::string index = readAll((out / "index.html").string());
+  EXPECT_NE(index.find("<a href=\"transition.nc.html\">transition.nc</a>"), std::string::npos) << index;
+  EXPECT_NE(index.find("stops.nc"), std::string::npos);
+  EXPECT_NE(index.find("not reported"), std::string::npos);
+  EXPECT_EQ(index.find("notes.txt"), std::string::npos);
+  EXPECT_TRUE(fs::exists(out / "transition.nc.html"));
+  EXPECT_TRUE(fs::exists(out / "transition.nc.json"));
+}
