@@ -69,7 +69,8 @@ TEST(BoundedRuns, APickedSampleOutOfRangeIsAnErrorLikeAPickedLine) {
 TEST(BoundedRuns, AControlByteInAnInputIsShownNotPassedOn) {
   // A NUL in a cell once cut the message short where C strings end, and an escape sequence went
   // to the terminal as it was.
-  const std::string trace = writeScratch("nul.csv", std::string("x,y,z\n0,0,0\n1,2\0\x1b[2J,3\n", 25));
+  static const char kTrace[] = "x,y,z\n0,0,0\n1,2\0\x1b[2J,3\n";
+  const std::string trace = writeScratch("nul.csv", std::string(kTrace, sizeof kTrace - 1));
   const auto r = runCli("import csv " + trace + " --map x=x,y=y,z=z -o " + (scratchDir() / "nul.biip").string());
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos) << r.err;

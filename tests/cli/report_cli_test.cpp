@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <cstdint>
 #include <cstring>
 #include <string>
 
@@ -27,12 +28,13 @@ std::string readAll(const std::string& path) {
 
 std::string decodeBase64(const std::string& text) {
   std::string out;
-  int bits = 0, value = 0;
+  int bits = 0;
+  std::uint32_t value = 0;  // the bits not yet taken out, at most 14 of them
   for (const char c : text) {
     const char* const alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
     const char* at = std::strchr(alphabet, c);
     if (c == '=' || !at || !*at) break;
-    value = (value << 6) | int(at - alphabet);
+    value = ((value << 6) | std::uint32_t(at - alphabet)) & 0x3fff;
     bits += 6;
     if (bits >= 8) out += char((value >> (bits -= 8)) & 0xff);
   }
