@@ -8,8 +8,8 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <memory>
+#include <optional>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -17,6 +17,7 @@
 #include "command.h"
 #include "inputs.h"
 #include "isurface/analysis/kinematics.h"
+#include "isurface/app_model/text_lines.h"
 #include "isurface/analysis/quality_regions.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/base/units.h"
@@ -104,21 +105,8 @@ std::string renderMap(const OpenedRun& run, Quantity q, vis::ViewDirection view,
   return vis::renderSceneToPngBytes(scene, kMapWidth, kMapHeight);
 }
 
-std::vector<std::string> readLines(const std::string& path) {
-  std::vector<std::string> lines;
-  if (path.empty()) return lines;
-  std::ifstream in(path, std::ios::binary);
-  for (std::string line; std::getline(in, line);) {
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    lines.push_back(std::move(line));
-  }
-  return lines;
-}
-
-std::string hms(double seconds) {
-  const long total = std::lround(seconds);
-  return fmt::format("{}:{:02}:{:02} ({:.3f} s)", total / 3600, total / 60 % 60, total % 60, seconds);
-}
+// "m:ss.mmm (s s)", as simulate prints a machining time.
+std::string duration(double seconds) { return formatDuration(seconds) + fmt::format(" ({:.3f} s)", seconds); }
 
 void summary(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
   const Trajectory& t = *run.samples;
@@ -140,7 +128,7 @@ void summary(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
              {"Program", run.files.program.empty() ? "(none: a dump alone)" : run.files.program},
              {"Samples from", run.files.dump.empty() ? "a simulation of the program" : run.files.dump},
              {"Machine", run.machineKnown ? run.machine.name : "not named by the dump"},
-             {"Machining time", hms(time)},
+             {"Machining time", duration(time)},
              {"Path length", fmt::format("{:.1f} mm", length)},
              {"Samples", fmt::format("{} at {:g} ms", t.size(), t.cycle * 1000)},
              {"Programmed feeds", highFeed > 0 ? (inch ? fmt::format("F{:g} to F{:g} in/min", lowFeed / kMmPerInch, highFeed / kMmPerInch)
@@ -186,7 +174,9 @@ void regionPlots(HtmlDocument& doc, const Trajectory& t, const QualityRegion& r,
 void regions(HtmlDocument& doc, const OpenedRun& run, const QualityReport& report, int count, ProgressLine& progress,
              nlohmann::json& out) {
   const Trajectory& t = *run.samples;
-  const std::vector<std::string> lines = readLines(run.files.program);
+  // The program's lines as the window's G-code pane numbers them (any line ends), not copied.
+  std::optional<app_model::TextLines> lines;
+  if (!run.files.program.empty()) lines.emplace(run.files.program);
   const std::vector<double> speed = sampleQuantity(Quantity::Speed, t), accel = sampleQuantity(Quantity::Acceleration, t);
   out["regions"] = nlohmann::json::array();
   const int shown = std::min<int>(count, static_cast<int>(report.regions.size()));
@@ -204,11 +194,11 @@ void regions(HtmlDocument& doc, const OpenedRun& run, const QualityReport& repor
                 fmt::format("{:.1f} mm^2", r.area)}});
     doc.image(renderMap(run, Quantity::SpeedInconsistency, vis::ViewDirection::Top, worstLine),
               fmt::format("Top view, speed difference between neighbouring passes; line {} glows", worstLine));
-    if (!lines.empty()) {
+    if (lines && lines->count() > 0) {
       std::vector<std::pair<std::uint32_t, std::string>> excerpt;
       const std::uint32_t from = std::max(r.firstLine, worstLine > kExcerptContext ? worstLine - kExcerptContext : 1u);
-      const std::uint32_t to = std::min<std::uint32_t>({r.lastLine, worstLine + kExcerptContext, static_cast<std::uint32_t>(lines.size())});
-      for (std::uint32_t n = from; n <= to; ++n) excerpt.emplace_back(n, lines[n - 1]);
+      const std::uint32_t to = std::min<std::uint32_t>({r.lastLine, worstLine + kExcerptContext, static_cast<std::uint32_t>(lines->count())});
+      for (std::uint32_t n = from; n <= to; ++n) excerpt.emplace_back(n, std::string(lines->line(n)));
       doc.paragraph(fmt::format("G-code around the worst line (lines {}-{} of the region's {}-{}):", from, to, r.firstLine, r.lastLine));
       doc.code(excerpt, worstLine);
     }
@@ -359,7 +349,7 @@ int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
     table += std::string("<tr") + (r.problem.empty() ? "" : " class=\"near\"") + "><td>" +
              (reported ? "<a href=\"" + escapeHtml(r.page) + "\">" + escapeHtml(r.name) + "</a>" : escapeHtml(r.name)) +
              "</td><td>" + escapeHtml(worst) + "</td><td>" + (reported ? fmt::format("{:.1f}", r.severity) : "-") +
-             "</td><td>" + (reported ? hms(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
+             "</td><td>" + (reported ? duration(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
              escapeHtml(r.problem.empty() ? "none" : r.problem) + "</td></tr>\n";
   }
   index.raw(table + "</table>\n");

@@ -1,7 +1,5 @@
 #include "isurface/nc/interpolator.h"
 
-#include <fmt/format.h>
-
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -202,14 +200,6 @@ struct StreamingInterpolator::Impl {
   }
   void flush() {
     if (batch.empty()) return;
-    // The plan is checked before sampling (simulator.cpp); this is the last guard, with room
-    // for the filters' settling.
-    if (double(samples + batch.size()) * machine.cycle > machine.longestRun + 60.0)
-      throw InputError(Diagnostic{
-          "", batch.back().line, 0,
-          fmt::format("the run passes {:.4g} h of machining here ({:.4g} samples at {:g} ms): a longer run is refused "
-                      "(raise --max-hours to simulate it)",
-                      machine.longestRun / 3600, machine.longestRun / machine.cycle, machine.cycle * 1000)});
     sink.consume(batch.data(), batch.size());
     samples += batch.size();
     batch.clear();
