@@ -2,8 +2,11 @@
 #include <gtest/gtest.h>
 
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/gcode/gcode_stream.h"
 #include "isurface/machine/machine.h"
 #include "isurface/nc/simulator.h"
+
+#include <fmt/format.h>
 
 using namespace isurface;
 
@@ -71,4 +74,58 @@ TEST(SlowFeeds, AbsurdDurationsAreRefusedInFewWords) {
       EXPECT_LT(std::string(e.what()).size(), 200u) << e.what();
     }
   }
+}
+
+// A planner's refusal names the word that made the move, as the interpreter's errors do.
+TEST(SlowFeeds, ARefusedMoveIsNamedByLineAndColumn) {
+  struct Case {
+    std::string program;
+    unsigned line, column;
+  };
+  const Case cases[] = {
+      {"G21 G90\nG1 X1 F100\n  N20 G4 P400000\n", 3, 7},      // the dwell's G4
+      {"G21 G90\nG1 F0.000001\n   X1000000\n", 3, 4},         // modal G1: its first axis word
+      {"G21 G90\nG1 X1 F100\nG0 Z5 (up)\n  G1 X1000000 F0.000001\n", 4, 3},
+  };
+  for (const Case& c : cases) {
+    InterpretResult r = interpretGcode(c.program, "columns.nc");
+    ASSERT_TRUE(r.ok()) << c.program;
+    SampleBuffer buffer;
+    try {
+      simulate(r.program, defaultMachine(), buffer);
+      ADD_FAILURE() << c.program << " was simulated";
+    } catch (const InputError& e) {
+      EXPECT_EQ(e.diagnostic().line, c.line) << e.what();
+      EXPECT_EQ(e.diagnostic().column, c.column) << e.what();
+      EXPECT_EQ(std::string(e.what()).rfind(fmt::format("columns.nc:{}:{}: ", c.line, c.column), 0), 0u) << e.what();
+    }
+  }
+}
+
+// Dwells that together pass the longest run are named where the bound is passed, not at the
+// move before them, whether the program is simulated whole or as it is read.
+TEST(SlowFeeds, TheDwellThatPassesTheLongestRunIsNamed) {
+  const std::string program = "G21 G90\nG1 X1 F100\n G4 P80000\nG4 P80000\nG4 P80000\n  G4 P80000\nG4 P80000\n";
+  InterpretResult r = interpretGcode(program, "dwells.nc");
+  ASSERT_TRUE(r.ok());
+  SampleBuffer whole;
+  try {
+    simulate(r.program, defaultMachine(), whole);
+    ADD_FAILURE() << "400,000 s of dwells were simulated";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostic().line, 7u) << e.what();
+    EXPECT_EQ(e.diagnostic().column, 1u) << e.what();
+  }
+  SampleBuffer streamed;
+  const Machine machine = defaultMachine();  // the simulation keeps a reference
+  StreamingSimulation simulation(machine, Vec3::Zero(), "dwells.nc", streamed);
+  EXPECT_TRUE(interpretGcodeStream(program, "dwells.nc", simulation, {}, 1).ok());
+  try {
+    simulation.finish();
+    ADD_FAILURE() << "400,000 s of dwells were simulated as they were read";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostic().line, 7u) << e.what();
+    EXPECT_EQ(e.diagnostic().column, 1u) << e.what();
+  }
+  EXPECT_EQ(streamed.data.size(), 0u);
 }

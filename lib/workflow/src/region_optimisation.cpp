@@ -317,11 +317,11 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
   for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median, CrossPassRule::Envelope}) {
-    const RegionOptimisation* r = loop.judge({rule, 1.0});
+    const RegionOptimisation* r = loop.judge({rule, 1.0, false, {}});
     if (r && !r->kept && slower(*r)) tooSlow.push_back(rule);
     if (loop.done()) break;
   }
-  const RegionOptimisation* fine = loop.done() ? nullptr : loop.judge({CrossPassRule::None, 1.0, true}, true);
+  const RegionOptimisation* fine = loop.done() ? nullptr : loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {
     const double target = std::min(fine->regionBefore.deviationP99, fine->wholeBefore.deviationP99);
     std::vector<double> ceilings;
@@ -333,7 +333,7 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median}) {
     // Lower feeds can only take longer still.
     if (loop.done() || std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
-    loop.judge({rule, 0.95});
+    loop.judge({rule, 0.95, false, {}});
   }
   if (progress) progress(1.0);
   return loop.result();

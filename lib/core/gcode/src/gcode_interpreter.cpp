@@ -232,6 +232,7 @@ bool InterpreterState::executeBlock(const Block& block) {
   }
   if (mCode[kMToolChange] == 60) spindleTool_ = selectedTool_;
   if (!compensationAllows(groups, groups.has(kGroupMotion) ? groups.code[kGroupMotion] : state_.motion)) return false;
+  moveColumn_ = groups.column[kGroupNonModal];  // G4, G28, G30; motion words below
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
@@ -312,6 +313,7 @@ bool InterpreterState::executeBlock(const Block& block) {
         if (state_.incremental)
           return fail(groups.column[kGroupNonModal], "Cannot use G53 incremental");
       }
+      moveColumn_ = column;
       if (motion == kG0 || motion == kG1) {
         if (!straight(block, motion, column)) return false;
       } else if (isArc) {

@@ -84,6 +84,7 @@ void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uin
   Move& m = moves_.emplace_back();
   m.end = end;
   m.line = moveLine();
+  m.column = moveColumn();
   m.feed = feed;
   m.kind = kind;
   m.flags = static_cast<std::uint8_t>((state_.exactStop ? kExactStop : 0) | extraFlags);
@@ -97,6 +98,7 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
   m.end = end;
   m.centre = centre;
   m.line = moveLine();
+  m.column = moveColumn();
   m.feed = feed;
   m.kind = kind;
   m.plane = state_.plane;

@@ -179,6 +179,10 @@ class InterpreterState {
   bool leaveFile(const char*& p);
   // The line a move carries: the main text's, or the line that called into the file read.
   std::uint32_t moveLine() const { return reading_ ? callLine_ : line_; }
+  // Its column: unknown for moves made in another file's text (their line is the call's).
+  std::uint16_t moveColumn() const {
+    return reading_ || moveColumn_ > 0xffff ? 0 : static_cast<std::uint16_t>(moveColumn_);
+  }
   // M99 P: the block numbered `number` in the text `from` is in.
   std::optional<LinePosition> blockInTextOf(long number, LinePosition from);
   // Tells options_.callStack the calls the next move is made in.
@@ -190,6 +194,7 @@ class InterpreterState {
   std::string source_;
   ModalState state_;
   std::uint32_t line_ = 0;        // current physical line, 1-based
+  std::uint32_t moveColumn_ = 0;  // column of the word whose moves are being made (Move::column)
   bool ended_ = false;            // M2 / M30 / closing '%'
   bool percentOpened_ = false;    // the first line with words was '%'
   bool seenWords_ = false;

@@ -105,7 +105,7 @@ class Planner {
     if (move.kind == MoveKind::Dwell) {
       const double seconds = std::max(0.0, move.dwellSeconds());
       if (seconds > kLongestMove)
-        throw InputError(Diagnostic{source_, move.line, 0,
+        throw InputError(Diagnostic{source_, move.line, move.column,
                                     fmt::format("a dwell of {:.4g} s is longer than {:.0f} h: not a real program",
                                                 seconds, kLongestMove / 3600)});
       if (segments_ == 0) holdBefore_ += seconds;
@@ -179,7 +179,7 @@ class Planner {
           std::sqrt(s.accel * s.length + 0.5 * (s.entrySpeed * s.entrySpeed + s.exitSpeed * s.exitSpeed));
       s.peakSpeed = std::max({std::min(s.cap, reachable), s.entrySpeed, s.exitSpeed});
       if (s.motionTime() > kLongestMove)
-        throw InputError(Diagnostic{source_, window_[head_ + k].line, 0,
+        throw InputError(Diagnostic{source_, window_[head_ + k].line, window_[head_ + k].column,
                                     fmt::format("this move takes {:.3g} h {}: an impossible speed for {:.4g} mm",
                                                 s.motionTime() / 3600, speedName(window_[head_ + k].feedMmMin), s.length)});
       out.push_back(s);
@@ -204,6 +204,7 @@ class Planner {
     double entryForward = 0;  // mm/s, the forward pass's speed at its start
     std::uint32_t line = 0;   // of its move, for messages
     float feedMmMin = 0;      // mm/min, its move's F word as programmed (for messages); < 0: a rapid
+    std::uint16_t column = 0; // of its move, for messages
   };
 
   // The machine comes to rest at the current junction and waits `hold` seconds; by default
@@ -243,7 +244,7 @@ class Planner {
     // The feed and the axes' speeds are honoured however slow; only a curve's own limits have a
     // floor (kSlowestSpeed), so that degenerate geometry is still passed in finite time.
     if (!(speed > 0))
-      throw InputError(Diagnostic{source_, move.line, 0,
+      throw InputError(Diagnostic{source_, move.line, move.column,
                                   move.kind == MoveKind::Rapid ? "the machine's rapid speed is not above 0"
                                                                : fmt::format("feed F{:g} is not above 0", move.feed)});
     ps.peakSpeed = speed;  // the cap until commit() settles the profile
@@ -265,6 +266,7 @@ class Planner {
                                                          2.0 * before.planned.accel * before.planned.length));
     }
     e.line = move.line;
+    e.column = move.column;
     e.feedMmMin = move.kind == MoveKind::Rapid ? -1.0f : move.feed;
     window_.push_back(e);
     ++segments_;

@@ -19,11 +19,11 @@ InputError naming(const InputError& e, const std::string& source) {
 }
 
 // Refuses a run whose planned time passes the machine's longest run, before its samples are
-// made: `line` is where the plan passes it.
-void checkRunLength(double seconds, const Machine& machine, std::uint32_t line, const std::string& source) {
+// made: `move` is where the plan passes it (null: at the end).
+void checkRunLength(double seconds, const Machine& machine, const Move* move, const std::string& source) {
   if (seconds <= machine.longestRun) return;
   throw InputError(Diagnostic{
-      source, line, 0,
+      source, move ? move->line : 0, move ? move->column : 0u,
       fmt::format("the run passes {:.4g} h of machining here ({:.4g} samples at {:g} ms): a longer run is refused "
                   "(raise --max-hours to simulate it)",
                   machine.longestRun / 3600, machine.longestRun / machine.cycle, machine.cycle * 1000)});
@@ -36,12 +36,29 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
   });
+  // Dwells and motion in program order first, so that the move named is the one that passes
+  // the bound; then the plan's own total, with its stops' holds.
+  double known = 0;
+  std::size_t next = 0;
+  auto dwellsUpTo = [&](std::size_t end) {
+    for (; next < end; ++next)
+      if (program.moves[next].kind == MoveKind::Dwell) {
+        known += std::max(0.0, program.moves[next].dwellSeconds());
+        checkRunLength(known, machine, &program.moves[next], program.source);
+      }
+  };
   double planned = plan.holdBefore;
-  for (const PlannedSegment& segment : plan.segments) {
+  for (std::size_t k = 0; k < plan.segments.size(); ++k) {
+    const PlannedSegment& segment = plan.segments[k];
+    dwellsUpTo(segment.move);
+    known += segment.motionTime();
+    checkRunLength(known, machine, &program.moves[segment.move], program.source);
+    dwellsUpTo(k + 1 < plan.segments.size() ? plan.segments[k + 1].move : program.moves.size());
     planned += segment.motionTime() + segment.holdAfter;
-    checkRunLength(planned, machine, program.moves[segment.move].line, program.source);
+    checkRunLength(planned, machine, &program.moves[segment.move], program.source);
   }
-  checkRunLength(planned, machine, 0, program.source);
+  dwellsUpTo(program.moves.size());
+  checkRunLength(planned, machine, nullptr, program.source);
   InterpolationSummary summary;
   try {
     summary = interpolate(program, machine, plan, sink, [&](double f) {
@@ -80,7 +97,11 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
     for (std::size_t i = 0; i < count; ++i) {
       if (firstIndex + i > 0xffffffffu)
         throw InputError(
-            Diagnostic{source_, moves[i].line, 0, "more than 4,294,967,295 moves: too many for a Biip block channel"});
+            Diagnostic{source_, moves[i].line, moves[i].column, "more than 4,294,967,295 moves: too many for a Biip block channel"});
+      if (moves[i].kind == MoveKind::Dwell) {
+        dwellTime_ += std::max(0.0, moves[i].dwellSeconds());
+        checkRunLength(dwellTime_ + motionTime_, machine_, &moves[i], source_);
+      }
       planner_.add(static_cast<std::uint32_t>(firstIndex + i), moves[i], moveStart_);
       // Only moves that may become segments wait for the interpolator: a program of millions
       // of dwells or zero-length moves must not pile them up.
@@ -108,7 +129,9 @@ void StreamingSimulation::interpolateFinalSegments() {
       throw std::logic_error("a planned segment's move was not kept for the interpolator");
     if (plannedTime_ == 0) plannedTime_ = planner_.holdBefore();
     plannedTime_ += segment.motionTime() + segment.holdAfter;
-    checkRunLength(plannedTime_, machine_, moves_.front().move.line, source_);
+    motionTime_ += segment.motionTime();
+    checkRunLength(motionTime_ + dwellTime_, machine_, &moves_.front().move, source_);
+    checkRunLength(plannedTime_, machine_, &moves_.front().move, source_);
     interpolator_->add(segment, moves_.front().move, moves_.front().start);
     report_.pathLength += segment.length;
     ++report_.segments;
@@ -123,7 +146,7 @@ SimulationReport StreamingSimulation::finish() {
     planner_.finish();
     planner_.take(final_);
     interpolateFinalSegments();
-    checkRunLength(std::max(plannedTime_, planner_.holdBefore()), machine_, 0, source_);
+    checkRunLength(std::max(plannedTime_, planner_.holdBefore()), machine_, nullptr, source_);
     summary = interpolator_->finish();
   } catch (const InputError& e) {
     throw naming(e, source_);

@@ -33,11 +33,13 @@ struct Move {
   Plane plane = Plane::XY;
   std::uint8_t flags = 0;
   std::uint16_t turns = 1;     // arcs: 1 for an ordinary arc (or a full circle), more adds turns
+  std::uint16_t column = 0;    // 1-based column of the word that made the move (0: unknown, or past 65535)
 
   bool isArc() const { return kind == MoveKind::ArcCW || kind == MoveKind::ArcCCW; }
   bool isMotion() const { return kind != MoveKind::Dwell; }
   double dwellSeconds() const { return kind == MoveKind::Dwell ? feed : 0.0; }
 };
+static_assert(sizeof(Move) == 64, "a Move is 64 bytes: programs of tens of millions of moves are held");
 
 struct Program {
   std::string source;               // file name as given

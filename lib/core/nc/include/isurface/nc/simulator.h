@@ -65,6 +65,8 @@ class StreamingSimulation : public MoveSink {
   };
   std::deque<HeldMove> moves_;
   double plannedTime_ = 0;  // s, of the segments handed to the interpolator and the dwells
+  double dwellTime_ = 0;    // s, of the dwells read so far: a dwell that passes the bound is named
+  double motionTime_ = 0;   // s, of the segments' motion handed to the interpolator
   std::vector<PlannedSegment> final_;
   SimulationReport report_;
   std::optional<InputError> simulationError_;
