@@ -16,25 +16,19 @@
 
 #include "command.h"
 #include "inputs.h"
-#include "isurface/analysis/kinematics.h"
-#include "isurface/app_model/text_lines.h"
-#include "isurface/analysis/quality_regions.h"
-#include "isurface/analysis/quantities.h"
-#include "isurface/base/units.h"
 #include "isurface/io/atomic_file.h"
-#include "isurface/vis/line_plot.h"
-#include "isurface/vis/offscreen_render.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/report/html_document.h"
+#include "isurface/report/program_report.h"
 #include "isurface/workflow/file_kinds.h"
 #include "progress.h"
-#include "report_html.h"
 #include "trajectory_input.h"
 
 namespace isurface::cli {
 namespace {
 
-struct ReportOptions {
-  std::string program, dump, output, json, batch;
+struct ReportCliOptions {
+  std::string program, dump, output, json, batch, compare, optimise;
+  double chordTolerance = 0.002;
   std::vector<std::string> failOn;
   MachineOption machine;
   int regions = 5;
@@ -86,217 +80,34 @@ std::vector<std::string> crossed(const nlohmann::json& report, const std::vector
   return out;
 }
 
-constexpr int kMapWidth = 720, kMapHeight = 450;
-constexpr int kPlotWidth = 720, kPlotHeight = 260;
-constexpr std::size_t kPlotPoints = 4000;  // a plot's samples are thinned to about this many
-constexpr double kPlotSeconds = 1.5;       // s either side of a region's worst sample
-constexpr std::uint32_t kExcerptContext = 12;  // G-code lines either side of a region's worst line
-
-std::string renderMap(const OpenedRun& run, Quantity q, vis::ViewDirection view, std::optional<std::uint32_t> line) {
-  vis::QualityMapRequest request;
-  request.quantity = q;
-  request.view = view;
-  request.highlightLine = line;
-  request.inch = run.program && run.program->inch;
-  request.caption = std::filesystem::path(run.files.program.empty() ? run.files.dump : run.files.program).filename().string();
-  vis::QualityMap map = vis::buildQualityMap(*run.samples, run.program.get(), request);
-  map.style.fontSize = vis::fontSizeForHeight(kMapHeight);
-  vis::QualityScene scene(map.data, map.style);
-  return vis::renderSceneToPngBytes(scene, kMapWidth, kMapHeight);
-}
-
-// "m:ss.mmm (s s)", as simulate prints a machining time.
-std::string duration(double seconds) { return formatDuration(seconds) + fmt::format(" ({:.3f} s)", seconds); }
-
-void summary(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
-  const Trajectory& t = *run.samples;
-  double length = 0;
-  for (std::size_t i = 1; i < t.size(); ++i) {
-    const double d = (t.commanded(i) - t.commanded(i - 1)).norm();
-    if (std::isfinite(d)) length += d;
-  }
-  float lowFeed = 0, highFeed = 0;
-  if (run.program)
-    for (const Move& m : run.program->moves)
-      if (m.kind == MoveKind::Linear || m.isArc()) {
-        lowFeed = lowFeed == 0 ? m.feed : std::min(lowFeed, m.feed);
-        highFeed = std::max(highFeed, m.feed);
-      }
-  const bool inch = run.program && run.program->inch;
-  const double time = machiningTime(t);
-  doc.table({{"", "this program"},
-             {"Program", run.files.program.empty() ? "(none: a dump alone)" : run.files.program},
-             {"Samples from", run.files.dump.empty() ? "a simulation of the program" : run.files.dump},
-             {"Machine", run.machineKnown ? run.machine.name : "not named by the dump"},
-             {"Machining time", duration(time)},
-             {"Path length", fmt::format("{:.1f} mm", length)},
-             {"Samples", fmt::format("{} at {:g} ms", t.size(), t.cycle * 1000)},
-             {"Programmed feeds", highFeed > 0 ? (inch ? fmt::format("F{:g} to F{:g} in/min", lowFeed / kMmPerInch, highFeed / kMmPerInch)
-                                                       : fmt::format("F{:g} to F{:g} mm/min", lowFeed, highFeed))
-                                               : "none"},
-             {"Units of the program", inch ? "inch (G20)" : "mm"}});
-  out["summary"] = {{"program", run.files.program}, {"dump", run.files.dump}, {"machine", run.machine.name},
-                    {"machining_time_s", time}, {"path_length_mm", length}, {"samples", t.size()},
-                    {"cycle_s", t.cycle}, {"inch", inch}};
-}
-
-std::vector<Quantity> mapQuantities(const Trajectory& t) {
-  std::vector<Quantity> q = {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk, Quantity::SpeedInconsistency};
-  if (t.hasFeedback()) q.push_back(Quantity::Deviation);
-  return q;
-}
-
-// Speed and acceleration against time around the region's worst sample: a region may span
-// many passes, and the seconds around its worst point show what the machine did there.
-void regionPlots(HtmlDocument& doc, const Trajectory& t, const QualityRegion& r, const std::vector<double>& speed,
-                 const std::vector<double>& accel) {
-  const double centre = t.time[r.worstSample];
-  std::size_t first = r.worstSample, last = r.worstSample;
-  while (first > 0 && t.time[first - 1] >= centre - kPlotSeconds) --first;
-  while (last + 1 < t.size() && t.time[last + 1] <= centre + kPlotSeconds) ++last;
-  if (first >= last) return;
-  const std::size_t stride = std::max<std::size_t>(1, (last - first) / kPlotPoints);
-  const std::string around = fmt::format("around the worst point (line {}, {:.2f} s)", t.line[r.worstSample], centre);
-  vis::LinePlot speedPlot{"Path speed " + around, "time (s)", "mm/min", {}, {{"speed (mm/min)", {}}}};
-  vis::LinePlot accelPlot{"Tangential acceleration " + around, "time (s)", "mm/s^2", {}, {{"acceleration (mm/s^2)", {}}}};
-  for (std::size_t i = first; i <= last; i += stride) {
-    speedPlot.x.push_back(t.time[i]);
-    accelPlot.x.push_back(t.time[i]);
-    speedPlot.series[0].y.push_back(speed[i]);
-    accelPlot.series[0].y.push_back(accel[i]);
-  }
-  doc.raw("<div class=\"maps\">\n");
-  doc.image(vis::plotToPng(speedPlot, kPlotWidth, kPlotHeight), speedPlot.title);
-  doc.image(vis::plotToPng(accelPlot, kPlotWidth, kPlotHeight), accelPlot.title);
-  doc.raw("</div>\n");
-}
-
-void regions(HtmlDocument& doc, const OpenedRun& run, const QualityReport& report, int count, ProgressLine& progress,
-             nlohmann::json& out) {
-  const Trajectory& t = *run.samples;
-  // The program's lines as the window's G-code pane numbers them (any line ends), not copied.
-  std::optional<app_model::TextLines> lines;
-  if (!run.files.program.empty()) lines.emplace(run.files.program);
-  const std::vector<double> speed = sampleQuantity(Quantity::Speed, t), accel = sampleQuantity(Quantity::Acceleration, t);
-  out["regions"] = nlohmann::json::array();
-  const int shown = std::min<int>(count, static_cast<int>(report.regions.size()));
-  if (shown == 0) doc.paragraph("No region of the surface passes the thresholds.");
-  for (int k = 0; k < shown; ++k) {
-    const QualityRegion& r = report.regions[static_cast<std::size_t>(k)];
-    const std::uint32_t worstLine = t.line[r.worstSample];
-    doc.openSection(fmt::format("region-{}", k + 1), "region");
-    doc.heading(3, fmt::format("{}. Lines {}-{}{}", k + 1, r.firstLine, r.lastLine, r.atPassEnds ? " (where passes start and end)" : ""));
-    doc.table({{"severity", "largest speed difference to the neighbouring pass", "largest acceleration difference", "largest jerk",
-                "largest predicted deviation", "worst line", "area"},
-               {fmt::format("{:.1f}", r.severity), fmt::format("{:.0f} mm/min", r.maxSpeedInconsistency),
-                fmt::format("{:.0f} mm/s^2", r.maxAccelInconsistency), fmt::format("{:.0f} mm/s^3", r.maxJerk),
-                t.hasFeedback() ? fmt::format("{:.2f} um", r.maxDeviation) : "no feedback", std::to_string(worstLine),
-                fmt::format("{:.1f} mm^2", r.area)}});
-    doc.image(renderMap(run, Quantity::SpeedInconsistency, vis::ViewDirection::Top, worstLine),
-              fmt::format("Top view, speed difference between neighbouring passes; line {} glows", worstLine));
-    if (lines && lines->count() > 0) {
-      std::vector<std::pair<std::uint32_t, std::string>> excerpt;
-      const std::uint32_t from = std::max(r.firstLine, worstLine > kExcerptContext ? worstLine - kExcerptContext : 1u);
-      const std::uint32_t to = std::min<std::uint32_t>({r.lastLine, worstLine + kExcerptContext, static_cast<std::uint32_t>(lines->count())});
-      for (std::uint32_t n = from; n <= to; ++n) excerpt.emplace_back(n, std::string(lines->line(n)));
-      doc.paragraph(fmt::format("G-code around the worst line (lines {}-{} of the region's {}-{}):", from, to, r.firstLine, r.lastLine));
-      doc.code(excerpt, worstLine);
-    }
-    regionPlots(doc, t, r, speed, accel);
-    doc.closeSection();
-    out["regions"].push_back({{"first_line", r.firstLine}, {"last_line", r.lastLine}, {"worst_line", worstLine},
-                              {"severity", r.severity}, {"at_pass_ends", r.atPassEnds},
-                              {"max_speed_inconsistency_mm_min", r.maxSpeedInconsistency},
-                              {"max_accel_inconsistency_mm_s2", r.maxAccelInconsistency}, {"max_jerk_mm_s3", r.maxJerk},
-                              {"max_predicted_deviation_um", r.maxDeviation}});
-    progress.update(0.6 + 0.35 * double(k + 1) / shown);
-  }
-}
-
-std::string percentOf(double value, double limit) {
-  return limit > 0 ? fmt::format("{:.0f} %", 100 * value / limit) : "not limited";
-}
-
-void axisLimits(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
-  const Trajectory& t = *run.samples;
-  const KinematicsSummary k =
-      summarizeKinematics(t.x.data(), t.y.data(), t.z.data(), t.irregularTime ? t.time.data() : nullptr, t.size(), t.cycle);
-  std::vector<std::vector<std::string>> rows = {{"axis", "largest velocity", "of the limit", "largest acceleration",
-                                                 "of the limit", "largest jerk", "of the limit"}};
-  out["axes"] = nlohmann::json::array();
-  for (int a = 0; a < 3; ++a) {
-    const AxisLimits& limit = run.machine.axes[a];
-    const KinematicsMaxima& m = k.axis[a];
-    rows.push_back({std::string(1, "XYZ"[a]), fmt::format("{:.0f} mm/min", mmPerSToMmPerMin(m.speed)),
-                    percentOf(m.speed, limit.maxVelocity), fmt::format("{:.0f} mm/s^2", m.accel),
-                    percentOf(m.accel, limit.maxAcceleration), fmt::format("{:.0f} mm/s^3", m.jerk),
-                    percentOf(m.jerk, limit.maxJerk)});
-    out["axes"].push_back({{"axis", std::string(1, "xyz"[a])}, {"max_velocity_mm_s", m.speed}, {"max_accel_mm_s2", m.accel},
-                           {"max_jerk_mm_s3", m.jerk}, {"velocity_limit_mm_s", limit.maxVelocity},
-                           {"accel_limit_mm_s2", limit.maxAcceleration}, {"jerk_limit_mm_s3", limit.maxJerk}});
-  }
-  doc.table(rows);
-  if (!run.machineKnown) doc.paragraph("The dump names no machine: the limits are the built-in machine's.");
-}
-
 // Writes one program's report to `html` (and `json`); returns its figures.
-nlohmann::json reportOne(const ReportOptions& o, const std::string& program, const std::string& dump,
+nlohmann::json reportOne(const ReportCliOptions& o, const std::string& program, const std::string& dump,
                          const std::string& html, const std::string& json) {
   TrajectoryChannels channels;
   channels.feedback = true;
   const bool dumpOnly = dump.empty() && isBiipFile(program);
   const OpenedRun run = openRunOnTerminal({dumpOnly ? "" : program, dumpOnly ? program : dump}, o.machine, o.force, channels);
-  if (!run.samples) throw InputError(Diagnostic{program, 0, 0, "the program makes no motion: nothing to report"});
-  const std::string name = std::filesystem::path(program).filename().string();
-  HtmlDocument doc("iSurface report: " + name);
-  nlohmann::json out;
-  ProgressLine progress("reporting on " + name);
-  doc.heading(1, "iSurface report: " + name);
-  doc.openSection("summary");
-  doc.heading(2, "Summary");
-  summary(doc, run, out);
-  doc.closeSection();
-
-  doc.openSection("maps");
-  doc.heading(2, "Quality maps");
-  doc.raw("<div class=\"maps\">\n");
-  const std::vector<Quantity> quantities = mapQuantities(*run.samples);
-  for (std::size_t k = 0; k < quantities.size(); ++k) {
-    for (const auto view : {vis::ViewDirection::Iso, vis::ViewDirection::Top}) {
-      const QuantityInfo& info = quantityInfo(quantities[k]);
-      doc.image(renderMap(run, quantities[k], view, std::nullopt),
-                fmt::format("{} ({}), {} view", info.label, info.unit, view == vis::ViewDirection::Iso ? "iso" : "top"));
-    }
-    progress.update(0.5 * double(k + 1) / double(quantities.size()));
-  }
-  doc.raw("</div>\n");
-  doc.closeSection();
-
-  vis::QualityMapRequest surfaceOnly;
-  const vis::QualityMap surface = vis::buildQualityMap(*run.samples, run.program.get(), surfaceOnly);
-  const QualityReport report = findQualityRegions(*run.samples, *surface.mesh);
-  doc.openSection("regions");
-  doc.heading(2, fmt::format("Worst regions ({} beyond the thresholds, {} shown)", report.regions.size(),
-                             std::min<std::size_t>(report.regions.size(), std::size_t(o.regions))));
-  regions(doc, run, report, o.regions, progress, out);
-  doc.closeSection();
-
-  doc.openSection("limits");
-  doc.heading(2, "How close each axis came to the machine's limits");
-  axisLimits(doc, run, out);
-  doc.closeSection();
+  report::ReportOptions options;
+  options.regions = o.regions;
+  options.optimisation = o.optimise == "auto" ? report::ReportOptimisation::WorstRegion
+                         : o.optimise == "all" ? report::ReportOptimisation::AllPasses
+                                               : report::ReportOptimisation::None;
+  options.chordTolerance = o.chordTolerance;
+  if (!o.compare.empty())
+    options.compared = openRunOnTerminal({dumpOnly ? "" : program, o.compare}, o.machine, o.force, channels);
+  ProgressLine progress("reporting on " + std::filesystem::path(program).filename().string());
+  const report::ProgramReport r = report::buildProgramReport(run, options, [&](double f) { progress.update(f); });
   progress.finish();
-
-  writeFileAtomically(html, doc.finish());
-  if (!json.empty()) writeFileAtomically(json, out.dump(2) + "\n");
-  std::printf("%s: %zu maps, %zu regions (%zu beyond the thresholds)\n", html.c_str(), quantities.size() * 2,
-              out["regions"].size(), report.regions.size());
-  return out;
+  writeFileAtomically(html, r.html);
+  if (!json.empty()) writeFileAtomically(json, r.figures.dump(2) + "\n");
+  std::printf("%s: %zu maps, %zu regions (%zu beyond the thresholds)\n", html.c_str(), r.maps,
+              r.figures["regions"].size(), r.regionsFound);
+  return r.figures;
 }
 
 // Every G-code program in a folder: a report each and an index ranking them by their worst
 // region. A program that cannot be read is listed with its error; the others go on.
-int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
+int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds) {
   std::vector<std::string> programs;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(o.batch, error))
@@ -333,7 +144,7 @@ int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
     rows.push_back(std::move(row));
   }
   std::stable_sort(rows.begin(), rows.end(), [](const Row& a, const Row& b) { return a.severity > b.severity; });
-  HtmlDocument index("iSurface reports: " + o.batch);
+  report::HtmlDocument index("iSurface reports: " + o.batch);
   index.heading(1, "iSurface reports: " + o.batch);
   index.paragraph(fmt::format("{} programs, ranked by the severity of their worst region.", rows.size()));
   std::string table = "<table>\n<tr><th>program</th><th>worst region</th><th>severity</th><th>machining time</th>"
@@ -347,10 +158,10 @@ int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
                                                 r.figures["regions"][0]["last_line"].get<int>())
                                   : "-";
     table += std::string("<tr") + (r.problem.empty() ? "" : " class=\"near\"") + "><td>" +
-             (reported ? "<a href=\"" + escapeHtml(r.page) + "\">" + escapeHtml(r.name) + "</a>" : escapeHtml(r.name)) +
-             "</td><td>" + escapeHtml(worst) + "</td><td>" + (reported ? fmt::format("{:.1f}", r.severity) : "-") +
-             "</td><td>" + (reported ? duration(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
-             escapeHtml(r.problem.empty() ? "none" : r.problem) + "</td></tr>\n";
+             (reported ? "<a href=\"" + report::escapeHtml(r.page) + "\">" + report::escapeHtml(r.name) + "</a>" : report::escapeHtml(r.name)) +
+             "</td><td>" + report::escapeHtml(worst) + "</td><td>" + (reported ? fmt::format("{:.1f}", r.severity) : "-") +
+             "</td><td>" + (reported ? formatDuration(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
+             report::escapeHtml(r.problem.empty() ? "none" : r.problem) + "</td></tr>\n";
   }
   index.raw(table + "</table>\n");
   writeFileAtomically((std::filesystem::path(o.output) / "index.html").string(), index.finish());
@@ -358,12 +169,15 @@ int runBatch(const ReportOptions& o, const std::vector<Threshold>& thresholds) {
   return failed ? kExitFailure : kExitOk;
 }
 
-int runReport(const ReportOptions& o) {
-  if (o.regions < 0 || o.regions > 50) throw InputError(Diagnostic{"", 0, 0, "--regions must be 0 to 50"});
+int runReport(const ReportCliOptions& o) {
+  if (o.regions < 0 || o.regions > report::kMostRegions)
+    throw InputError(Diagnostic{"", 0, 0, fmt::format("--regions must be 0 to {}", report::kMostRegions)});
+  if (!(o.chordTolerance >= 1e-6 && o.chordTolerance <= 10))
+    throw InputError(Diagnostic{"", 0, 0, "--tolerance must be from 1e-06 to 10 mm"});
   const std::vector<Threshold> thresholds = parseThresholds(o.failOn);
   if (!o.batch.empty()) {
-    if (!o.program.empty() || !o.dump.empty() || !o.json.empty())
-      throw InputError(Diagnostic{"", 0, 0, "--batch takes a folder: give no program, dump or --json with it"});
+    if (!o.program.empty() || !o.dump.empty() || !o.json.empty() || !o.compare.empty())
+      throw InputError(Diagnostic{"", 0, 0, "--batch takes a folder: give no program, dump, --compare or --json with it"});
     return runBatch(o, thresholds);
   }
   if (o.program.empty()) throw InputError(Diagnostic{"", 0, 0, "give a program (or a dump), or --batch FOLDER"});
@@ -379,7 +193,7 @@ int runReport(const ReportOptions& o) {
 Command reportCommand() {
   return Command{"report", "Write one self-contained HTML report of a program: summary, quality maps, worst regions with their G-code and speed, axis limits",
     [](CLI::App& sub) {
-      auto o = std::make_shared<ReportOptions>();
+      auto o = std::make_shared<ReportCliOptions>();
       sub.add_option("program", o->program, "G-code program (or a Biip dump alone)");
       sub.add_option("dump", o->dump, "Biip dump or trace of the program (default: simulate it)");
       sub.add_option("-o,--output", o->output, "HTML file to write (with --batch: the folder of the reports)")->required();
@@ -389,6 +203,14 @@ Command reportCommand() {
                      "(mm/s^2), jerk (mm/s^3), deviation (um) of the worst region shown, or machining_time (s); repeatable");
       sub.add_option("--json", o->json, "also write the report's figures as JSON");
       sub.add_option("--regions", o->regions, "worst regions shown, 0 to 50")->capture_default_str();
+      sub.add_option("--compare", o->compare,
+                     "another run of the program (a Biip dump or trace): its speed map beside this one's, the "
+                     "difference and the figures of both");
+      sub.add_option("--optimize", o->optimise,
+                     "re-optimise the worst region (auto) or every pass (all) and show the program before and after")
+          ->check(CLI::IsMember({"auto", "all"}));
+      sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the re-fitted moves with --optimize, mm")
+          ->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
       return [o] { return runReport(*o); };

@@ -2,6 +2,8 @@
 // Loading what commands share: a G-code program (with its diagnostics printed) and a machine.
 #include <string>
 
+#include "isurface/base/time_format.h"
+
 #include <CLI/CLI.hpp>
 
 #include "isurface/base/diagnostic.h"
@@ -38,7 +40,5 @@ Machine loadMachineOption(const MachineOption& option);
   throw InputError(Diagnostic{file, 0, 0, message});
 }
 
-// Machine time as m:ss.mmm.
-std::string formatDuration(double seconds);
 
 }  // namespace isurface::cli

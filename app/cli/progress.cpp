@@ -4,6 +4,7 @@
 
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 
 namespace isurface::cli {
 
@@ -15,7 +16,9 @@ double nowSeconds() {
 }  // namespace
 
 ProgressLine::ProgressLine(std::string label) : label_(std::move(label)) {
-  enabled_ = isatty(STDERR_FILENO) != 0;
+  // A program that runs this one and reads its progress (the window's report export) asks for it.
+  const char* asked = std::getenv("ISURFACE_PROGRESS");
+  enabled_ = isatty(STDERR_FILENO) != 0 || (asked && asked[0] == '1');
 }
 
 ProgressLine::~ProgressLine() { finish(); }

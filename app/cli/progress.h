@@ -1,5 +1,6 @@
 #pragma once
-// A progress line on stderr for long operations; silent when stderr is not a terminal.
+// A progress line on stderr for long operations ("\rLABEL NN%"); silent when stderr is not a
+// terminal, unless the environment has ISURFACE_PROGRESS=1.
 #include <string>
 
 namespace isurface::cli {

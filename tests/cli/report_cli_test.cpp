@@ -140,3 +140,82 @@ TEST(Report, ABatchRanksEveryProgramOfAFolder) {
   EXPECT_TRUE(fs::exists(out / "transition.nc.html"));
   EXPECT_TRUE(fs::exists(out / "transition.nc.json"));
 }
+
+namespace {
+
+std::size_t occurrences(const std::string& text, const std::string& part) {
+  std::size_t n = 0;
+  for (std::size_t at = text.find(part); at != std::string::npos; at = text.find(part, at + 1)) ++n;
+  return n;
+}
+
+// The section of the page with this id, up to the next section.
+std::string sectionOf(const std::string& html, const std::string& id) {
+  const std::size_t begin = html.find("<section id=\"" + id + "\"");
+  if (begin == std::string::npos) return "";
+  return html.substr(begin, html.find("</section>", begin) - begin);
+}
+
+}  // namespace
+
+// Each region gets a close-up of the map around it, besides where it lies on the whole part.
+TEST(Report, EachRegionHasACloseUp) {
+  const std::string html = (scratchDir() / "closeups.html").string(), json = (scratchDir() / "closeups.json").string();
+  const auto r = runCli("report " + std::string(ISURFACE_SOURCE_DIR) + "/samples/wuzhishan.nc -o " + html + " --json " +
+                        json + " --regions 2");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = readAll(html);
+  const nlohmann::json figures = nlohmann::json::parse(readAll(json));
+  ASSERT_EQ(figures["regions"].size(), 2u);
+  for (int k = 1; k <= 2; ++k) {
+    const std::string region = sectionOf(text, "region-" + std::to_string(k));
+    EXPECT_EQ(occurrences(region, "alt=\"Close-up of the region"), 1u) << "region " << k;
+    EXPECT_EQ(occurrences(region, "alt=\"Where it lies on the whole part"), 1u) << "region " << k;
+  }
+  for (const auto& region : figures["regions"]) {
+    const auto lower = region["box_mm"]["min"].get<std::vector<double>>(), upper = region["box_mm"]["max"].get<std::vector<double>>();
+    for (int a = 0; a < 3; ++a) EXPECT_LE(lower[a], upper[a]);
+  }
+}
+
+// A second run of the program (another machine's dump) beside this one: both speed maps, the
+// difference and the figures of both, from the independent figures module.
+TEST(Report, ASecondRunStandsBesideIt) {
+  const std::string program = std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc";
+  const std::string other = (scratchDir() / "transition-linuxcnc.biip").string();
+  ASSERT_EQ(runCli("simulate " + program + " -o " + other + " --machine " + std::string(ISURFACE_SOURCE_DIR) +
+                   "/resources/machines/linuxcnc-sim.json").exitCode, 0);
+  const std::string html = (scratchDir() / "beside.html").string(), json = (scratchDir() / "beside.json").string();
+  const auto r = runCli("report " + program + " -o " + html + " --json " + json + " --regions 1 --compare " + other);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string section = sectionOf(readAll(html), "comparison");
+  ASSERT_FALSE(section.empty());
+  EXPECT_EQ(occurrences(section, "<img"), 3u);
+  EXPECT_NE(section.find("adjacent-pass inconsistency, p99"), std::string::npos);
+  const nlohmann::json c = nlohmann::json::parse(readAll(json))["comparison"];
+  EXPECT_EQ(c["compared_with"], other);
+  EXPECT_GT(c["this_run"]["surface_samples"].get<double>(), 1000);
+  EXPECT_NE(c["this_run"]["machining_time_s"].get<double>(), c["compared_run"]["machining_time_s"].get<double>());
+  // A compared run that is not of this program is refused, as compare refuses it.
+  const auto wrong = runCli("report " + program + " -o " + html + " --compare " + std::string(ISURFACE_SOURCE_DIR) +
+                            "/samples/wuzhishan.nc");
+  EXPECT_EQ(wrong.exitCode, 2) << wrong.err;
+}
+
+// The program re-optimised: before and after maps, the difference, and the figures of the
+// region and of the whole program.
+TEST(Report, AnOptimisationShowsBeforeAndAfter) {
+  const std::string html = (scratchDir() / "optimised.html").string(), json = (scratchDir() / "optimised.json").string();
+  const auto r = runCli("report " + std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc -o " + html +
+                        " --json " + json + " --regions 1 --optimize auto");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string section = sectionOf(readAll(html), "optimisation");
+  ASSERT_FALSE(section.empty());
+  EXPECT_EQ(occurrences(section, "<img"), 3u);
+  EXPECT_EQ(occurrences(section, "<table"), 2u);
+  const nlohmann::json o = nlohmann::json::parse(readAll(json))["optimisation"];
+  EXPECT_EQ(o["mode"], "auto");
+  EXPECT_LT(o["max_path_distance_mm"].get<double>(), 0.01);
+  EXPECT_GT(o["region"]["before"]["surface_samples"].get<double>(), 0);
+  EXPECT_EQ(runCli("report x.nc -o " + html + " --optimize some").exitCode, 2);
+}

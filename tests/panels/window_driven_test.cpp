@@ -245,3 +245,57 @@ TEST(drivenWindow, AWorkingSessionWithMouseAndKeys) {
   w.key("ctrl+q");
   EXPECT_EQ(w.exitCode(20 * kSlow), 0) << log();
 }
+
+// File > Export > report: made beside the window with its progress in the status bar, saved
+// where the user said; a second one cancelled from the status bar leaves no file and no
+// temporary folder.
+TEST(drivenWindow, AReportIsExportedAndAnotherCancelled) {
+  if (!installed("Xvfb") || !installed("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+#ifdef ISURFACE_SANITIZED
+  GTEST_SKIP() << "the driven session needs the uninstrumented window's frame rate";
+#endif
+  const std::filesystem::path home = scratchDir() / "driven-report";
+  std::filesystem::remove_all(home);
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  DrivenWindow w(home, {program, transitionDump()});
+  auto log = [&] { return readFile(w.logPath()) + "\nstate: " + w.state().dump().substr(0, 2000); };
+  ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1 && s["controls"].contains("surface"); },
+                        60))
+      << log();
+  auto scratchFolders = [] {
+    std::size_t n = 0;
+    for (const auto& e : std::filesystem::directory_iterator(std::filesystem::temp_directory_path()))
+      n += e.path().filename().string().rfind("isurface-report-", 0) == 0;
+    return n;
+  };
+  const std::size_t foldersBefore = scratchFolders();
+
+  const std::string report = (home / "transition report.html").string();
+  w.key("ctrl+e");
+  w.clickControl("export.report");
+  w.typeInto("export.path", report);
+  w.clickControl("export.write");
+  // Its progress is shown while it is made.
+  EXPECT_TRUE(w.waitFor([](const json& s) { return s["job"].is_object() && s["job"]["progress"].get<double>() > 0; }, 30))
+      << log();
+  ASSERT_TRUE(w.waitFor([&](const json& s) { return s["last_saved"] == report; }, 180)) << log();
+  const std::string html = readFile(report);
+  for (const char* part : {"<h2>Summary", "<h2>Quality maps", "<h2>Worst regions", "data:image/png;base64,", "</html>"})
+    EXPECT_NE(html.find(part), std::string::npos) << part;
+
+  const std::string cancelled = (home / "cancelled.html").string();
+  w.key("ctrl+e");
+  w.clickControl("export.report");
+  w.typeInto("export.path", cancelled);
+  w.clickControl("export.write");
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["job"].is_object(); }, 10)) << log();
+  w.clickControl("job.cancel");
+  ASSERT_TRUE(w.waitFor([](const json& s) {
+    return idle(s) && s["status"].get<std::string>().find("cancelled") != std::string::npos;
+  }, 20)) << log();
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  EXPECT_FALSE(std::filesystem::exists(cancelled));
+  EXPECT_EQ(scratchFolders(), foldersBefore) << "the cancelled report's temporary folder was left";
+  w.key("ctrl+q");
+  EXPECT_EQ(w.exitCode(20), 0) << log();
+}

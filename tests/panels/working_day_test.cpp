@@ -393,3 +393,18 @@ TEST(workingDay, ARecentFileClickedOpensThatFile) {
   ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
   EXPECT_EQ(described(ui)["documents"][0]["program"], test::sourcePath("samples/transition-surface.nc"));
 }
+
+// Letters typed while a dialog is open and no field of it has the keyboard are not shortcuts:
+// a window opened behind an open dialog (H: help, M: machine) stopped the program (Dear ImGui
+// 1.86 asserts that a window appearing under a modal has one to go behind).
+TEST(workingDay, ShortcutsWaitWhileADialogIsOpen) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'E', true);
+  ASSERT_TRUE(described(*ui)["controls"].contains("export.write"));
+  for (char letter : {'H', 'M', 'P', 'D', 'O'}) tapLetter(*ui, letter);
+  const nlohmann::json windows = described(*ui)["windows"];
+  EXPECT_FALSE(windows["help"].get<bool>());
+  EXPECT_FALSE(windows["machine"].get<bool>());
+  EXPECT_FALSE(windows["optimise"].get<bool>());
+  EXPECT_TRUE(described(*ui)["controls"].contains("export.write")) << "the export dialog closed";
+}

@@ -131,6 +131,10 @@ void Inspector::State::takeJobResult() {
     return;
   }
   if (!result) return;
+  if (!result->reportPath.empty()) {
+    save(result->reportPath, std::move(result->report), "report");
+    return;
+  }
   if (result->runComparison) {
     comparison.reset();
     runComparison = result->runComparison;

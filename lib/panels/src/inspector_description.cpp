@@ -85,6 +85,8 @@ std::string Inspector::describe() const {
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
+                              {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}}
+                                                      : nlohmann::json()},
                               {"selection", selection},
                               {"machine", machineJson(s.machine)},
                               {"machine_source", s.machineSource},

@@ -103,6 +103,7 @@ struct JobResult {
   std::string programAlone;                  // a program whose dump was refused, to open by itself next
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
   vis::QualityMap map;
+  std::string reportPath, report;            // or a report to save (File > Export)
 };
 
 // A file the user asked to save, waiting for "replace?" when it exists.
@@ -144,9 +145,11 @@ struct Inspector::State {
     std::string unit;
     float pixels = 0;
   } scaleBar;
-  // The export dialog: what (0 view PNG, 1 map figures JSON, 2 samples of lines CSV), where.
+  // The export dialog: what (0 view PNG, 1 map figures JSON, 2 samples of lines CSV, 3 report
+  // HTML), where.
   bool exportDialog = false;
   int exportKind = 0, exportWidth = 1920, exportHeight = 1080, exportFirst = 1, exportLast = 1;
+  int exportRegions = 5;
   char exportPath[1024] = "";
   // The sample under the resting pointer, and for how many frames the pointer has rested.
   std::optional<std::size_t> hoverSample;
@@ -226,6 +229,8 @@ struct Inspector::State {
   // The view beside the main one shows the new map or the difference map.
   void showOptimisedDifference(bool difference);
   void startRunComparison(const std::string& dumpPath);
+  // Writes the active document's report (isurface-cli report, beside the window) to `path`.
+  void startReport(const std::string& path, int regions);
   // The view beside the main one shows run B's map or the difference map.
   void showRunDifference(bool difference);
   void takeJobResult();

@@ -18,11 +18,13 @@ namespace {
 constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_NoResize | ImGuiWindowFlags_NoCollapse |
                                     ImGuiWindowFlags_NoBringToFrontOnFocus;
 
-// A key pressed while no text field has the keyboard (letters are their upper-case ASCII code
-// in both hosts).
+// A key pressed while no text field has the keyboard and no dialog or menu is open (letters are
+// their upper-case ASCII code in both hosts). Under an open dialog a shortcut would open a
+// window behind it, which Dear ImGui 1.86 does not allow (it asserts).
 bool shortcut(int key, bool ctrl = false) {
   const ImGuiIO& io = ImGui::GetIO();
-  return !io.WantTextInput && io.KeyCtrl == ctrl && ImGui::IsKeyPressed(key, false);
+  return !io.WantTextInput && io.KeyCtrl == ctrl && !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId) &&
+         ImGui::IsKeyPressed(key, false);
 }
 
 bool toolButton(const char* label, const char* tip) {
@@ -318,7 +320,9 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
   if (s.job.running()) {
     ImGui::ProgressBar(static_cast<float>(s.job.progress()), ImVec2(width * 0.3f, 0), s.job.label().c_str());
     ImGui::SameLine();
-    if (ImGui::Button("Cancel")) s.job.cancel();
+    const bool cancel = ImGui::Button("Cancel");
+    noteControl(s, "job.cancel");
+    if (cancel) s.job.cancel();
     ImGui::SameLine();
   }
   ImGui::TextUnformatted(s.status.c_str());

@@ -1,6 +1,6 @@
 // Export from the window: the 3D view as a PNG at a chosen size, the current map's figures as
-// JSON, and the samples of a range of G-code lines as CSV. Each goes through the window's save
-// (a file that exists is replaced only when the user says so).
+// JSON, the samples of a range of G-code lines as CSV, and the report (panel_report.cpp). Each
+// goes through the window's save (a file that exists is replaced only when the user says so).
 #include <imgui.h>
 
 #include <fmt/format.h>
@@ -113,6 +113,9 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::SameLine();
   ImGui::RadioButton("the samples of lines as CSV", &s.exportKind, 2);
   noteControl(s, "export.csv");
+  ImGui::SameLine();
+  ImGui::RadioButton("a report (HTML)", &s.exportKind, 3);
+  noteControl(s, "export.report");
   if (s.exportKind == 0) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("width [px]", &s.exportWidth, 0);
@@ -125,6 +128,10 @@ void drawExportDialog(Inspector::State& s) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("last line", &s.exportLast, 0);
+  } else if (s.exportKind == 3) {
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
+    ImGui::InputInt("worst regions shown", &s.exportRegions, 0);
+    ImGui::TextDisabled("maps, worst regions with their G-code and speed, axis limits: one file to open in a browser");
   }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
   ImGui::InputTextWithHint("##path", "file to write", s.exportPath, sizeof s.exportPath);
@@ -136,6 +143,10 @@ void drawExportDialog(Inspector::State& s) {
     problem = "the size must be 64 to 8192 pixels each way";
   else if (s.exportKind == 2 && (s.exportFirst < 1 || s.exportLast < s.exportFirst))
     problem = "the lines must be first <= last, from 1";
+  else if (s.exportKind == 3 && (s.exportRegions < 0 || s.exportRegions > 50))
+    problem = "the regions shown must be 0 to 50";
+  else if (s.exportKind == 3 && s.job.running())
+    problem = "wait for the work in progress (or cancel it) first";
   else if (!s.exportPath[0]) problem = "give the file to write";
   if (!problem.empty()) ImGui::TextDisabled("%s", problem.c_str());
   const bool write = ImGui::Button("Export");
@@ -145,6 +156,8 @@ void drawExportDialog(Inspector::State& s) {
       const std::vector<unsigned char> rgb = s.view.snapshot(s.exportWidth, s.exportHeight);
       if (rgb.empty()) s.status = "error: the view could not be drawn at that size";
       else s.save(s.exportPath, vis::pngOfRgb(rgb.data(), s.exportWidth, s.exportHeight), "view image");
+    } else if (s.exportKind == 3) {
+      s.startReport(s.exportPath, s.exportRegions);
     } else if (s.exportKind == 1) {
       s.save(s.exportPath, figuresJson(*doc), "map figures");
     } else {

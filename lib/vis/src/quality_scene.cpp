@@ -280,6 +280,31 @@ void QualityScene::setView(ViewDirection view) {
   syncAxes();
 }
 
+void QualityScene::frameBox(const Vec3& lower, const Vec3& upper) {
+  // A box of a few samples (a region at one point) is widened to a readable neighbourhood.
+  double bounds[6];
+  parts_->surface->GetBounds(bounds);
+  const double whole = std::max({bounds[1] - bounds[0], bounds[3] - bounds[2], bounds[5] - bounds[4], 1e-3});
+  double box[6];
+  for (int a = 0; a < 3; ++a) {
+    const double half = std::max(0.5 * (upper[a] - lower[a]), 0.03 * whole) * 1.25;
+    const double centre = 0.5 * (lower[a] + upper[a]);
+    box[2 * a] = centre - half;
+    box[2 * a + 1] = centre + half;
+  }
+  vtkCamera* camera = parts_->renderer->GetActiveCamera();
+  double position[3], focal[3];
+  camera->GetPosition(position);
+  camera->GetFocalPoint(focal);
+  const double centre[3] = {0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5])};
+  camera->SetFocalPoint(centre);
+  camera->SetPosition(centre[0] + position[0] - focal[0], centre[1] + position[1] - focal[1],
+                      centre[2] + position[2] - focal[2]);
+  parts_->renderer->ResetCamera(box);
+  parts_->renderer->ResetCameraClippingRange();  // the whole surface, not the box: nothing in view is cut
+  syncAxes();
+}
+
 void QualityScene::syncAxes() {
   vtkCamera* main = parts_->renderer->GetActiveCamera();
   vtkCamera* corner = parts_->axesCorner->GetActiveCamera();

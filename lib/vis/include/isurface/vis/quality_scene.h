@@ -62,6 +62,9 @@ class QualityScene {
   // Adds the scene's renderers to a window (main view and the orientation-axes corner).
   void attachTo(vtkRenderWindow* window);
   void setView(ViewDirection view);
+  // Keeps the view's direction and fills the view with a box of the surface (mm), with a
+  // margin around it: a region's close-up.
+  void frameBox(const Vec3& lower, const Vec3& upper);
   // Keeps the axes corner turned like the main camera; call before each render.
   void syncAxes();
 

@@ -5,7 +5,7 @@
 #include <string_view>
 #include <vector>
 
-namespace isurface::cli {
+namespace isurface::report {
 
 std::string escapeHtml(std::string_view text);
 std::string base64(std::string_view bytes);
@@ -32,4 +32,4 @@ class HtmlDocument {
   std::string title_, body_;
 };
 
-}  // namespace isurface::cli
+}  // namespace isurface::report

@@ -1,8 +1,8 @@
-#include "report_html.h"
+#include "isurface/report/html_document.h"
 
 #include <cstdint>
 
-namespace isurface::cli {
+namespace isurface::report {
 
 std::string escapeHtml(std::string_view text) {
   std::string out;
@@ -102,4 +102,4 @@ std::string HtmlDocument::finish() const {
          body_ + "</body>\n</html>\n";
 }
 
-}  // namespace isurface::cli
+}  // namespace isurface::report

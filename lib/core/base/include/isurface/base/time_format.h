@@ -1,0 +1,10 @@
+#pragma once
+// Machining times as people read them.
+#include <string>
+
+namespace isurface {
+
+// "m:ss.mmm" (minutes run past 59); 0:00.000 for a time that is not a finite positive number.
+std::string formatDuration(double seconds);
+
+}  // namespace isurface

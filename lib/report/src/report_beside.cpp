@@ -1,0 +1,136 @@
+#include "report_beside.h"
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include <fmt/format.h>
+
+#include "isurface/analysis/quality_figures.h"
+#include "isurface/analysis/quantities.h"
+#include "isurface/analysis/run_comparison.h"
+#include "isurface/optimise/optimized_run_comparison.h"
+#include "isurface/vis/difference_map.h"
+#include "isurface/workflow/region_optimisation.h"
+#include "report_parts.h"
+
+namespace isurface::report {
+namespace {
+
+// Both runs' speed maps share one colour range (the first run's 1st to 99th percentile on its
+// surface), so that a colour means the same speed in both.
+ValueRange sharedSpeedRange(const SurfaceRun& run) {
+  return percentileRange(vertexQuantity(Quantity::Speed, *run.samples, *run.mesh), 1, 99);
+}
+
+vis::QualityMapRequest speedTop(const ValueRange& range, const std::string& caption) {
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::Speed;
+  request.view = vis::ViewDirection::Top;
+  request.fixedRange = range;
+  request.caption = caption;
+  return request;
+}
+
+std::string nameOf(const std::string& path) { return std::filesystem::path(path).filename().string(); }
+
+std::string readText(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream text;
+  text << in.rdbuf();
+  if (!in.good() && !in.eof()) throw InputError(Diagnostic{path, 0, 0, "cannot read the program again to optimise it"});
+  return text.str();
+}
+
+}  // namespace
+
+void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun& other, const ProgressCallback& progress,
+                       nlohmann::json& out) {
+  const std::string thisName = nameOf(run.files.dump.empty() ? run.files.program : run.files.dump);
+  const std::string otherName = nameOf(other.files.dump.empty() ? other.files.program : other.files.dump);
+  if (!other.samples) throw InputError(Diagnostic{other.files.dump, 0, 0, "the run compared makes no motion"});
+  const SurfaceRun a = surfaceRun(run.samples, run.program.get());
+  const SurfaceRun b = surfaceRun(other.samples, other.program ? other.program.get() : run.program.get());
+  if (!a.mesh || !b.mesh)
+    throw InputError(Diagnostic{a.mesh ? other.files.dump : run.files.program, 0, 0,
+                                "no cutting passes found to build a surface on: the runs cannot be compared"});
+  doc.openSection("comparison");
+  doc.heading(2, fmt::format("This run beside {}", otherName));
+  const ValueRange range = sharedSpeedRange(a);
+  doc.raw("<div class=\"maps\">\n");
+  doc.image(renderMapPng(run, speedTop(range, thisName)), fmt::format("Path speed, {} (top view)", thisName));
+  if (progress) progress(0.3);
+  doc.image(renderMapPng(other, speedTop(range, otherName)),
+            fmt::format("Path speed, {} (top view, the same colour range)", otherName));
+  if (progress) progress(0.6);
+  const RunComparison comparison = compareRuns(*run.samples, *other.samples);
+  vis::QualityMapRequest difference = vis::differenceMapRequest(comparison, ComparisonQuantity::Speed);
+  difference.view = vis::ViewDirection::Top;
+  difference.caption = otherName + " against " + thisName;
+  doc.image(renderMapPng(run, difference),
+            fmt::format("Speed of {} minus speed of {} at the same place on the part (mm/min)", otherName, thisName));
+  doc.raw("</div>\n");
+  const QualityFigures figuresA = measureQualityFigures(*a.samples, *a.mesh);
+  const QualityFigures figuresB = measureQualityFigures(*b.samples, *b.mesh);
+  const double timeA = machiningTime(*run.samples), timeB = machiningTime(*other.samples);
+  figuresTable(doc, thisName, otherName, timeA, timeB, figuresA, figuresB);
+  doc.closeSection();
+  out["comparison"] = {{"compared_with", other.files.dump}, {"this_run", figuresJson(timeA, figuresA)},
+                       {"compared_run", figuresJson(timeB, figuresB)}};
+  if (progress) progress(1.0);
+}
+
+void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOptions& options,
+                         const ProgressCallback& progress, nlohmann::json& out) {
+  if (!run.program || run.files.program.empty())
+    throw InputError(Diagnostic{run.files.dump, 0, 0, "a re-optimisation needs the program, not a dump alone"});
+  const std::string& path = run.files.program;
+  const SurfaceRun before = surfaceRun(run.samples, run.program.get());
+  const bool all = options.optimisation == ReportOptimisation::AllPasses;
+  const ChosenRegion chosen = all ? wholeProgramRegion(before, path) : worstRegion(before, path);
+  RegionRequest request;
+  request.options.chordTolerance = options.chordTolerance;
+  request.lines = chosen.lines;
+  request.box = std::make_pair(chosen.lower, chosen.upper);
+  const RegionOptimisation r =
+      optimiseRegion(readText(path), *run.program, before, run.machine, request, progressStage(progress, 0, 0.7));
+
+  doc.openSection("optimisation");
+  doc.heading(2, fmt::format("Re-optimised: {} (lines {}-{})", all ? "every pass" : "the worst region", r.lines.first,
+                             r.lines.last));
+  if (r.kept) doc.paragraph("The new program is no slower and no figure is worse by more than 2 %: it would be kept.");
+  doc.paragraph(regionSummary(r));
+  OpenedRun after = run;
+  after.files.dump.clear();
+  after.samples = r.after.samples;
+  after.program = r.program;
+  const ValueRange range = sharedSpeedRange(before);
+  const std::string name = nameOf(path);
+  doc.raw("<div class=\"maps\">\n");
+  doc.image(renderMapPng(run, speedTop(range, name + " before")), "Path speed before (top view)");
+  doc.image(renderMapPng(after, speedTop(range, name + " after")), "Path speed after (top view, the same colour range)");
+  const RunComparison difference = compareOptimizedRuns(*before.samples, *r.after.samples, r.result);
+  vis::QualityMapRequest differenceMap = vis::regionDifferenceMapRequest(difference, *before.samples, r.lines);
+  differenceMap.view = vis::ViewDirection::Top;
+  differenceMap.caption = name + " after against before";
+  doc.image(renderMapPng(run, differenceMap), "Speed after minus before on the surface before (mm/min)");
+  doc.raw("</div>\n");
+  doc.heading(3, "In the region");
+  figuresTable(doc, "before", "after", r.timeBefore, r.timeAfter, r.regionBefore, r.regionAfter);
+  doc.heading(3, "The whole program");
+  figuresTable(doc, "before", "after", r.timeBefore, r.timeAfter, r.wholeBefore, r.wholeAfter);
+  doc.paragraph(fmt::format("The new path lies within {:.4f} mm of the old one over the region.", r.maxPathDistance));
+  doc.closeSection();
+  out["optimisation"] = {{"mode", all ? "all" : "auto"},
+                         {"lines", {r.lines.first, r.lines.last}},
+                         {"kept", r.kept},
+                         {"reason", r.reason},
+                         {"max_path_distance_mm", r.maxPathDistance},
+                         {"region", {{"before", figuresJson(r.timeBefore, r.regionBefore)},
+                                     {"after", figuresJson(r.timeAfter, r.regionAfter)}}},
+                         {"whole_program", {{"before", figuresJson(r.timeBefore, r.wholeBefore)},
+                                            {"after", figuresJson(r.timeAfter, r.wholeAfter)}}}};
+  if (progress) progress(1.0);
+}
+
+}  // namespace isurface::report
