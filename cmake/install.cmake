@@ -17,13 +17,15 @@ add_custom_command(OUTPUT ${ISURFACE_ICONS}
   DEPENDS make_icon_sizes ${CMAKE_SOURCE_DIR}/resources/icons/isurface-64.png
   COMMENT "Icons at ${ISURFACE_ICON_SIZES} pixels")
 
-set(ISURFACE_MAN_PAGES ${CMAKE_BINARY_DIR}/man/isurface.1 ${CMAKE_BINARY_DIR}/man/isurface-cli.1)
+# Compressed, as Debian installs man pages (-n: no name or time inside, the same bytes each build).
+set(ISURFACE_MAN_PAGES ${CMAKE_BINARY_DIR}/man/isurface.1.gz ${CMAKE_BINARY_DIR}/man/isurface-cli.1.gz)
 add_custom_command(OUTPUT ${ISURFACE_MAN_PAGES}
   COMMAND ${CMAKE_COMMAND} -E make_directory ${CMAKE_BINARY_DIR}/man
   COMMAND bash ${CMAKE_SOURCE_DIR}/packaging/make_man_page.sh $<TARGET_FILE:isurface> isurface
           ${PROJECT_VERSION} ${CMAKE_BINARY_DIR}/man/isurface.1
   COMMAND bash ${CMAKE_SOURCE_DIR}/packaging/make_man_page.sh $<TARGET_FILE:isurface-cli> isurface-cli
           ${PROJECT_VERSION} ${CMAKE_BINARY_DIR}/man/isurface-cli.1
+  COMMAND gzip -9nf ${CMAKE_BINARY_DIR}/man/isurface.1 ${CMAKE_BINARY_DIR}/man/isurface-cli.1
   DEPENDS isurface isurface-cli isurface-cli-all ${CMAKE_SOURCE_DIR}/packaging/make_man_page.sh
   COMMENT "Man pages from the programs' --help")
 add_custom_target(isurface_install_files ALL DEPENDS ${ISURFACE_ICONS} ${ISURFACE_MAN_PAGES})

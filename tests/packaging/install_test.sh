@@ -14,7 +14,7 @@ fail() { echo "install_test: $*" >&2; exit 1; }
 DESTDIR="$work/root" cmake --install "$build" --prefix /usr > "$work/install.log"
 root="$work/root/usr"
 for f in bin/isurface bin/isurface-cli bin/isurface-cli-all share/applications/isurface.desktop \
-         share/mime/packages/isurface.xml share/man/man1/isurface.1 share/man/man1/isurface-cli.1 \
+         share/mime/packages/isurface.xml share/man/man1/isurface.1.gz share/man/man1/isurface-cli.1.gz \
          share/bash-completion/completions/isurface-cli share/isurface/samples/transition-surface.nc \
          share/isurface/machines/default.json share/icons/hicolor/48x48/apps/isurface.png; do
   [ -e "$root/$f" ] || fail "not installed: $f"
@@ -38,7 +38,7 @@ grep -q "application/x-isurface-biip" "$root/share/mime/magic" || fail "no magic
 grep -q "text/x-gcode" "$root/share/mime/globs2" || fail "no glob for G-code"
 
 for page in isurface isurface-cli; do
-  warnings=$(LC_ALL=C.UTF-8 MANWIDTH=80 man --warnings -l "$root/share/man/man1/$page.1" 2>&1 > "$work/$page.txt")
+  warnings=$(LC_ALL=C.UTF-8 MANWIDTH=80 man --warnings -l "$root/share/man/man1/$page.1.gz" 2>&1 > "$work/$page.txt")
   [ -z "$warnings" ] || fail "man $page: $warnings"
 done
 grep -q "isurface-cli render" "$work/isurface-cli.txt" || fail "the isurface-cli page has no render section"
