@@ -84,6 +84,14 @@ ChildOutcome runChildProcess(const std::vector<std::string>& argv, JobControl& c
 
   ChildOutcome outcome;
   std::string line;
+  // A line read whole (or the last, unended): progress, or a message kept.
+  const auto take = [&](std::string& text) {
+    std::string label;
+    double fraction = 0;
+    if (parseProgress(text, label, fraction)) progress(label, fraction);
+    else if (!text.empty()) outcome.messages += text + "\n";
+    text.clear();
+  };
   try {
     for (;;) {
       if (control.cancelRequested()) throw JobCancelled{};
@@ -99,18 +107,14 @@ ChildOutcome runChildProcess(const std::vector<std::string>& argv, JobControl& c
           line += c;
           continue;
         }
-        std::string label;
-        double fraction = 0;
-        if (parseProgress(line, label, fraction)) progress(label, fraction);
-        else if (!line.empty()) outcome.messages += line + "\n";
-        line.clear();
+        take(line);
       }
     }
   } catch (...) {
     stop(pid);
     throw;
   }
-  if (!line.empty()) outcome.messages += line + "\n";
+  take(line);
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }

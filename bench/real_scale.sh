@@ -1,0 +1,138 @@
+#!/usr/bin/env bash
+# Real scale: the goals for long programs, each measured as a whole process (wall time and peak
+# resident set size from /usr/bin/time -v, or VmHWM for the window) on
+#   - ../shared/realdata/cameo.nc (196 min, 11.8 M samples at 1 ms), written by others;
+#   - relief rasters generated here at a low feed (F600 over a wavy surface, 0.5 mm moves) of
+#     about 12 M and, with --huge, 100 M samples (a 28-hour run: a 6.4 GB dump; give WORK_DIR
+#     room for it).
+# Goals (see the README's table): render cameo.nc whole process 2 s; render of a dump 100 B a
+# sample over start; ui-snapshot of cameo 1.4 GB; the window on cameo: launch to coloured map
+# 4 s, 1.2 GB, a click to every panel updated 50 ms, 15 frames a second while rotating;
+# 100 M samples: render 20 s and 4 GB, the window's map in 30 s and 4 GB.
+# The window is measured under Xvfb (its frame figures through ui_frame_bench, the same panels
+# drawn through OSMesa). Prints a table; exits 1 when a run fails (not when a goal is missed).
+# Usage: bench/real_scale.sh [BUILD_DIR [WORK_DIR]] [--huge]
+set -euo pipefail
+cd "$(dirname "$0")/.."
+huge=0
+args=()
+for a in "$@"; do
+  if [ "$a" = --huge ]; then huge=1; else args+=("$a"); fi
+done
+build=${args[0]:-build}
+shared=${ISURFACE_SHARED_DIR:-../shared}
+cli="$build/bin/isurface-cli"
+for tool in /usr/bin/time Xvfb; do
+  command -v "$tool" >/dev/null || { echo "real_scale: $tool is missing" >&2; exit 1; }
+done
+work=$(mktemp -d "${args[1]:-/tmp}/isurface-scale.XXXXXX")
+xvfb_pid=""
+cleanup() {
+  [ -n "$xvfb_pid" ] && kill "$xvfb_pid" 2>/dev/null || true
+  rm -rf "$work"
+}
+trap cleanup EXIT
+
+row() { printf '| %s | %s | %s |\n' "$1" "$2" "$3"; }
+
+# Runs a command as a whole process: "seconds peak_MB" (MB: 2^20 bytes).
+measure() {
+  /usr/bin/time -f "%e %M" -o "$work/time.txt" "$@" >"$work/out.txt" 2>"$work/err.txt" ||
+    { echo "real_scale: failed: $*" >&2; cat "$work/err.txt" >&2; exit 1; }
+  awk '{ printf "%.2f %.0f", $1, $2 / 1024 }' "$work/time.txt"
+}
+
+samples_of() { "$cli" info "$1" | python3 -c 'import json,sys; print(json.load(sys.stdin)["samples"])'; }
+
+# A relief raster at F600: `passes` passes of `moves` 0.5 mm moves, 0.3 mm apart.
+relief() {
+  python3 - "$1" "$2" "$3" <<'EOF'
+import math, sys
+path, passes, moves = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])
+with open(path, "w") as out:
+    out.write("G21 G90 G17 G94\nG0 Z5\nG0 X0 Y0\nG1 Z0 F600\n")
+    for p in range(passes):
+        y = 0.3 * p
+        for i in range(moves + 1):
+            k = i if p % 2 == 0 else moves - i
+            x = 0.5 * k
+            z = 2.0 * math.sin(x * 0.05) * math.cos(y * 0.04) + 0.5 * math.sin(x * 0.3 + y * 0.2)
+            out.write(f"G1 X{x:.3f} Y{y:.3f} Z{z:.4f}\n")
+    out.write("G0 Z5\nM30\n")
+EOF
+}
+
+start_mb=$(printf 'G21 G90\nG1 X1 F100\n' >"$work/tiny.nc"; measure "$cli" render "$work/tiny.nc" -o "$work/tiny.png" | cut -d' ' -f2)
+echo "isurface-cli render of a one-move program: ${start_mb} MB peak (its libraries, OSMesa)"
+echo
+echo "| measure | here | goal |"
+echo "|---|---|---|"
+
+cameo="$shared/realdata/cameo.nc"
+if [ -f "$cameo" ]; then
+  read -r t m < <(measure "$cli" render "$cameo" -o "$work/cameo.png")
+  row "render cameo.nc (simulation included), whole process" "$t s, $m MB" "2 s"
+  "$cli" simulate "$cameo" -o "$work/cameo.biip" >/dev/null
+  n=$(samples_of "$work/cameo.biip")
+  read -r t m < <(measure "$cli" render "$work/cameo.biip" -o "$work/cameo.png")
+  row "render of cameo's dump ($n samples)" "$t s, $m MB ($(( (m - start_mb) * 1048576 / n )) B a sample over start)" "100 B a sample"
+  read -r t m < <(measure "$cli" ui-snapshot "$cameo" "$work/cameo.biip" -o "$work/cameo-ui.png")
+  row "ui-snapshot cameo.nc cameo.biip: peak" "$t s, $m MB" "1.4 GB"
+
+  # The window itself under Xvfb: from launch to the coloured map, and its peak memory.
+  display=93
+  while [ -e "/tmp/.X11-unix/X$display" ]; do display=$((display + 1)); done
+  Xvfb ":$display" -screen 0 1600x1000x24 -nolisten tcp >/dev/null 2>&1 &
+  xvfb_pid=$!
+  for _ in $(seq 50); do [ -e "/tmp/.X11-unix/X$display" ] && break; sleep 0.1; done
+  state="$work/state.json"
+  began=$(date +%s.%N)
+  DISPLAY=":$display" HOME="$work" ISURFACE_STATE_FILE="$state" "$build/bin/isurface" "$cameo" "$work/cameo.biip" \
+    >"$work/window.log" 2>&1 &
+  window=$!
+  shown=""
+  for _ in $(seq 1200); do
+    if [ -s "$state" ] && python3 -c 'import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if s["map"] and not s["busy"] else 1)' "$state" 2>/dev/null; then
+      shown=$(date +%s.%N)
+      break
+    fi
+    sleep 0.05
+  done
+  hwm=$(awk '/VmHWM/ { printf "%.0f", $2 / 1024 }' "/proc/$window/status")
+  kill "$window" 2>/dev/null || true
+  wait "$window" 2>/dev/null || true
+  if [ -n "$shown" ]; then
+    row "the window, cameo.nc with its dump: launch to coloured map" "$(python3 -c "print(f'{$shown - $began:.1f}')") s" "4 s"
+  else
+    row "the window, cameo.nc with its dump: launch to coloured map" "not shown in 60 s" "4 s"
+  fi
+  row "the window, cameo.nc with its dump: peak memory (VmHWM)" "$hwm MB ($(( hwm * 1048576 / n )) B a sample)" "1.2 GB (100 B a sample)"
+  if [ -x "$build/bin/ui_frame_bench" ]; then
+    ISURFACE_BENCH_PROGRAM="$cameo" "$build/bin/ui_frame_bench" --benchmark_format=json >"$work/ui.json" 2>/dev/null
+    python3 - "$work/ui.json" <<'EOF'
+import json, sys
+runs = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+def ms(name): return runs[name]["real_time"]
+print(f"| the window's panels on cameo.nc (OSMesa): frame at rest | {ms('BM_FrameAtRest'):.0f} ms | |")
+print(f"| the same, while the camera is dragged | {ms('BM_FrameWhileRotating'):.0f} ms, {1000 / ms('BM_FrameWhileRotating'):.1f} frames a second | 15 frames a second |")
+print(f"| the same, a click on the surface to every panel updated | {ms('BM_PickUpdatesEveryPanel'):.0f} ms | 50 ms |")
+EOF
+  fi
+fi
+
+relief "$work/relief12.nc" 200 1200
+read -r t m < <(measure "$cli" simulate "$work/relief12.nc" -o "$work/relief12.biip")
+n=$(samples_of "$work/relief12.biip")
+row "generated relief raster: simulate ($n samples)" "$t s, $m MB" ""
+read -r t m < <(measure "$cli" render "$work/relief12.biip" -o "$work/relief12.png")
+row "render of its dump" "$t s, $m MB ($(( (m - start_mb) * 1048576 / n )) B a sample over start)" "100 B a sample"
+rm -f "$work/relief12.biip"
+
+if [ "$huge" = 1 ]; then
+  relief "$work/relief100.nc" 1000 2000
+  read -r t m < <(measure "$cli" simulate "$work/relief100.nc" -o "$work/relief100.biip" --max-hours 40)
+  n=$(samples_of "$work/relief100.biip")
+  row "generated relief raster: simulate ($n samples, a $(( n / 3600000 )) h run)" "$t s, $m MB" ""
+  read -r t m < <(measure "$cli" render "$work/relief100.biip" -o "$work/relief100.png")
+  row "render of its dump" "$t s, $m MB ($(( (m - start_mb) * 1048576 / n )) B a sample over start)" "20 s, 4 GB"
+fi
