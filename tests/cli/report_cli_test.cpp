@@ -219,3 +219,21 @@ TEST(Report, AnOptimisationShowsBeforeAndAfter) {
   EXPECT_GT(o["region"]["before"]["surface_samples"].get<double>(), 0);
   EXPECT_EQ(runCli("report x.nc -o " + html + " --optimize some").exitCode, 2);
 }
+
+// A program that cuts no surface (a drilled hole) is still reported: its summary and how close
+// the axes came to their limits, and a word on why there are no maps; a batch gate passes it.
+TEST(Report, AProgramWithoutASurfaceIsStillReported) {
+  const std::string program = (scratchDir() / "drill.nc").string();
+  std::ofstream(program) << "G21 G90 G17\nG0 X10 Y10 Z5\nG1 Z-3 F120\nG0 Z5\nM30\n";
+  const std::string html = (scratchDir() / "drill.html").string(), json = (scratchDir() / "drill.json").string();
+  const auto r = runCli("report " + program + " -o " + html + " --json " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = readAll(html);
+  for (const char* section : {"summary", "maps", "regions", "limits"})
+    EXPECT_NE(text.find(std::string("<section id=\"") + section + "\""), std::string::npos) << section;
+  EXPECT_NE(text.find("No quality map: "), std::string::npos);
+  const nlohmann::json figures = nlohmann::json::parse(readAll(json));
+  EXPECT_TRUE(figures["regions"].empty());
+  EXPECT_EQ(figures["axes"].size(), 3u);
+  EXPECT_GT(figures["summary"]["machining_time_s"].get<double>(), 1.0);
+}

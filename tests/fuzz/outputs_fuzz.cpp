@@ -26,6 +26,9 @@ namespace fs = std::filesystem;
 
 namespace {
 
+// Stands for the next output's path in a command line (the input's text may be empty, not this).
+const std::string kOutput = "\x01output";
+
 struct Run {
   std::vector<std::string> args;
   std::vector<std::string> outputs;  // file names in the output folder
@@ -77,13 +80,13 @@ Run describe(std::uint8_t command, const std::string& body, const fs::path& fold
       writeFile(program, body);
       run.args = {"analyze", program, "--max-hours", "0.01"};
       run.outputs = {"regions.json", "map.png"};
-      run.args.insert(run.args.end(), {"-o", "", "--png", ""});
+      run.args.insert(run.args.end(), {"-o", kOutput, "--png", kOutput});
       break;
     case 1:
       writeFile(program, body);
       run.args = {"optimize", program, "--all", "--max-hours", "0.01"};
       run.outputs = {"new.nc", "report.json"};
-      run.args.insert(run.args.end(), {"-o", "", "--report", ""});
+      run.args.insert(run.args.end(), {"-o", kOutput, "--report", kOutput});
       break;
     default: {
       std::istringstream in(body);
@@ -92,7 +95,7 @@ Run describe(std::uint8_t command, const std::string& body, const fs::path& fold
       run.args = {"sts", "--surface", surface, "--radius", "2", "--feed", "0.2"};
       addStsOptions(in, run);
       run.outputs = {"part.nc", "errors.json", "nodes.biip"};
-      run.args.insert(run.args.end(), {"-o", "", "--report", "", "--biip", ""});
+      run.args.insert(run.args.end(), {"-o", kOutput, "--report", kOutput, "--biip", kOutput});
     }
   }
   return run;
@@ -129,7 +132,7 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   std::size_t next = 0;
   for (std::string& arg : run.args)
-    if (arg.empty()) arg = destinations[next++].string();
+    if (arg == kOutput) arg = destinations.at(next++).string();
 
   std::vector<char*> argv{const_cast<char*>("isurface-cli-all")};
   for (std::string& arg : run.args) argv.push_back(arg.data());

@@ -147,11 +147,9 @@ void oneRegion(HtmlDocument& doc, const OpenedRun& run, const QualityRegion& r, 
   doc.closeSection();
 }
 
-void regions(HtmlDocument& doc, const OpenedRun& run, int count, const ProgressCallback& progress,
-             nlohmann::json& out, std::size_t& found) {
+void regions(HtmlDocument& doc, const OpenedRun& run, const vis::QualityMap& surface, int count,
+             const ProgressCallback& progress, nlohmann::json& out, std::size_t& found) {
   const Trajectory& t = *run.samples;
-  vis::QualityMapRequest surfaceOnly;
-  const vis::QualityMap surface = vis::buildQualityMap(t, run.program.get(), surfaceOnly);
   const QualityReport report = surface.mesh ? findQualityRegions(t, *surface.mesh) : QualityReport{};
   found = report.regions.size();
   const int shown = std::min<int>(count, static_cast<int>(report.regions.size()));
@@ -203,6 +201,18 @@ void axisLimits(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
   if (!run.machineKnown) doc.paragraph("The dump names no machine: the limits are the built-in machine's.");
 }
 
+// The surface the maps and regions are drawn on; nothing (and why, in the document) for a run
+// without cutting passes (a drilling cycle, a program that only computes): the summary and the
+// axis limits still say something.
+std::optional<vis::QualityMap> surfaceOf(const OpenedRun& run, std::string& why) {
+  try {
+    return vis::buildQualityMap(*run.samples, run.program.get(), vis::QualityMapRequest{});
+  } catch (const InputError& e) {
+    why = e.diagnostic().message;
+    return std::nullopt;
+  }
+}
+
 }  // namespace
 
 ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& options, const ProgressCallback& progress) {
@@ -222,13 +232,23 @@ ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& opti
   summary(doc, run, report.figures);
   doc.closeSection();
 
+  std::string noSurface;
+  const std::optional<vis::QualityMap> surface = surfaceOf(run, noSurface);
   doc.openSection("maps");
   doc.heading(2, "Quality maps");
-  report.maps = maps(doc, run, progressStage(progress, 0, mapsEnd));
+  if (surface) report.maps = maps(doc, run, progressStage(progress, 0, mapsEnd));
+  else doc.paragraph("No quality map: " + noSurface + ".");
   doc.closeSection();
 
   doc.openSection("regions");
-  regions(doc, run, options.regions, progressStage(progress, mapsEnd, regionsEnd), report.figures, report.regionsFound);
+  report.figures["regions"] = nlohmann::json::array();
+  if (surface) {
+    regions(doc, run, *surface, options.regions, progressStage(progress, mapsEnd, regionsEnd), report.figures,
+            report.regionsFound);
+  } else {
+    doc.heading(2, "Worst regions");
+    doc.paragraph("None: there is no surface to find them on.");
+  }
   doc.closeSection();
 
   doc.openSection("limits");
