@@ -39,10 +39,10 @@ row() { printf '| %s | %s | %s |\n' "$1" "$2" "$3"; }
 measure() {
   /usr/bin/time -f "%e %M" -o "$work/time.txt" "$@" >"$work/out.txt" 2>"$work/err.txt" ||
     { echo "real_scale: failed: $*" >&2; cat "$work/err.txt" >&2; exit 1; }
-  awk '{ printf "%.2f %.0f", $1, $2 / 1024 }' "$work/time.txt"
+  awk '{ printf "%.2f %.0f\n", $1, $2 / 1024 }' "$work/time.txt"
 }
 
-samples_of() { "$cli" info "$1" | python3 -c 'import json,sys; print(json.load(sys.stdin)["samples"])'; }
+samples_of() { "$cli" info "$1" | python3 -c 'import json,sys; print(json.load(sys.stdin)["record_count"])'; }
 
 # A relief raster at F600: `passes` passes of `moves` 0.5 mm moves, 0.3 mm apart.
 relief() {
@@ -62,8 +62,8 @@ with open(path, "w") as out:
 EOF
 }
 
-start_mb=$(printf 'G21 G90\nG1 X1 F100\n' >"$work/tiny.nc"; measure "$cli" render "$work/tiny.nc" -o "$work/tiny.png" | cut -d' ' -f2)
-echo "isurface-cli render of a one-move program: ${start_mb} MB peak (its libraries, OSMesa)"
+start_mb=$(printf 'G21 G90\nG1 X10 F1000\nY1\nX0\nY2\nX10\n' >"$work/tiny.nc"; measure "$cli" render "$work/tiny.nc" -o "$work/tiny.png" | cut -d' ' -f2)
+echo "isurface-cli render of a three-pass program: ${start_mb} MB peak (its libraries, OSMesa)"
 echo
 echo "| measure | here | goal |"
 echo "|---|---|---|"
@@ -108,10 +108,10 @@ if [ -f "$cameo" ]; then
   fi
   row "the window, cameo.nc with its dump: peak memory (VmHWM)" "$hwm MB ($(( hwm * 1048576 / n )) B a sample)" "1.2 GB (100 B a sample)"
   if [ -x "$build/bin/ui_frame_bench" ]; then
-    ISURFACE_BENCH_PROGRAM="$cameo" "$build/bin/ui_frame_bench" --benchmark_format=json >"$work/ui.json" 2>/dev/null
+    ISURFACE_BENCH_PROGRAM="$cameo" "$build/bin/ui_frame_bench" --benchmark_out="$work/ui.json" --benchmark_out_format=json >/dev/null 2>&1
     python3 - "$work/ui.json" <<'EOF'
 import json, sys
-runs = {b["name"]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
+runs = {b["name"].split("/")[0]: b for b in json.load(open(sys.argv[1]))["benchmarks"]}
 def ms(name): return runs[name]["real_time"]
 print(f"| the window's panels on cameo.nc (OSMesa): frame at rest | {ms('BM_FrameAtRest'):.0f} ms | |")
 print(f"| the same, while the camera is dragged | {ms('BM_FrameWhileRotating'):.0f} ms, {1000 / ms('BM_FrameWhileRotating'):.1f} frames a second | 15 frames a second |")
