@@ -3,6 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <signal.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <fstream>
 
 #include <chrono>
 #include <thread>
@@ -34,17 +39,48 @@ TEST(childProcess, ProgressMessagesAndExitCode) {
   EXPECT_EQ(seen, expected);
 }
 
-TEST(childProcess, ACancelledJobStopsTheChild) {
+namespace {
+
+// The process id the child wrote to `file` (its first line), or 0.
+pid_t pidIn(const std::string& file) {
+  std::ifstream in(file);
+  long pid = 0;
+  in >> pid;
+  return static_cast<pid_t>(pid);
+}
+
+bool gone(pid_t pid) { return kill(pid, 0) == -1 && errno == ESRCH; }
+
+// Cancels a job running `script` (which writes its pid to `pidFile`) and checks that the child
+// is stopped and reaped.
+void expectCancelStops(const std::string& script, const std::string& pidFile) {
+  std::remove(pidFile.c_str());
   BackgroundJob job;
   const auto start = std::chrono::steady_clock::now();
   job.start("child", [&](JobControl& control) {
-    runChildProcess({"/bin/sh", "-c", "exec sleep 60"}, control, [](const std::string&, double) {});
+    runChildProcess({"/bin/sh", "-c", script}, control, [](const std::string&, double) {});
   });
-  std::this_thread::sleep_for(std::chrono::milliseconds(300));
+  pid_t pid = 0;
+  for (int i = 0; i < 200 && (pid = pidIn(pidFile)) == 0; ++i) std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_GT(pid, 0);
   job.cancel();
   while (job.running()) std::this_thread::sleep_for(std::chrono::milliseconds(10));
   EXPECT_TRUE(job.wasCancelled());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
+  EXPECT_TRUE(gone(pid)) << "the child " << pid << " still runs or was not reaped";
+}
+
+}  // namespace
+
+TEST(childProcess, ACancelledJobStopsTheChild) {
+  const std::string pidFile = "/tmp/isurface-child-test-" + std::to_string(getpid());
+  expectCancelStops("echo $$ > " + pidFile + "; exec sleep 60", pidFile);
+}
+
+// A child that closes its standard error and goes on: Cancel still stops it.
+TEST(childProcess, AChildThatClosedItsErrorsIsStillCancelled) {
+  const std::string pidFile = "/tmp/isurface-child-test-closed-" + std::to_string(getpid());
+  expectCancelStops("echo $$ > " + pidFile + "; exec 2>&-; exec sleep 60", pidFile);
 }
 
 TEST(childProcess, AProgramThatCannotBeRunIsAnError) {

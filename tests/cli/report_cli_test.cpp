@@ -171,10 +171,20 @@ TEST(Report, EachRegionHasACloseUp) {
     const std::string region = sectionOf(text, "region-" + std::to_string(k));
     EXPECT_EQ(occurrences(region, "alt=\"Close-up of the region"), 1u) << "region " << k;
     EXPECT_EQ(occurrences(region, "alt=\"Where it lies on the whole part"), 1u) << "region " << k;
-  }
-  for (const auto& region : figures["regions"]) {
-    const auto lower = region["box_mm"]["min"].get<std::vector<double>>(), upper = region["box_mm"]["max"].get<std::vector<double>>();
-    for (int a = 0; a < 3; ++a) EXPECT_LE(lower[a], upper[a]);
+    // The close-up (the region's first image) is another picture than the whole part (its
+    // second): the same map framed closer.
+    const std::string prefix = "src=\"data:image/png;base64,";
+    std::vector<isurface::test::Image> images;
+    for (std::size_t at = region.find(prefix); at != std::string::npos && images.size() < 2; at = region.find(prefix, at + 1)) {
+      const std::size_t begin = at + prefix.size();
+      const std::string png = (scratchDir() / ("closeup-" + std::to_string(images.size()) + ".png")).string();
+      std::ofstream(png, std::ios::binary) << decodeBase64(region.substr(begin, region.find('"', begin) - begin));
+      images.push_back(readPng(png));
+    }
+    ASSERT_EQ(images.size(), 2u);
+    const isurface::test::ImageDifference d = isurface::test::compareImages(images[0], images[1]);
+    EXPECT_TRUE(d.sameSize);
+    EXPECT_GT(d.meanDifference, 10.0) << "region " << k << ": the close-up looks like the whole part";
   }
 }
 
@@ -236,4 +246,9 @@ TEST(Report, AProgramWithoutASurfaceIsStillReported) {
   EXPECT_TRUE(figures["regions"].empty());
   EXPECT_EQ(figures["axes"].size(), 3u);
   EXPECT_GT(figures["summary"]["machining_time_s"].get<double>(), 1.0);
+  // Asked to re-optimise it too: the report stands and says why nothing was re-optimised.
+  const auto optimised = runCli("report " + program + " -o " + html + " --json " + json + " --optimize auto");
+  ASSERT_EQ(optimised.exitCode, 0) << optimised.err;
+  EXPECT_NE(sectionOf(readAll(html), "optimisation").find("Not re-optimised: "), std::string::npos);
+  EXPECT_TRUE(nlohmann::json::parse(readAll(json))["optimisation"].contains("not_done"));
 }

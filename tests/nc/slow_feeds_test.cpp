@@ -102,30 +102,57 @@ TEST(SlowFeeds, ARefusedMoveIsNamedByLineAndColumn) {
   }
 }
 
+namespace {
+
+struct CountingSink : SampleSink {
+  void consume(const SimSample*, std::size_t count) override { samples += count; }
+  std::size_t samples = 0;
+};
+
+// `program` passes the machine's longest run: simulated whole and as it is read (a move at a
+// time), the refusal names line:column, and no sample of the run is made as it is read.
+void expectRefusedAt(const std::string& program, const Machine& machine, unsigned line, unsigned column) {
+  InterpretResult r = interpretGcode(program, "bound.nc");
+  ASSERT_TRUE(r.ok());
+  CountingSink whole, streamed;
+  try {
+    simulate(r.program, machine, whole);
+    ADD_FAILURE() << "simulated whole past the bound";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostic().line, line) << "whole: " << e.what();
+    EXPECT_EQ(e.diagnostic().column, column) << "whole: " << e.what();
+  }
+  StreamingSimulation simulation(machine, Vec3::Zero(), "bound.nc", streamed);
+  EXPECT_TRUE(interpretGcodeStream(program, "bound.nc", simulation, {}, 1).ok());
+  try {
+    simulation.finish();
+    ADD_FAILURE() << "simulated as it was read past the bound";
+  } catch (const InputError& e) {
+    EXPECT_EQ(e.diagnostic().line, line) << "streamed: " << e.what();
+    EXPECT_EQ(e.diagnostic().column, column) << "streamed: " << e.what();
+  }
+}
+
+}  // namespace
+
 // Dwells that together pass the longest run are named where the bound is passed, not at the
 // move before them, whether the program is simulated whole or as it is read.
 TEST(SlowFeeds, TheDwellThatPassesTheLongestRunIsNamed) {
-  const std::string program = "G21 G90\nG1 X1 F100\n G4 P80000\nG4 P80000\nG4 P80000\n  G4 P80000\nG4 P80000\n";
-  InterpretResult r = interpretGcode(program, "dwells.nc");
-  ASSERT_TRUE(r.ok());
-  SampleBuffer whole;
-  try {
-    simulate(r.program, defaultMachine(), whole);
-    ADD_FAILURE() << "400,000 s of dwells were simulated";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.diagnostic().line, 7u) << e.what();
-    EXPECT_EQ(e.diagnostic().column, 1u) << e.what();
-  }
-  SampleBuffer streamed;
-  const Machine machine = defaultMachine();  // the simulation keeps a reference
-  StreamingSimulation simulation(machine, Vec3::Zero(), "dwells.nc", streamed);
-  EXPECT_TRUE(interpretGcodeStream(program, "dwells.nc", simulation, {}, 1).ok());
-  try {
-    simulation.finish();
-    ADD_FAILURE() << "400,000 s of dwells were simulated as they were read";
-  } catch (const InputError& e) {
-    EXPECT_EQ(e.diagnostic().line, 7u) << e.what();
-    EXPECT_EQ(e.diagnostic().column, 1u) << e.what();
-  }
-  EXPECT_EQ(streamed.data.size(), 0u);
+  expectRefusedAt("G21 G90\nG1 X1 F100\n G4 P80000\nG4 P80000\nG4 P80000\n  G4 P80000\nG4 P80000\n",
+                  defaultMachine(), 7, 1);
+}
+
+// A dwell right after motion, that together pass the bound, is named, not the motion before it.
+TEST(SlowFeeds, ADwellAfterMotionThatPassesTheLongestRunIsNamed) {
+  Machine machine = defaultMachine();
+  machine.longestRun = 600;  // s
+  // Five moves of 100 s (1 mm at 0.6 mm/min), then 150 s of dwell on line 7.
+  expectRefusedAt("G21 G90\nG1 X1 F0.6\nX2\nX3\nX4\nX5\n  G4 P150\nG1 X6\n", machine, 7, 3);
+}
+
+// Dwells alone (no motion at all) that pass the bound: the one passing it is named.
+TEST(SlowFeeds, DwellsAloneThatPassTheLongestRunAreNamed) {
+  Machine machine = defaultMachine();
+  machine.longestRun = 600;  // s
+  expectRefusedAt("G21 G90\nG4 P250\nG4 P250\n G4 P250\nG4 P250\n", machine, 4, 2);
 }

@@ -34,18 +34,74 @@ bool parseProgress(const std::string& text, std::string& label, double& fraction
   return true;
 }
 
-void stop(pid_t pid) {
-  kill(pid, SIGTERM);
-  const auto deadline = std::chrono::steady_clock::now() + kTermGrace;
-  int status = 0;
-  while (waitpid(pid, &status, WNOHANG) == 0) {
-    if (std::chrono::steady_clock::now() > deadline) {
-      kill(pid, SIGKILL);
-      waitpid(pid, &status, 0);
-      return;
-    }
-    usleep(10000);
+// The child, reaped whatever happens: stopped (SIGTERM, then SIGKILL) unless it has ended.
+class Child {
+ public:
+  explicit Child(pid_t pid) : pid_(pid) {}
+  Child(const Child&) = delete;
+  Child& operator=(const Child&) = delete;
+  ~Child() {
+    if (!reaped_) stop();
   }
+
+  // Waits for it to end, polling `cancelled` (true: stop it and throw JobCancelled). Its status.
+  int wait(JobControl& control) {
+    for (;;) {
+      const pid_t r = waitpid(pid_, &status_, WNOHANG);
+      if (r == pid_ || (r < 0 && errno != EINTR)) {
+        reaped_ = true;
+        if (r < 0) status_ = -1;  // not ours to wait for: no exit code to trust
+        return status_;
+      }
+      if (control.cancelRequested()) throw JobCancelled{};  // the destructor stops it
+      usleep(kPollMs * 1000);
+    }
+  }
+
+ private:
+  void stop() {
+    kill(pid_, SIGTERM);
+    const auto deadline = std::chrono::steady_clock::now() + kTermGrace;
+    for (;;) {
+      const pid_t r = waitpid(pid_, &status_, WNOHANG);
+      if (r == pid_ || (r < 0 && errno != EINTR)) break;
+      if (std::chrono::steady_clock::now() > deadline) {
+        kill(pid_, SIGKILL);
+        while (waitpid(pid_, &status_, 0) < 0 && errno == EINTR) {
+        }
+        break;
+      }
+      usleep(10000);
+    }
+    reaped_ = true;
+  }
+
+  pid_t pid_;
+  int status_ = 0;
+  bool reaped_ = false;
+};
+
+// Starts `argv` with standard error on `errorFd`, nothing on its input and output, and
+// ISURFACE_PROGRESS=1 in its environment (so that it prints its progress to a pipe).
+pid_t spawn(const std::vector<std::string>& argv, int errorFd) {
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
+  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
+  posix_spawn_file_actions_adddup2(&actions, errorFd, STDERR_FILENO);
+  std::vector<std::string> environment{"ISURFACE_PROGRESS=1"};
+  for (char** e = environ; *e; ++e)
+    if (std::strncmp(*e, "ISURFACE_PROGRESS=", 18) != 0) environment.emplace_back(*e);
+  std::vector<char*> args, env;
+  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
+  args.push_back(nullptr);
+  for (const std::string& e : environment) env.push_back(const_cast<char*>(e.c_str()));
+  env.push_back(nullptr);
+  pid_t pid = 0;
+  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), env.data());
+  posix_spawn_file_actions_destroy(&actions);
+  if (spawned != 0) throw std::runtime_error("cannot run " + argv[0] + ": " + std::strerror(spawned));
+  return pid;
 }
 
 struct Pipe {
@@ -62,26 +118,11 @@ ChildOutcome runChildProcess(const std::vector<std::string>& argv, JobControl& c
                              const std::function<void(const std::string& label, double fraction)>& progress) {
   Pipe errors;
   if (pipe2(errors.fd, O_CLOEXEC) != 0) throw std::runtime_error(std::string("cannot make a pipe: ") + std::strerror(errno));
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, "/dev/null", O_WRONLY, 0);
-  posix_spawn_file_actions_adddup2(&actions, errors.fd[1], STDERR_FILENO);
-  std::vector<std::string> environment{"ISURFACE_PROGRESS=1"};
-  for (char** e = environ; *e; ++e)
-    if (std::strncmp(*e, "ISURFACE_PROGRESS=", 18) != 0) environment.emplace_back(*e);
-  std::vector<char*> args, env;
-  for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
-  args.push_back(nullptr);
-  for (const std::string& e : environment) env.push_back(const_cast<char*>(e.c_str()));
-  env.push_back(nullptr);
-  pid_t pid = 0;
-  const int spawned = posix_spawn(&pid, args[0], &actions, nullptr, args.data(), env.data());
-  posix_spawn_file_actions_destroy(&actions);
-  if (spawned != 0) throw std::runtime_error("cannot run " + argv[0] + ": " + std::strerror(spawned));
+  const pid_t pid = spawn(argv, errors.fd[1]);
   close(errors.fd[1]);
   errors.fd[1] = -1;
 
+  Child child(pid);
   ChildOutcome outcome;
   std::string line;
   // A line read whole (or the last, unended): progress, or a message kept.
@@ -92,33 +133,24 @@ ChildOutcome runChildProcess(const std::vector<std::string>& argv, JobControl& c
     else if (!text.empty()) outcome.messages += text + "\n";
     text.clear();
   };
-  try {
-    for (;;) {
-      if (control.cancelRequested()) throw JobCancelled{};
-      pollfd p{errors.fd[0], POLLIN, 0};
-      if (poll(&p, 1, kPollMs) <= 0) continue;
-      char buffer[4096];
-      const ssize_t n = read(errors.fd[0], buffer, sizeof buffer);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) break;
-      for (ssize_t i = 0; i < n; ++i) {
-        const char c = buffer[i];
-        if (c != '\r' && c != '\n') {
-          line += c;
-          continue;
-        }
-        take(line);
-      }
+  for (;;) {
+    if (control.cancelRequested()) throw JobCancelled{};
+    pollfd p{errors.fd[0], POLLIN, 0};
+    if (poll(&p, 1, kPollMs) <= 0) continue;
+    char buffer[4096];
+    const ssize_t n = read(errors.fd[0], buffer, sizeof buffer);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    for (ssize_t i = 0; i < n; ++i) {
+      if (buffer[i] != '\r' && buffer[i] != '\n') line += buffer[i];
+      else take(line);
     }
-  } catch (...) {
-    stop(pid);
-    throw;
   }
   take(line);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  outcome.exitCode = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  // Its standard error closed; it may still run for a while (or forever): Cancel still stops it.
+  const int status = child.wait(control);
+  outcome.exitCode = status >= 0 && WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  if (status >= 0 && WIFSIGNALED(status)) outcome.signal = WTERMSIG(status);
   return outcome;
 }
 

@@ -72,6 +72,11 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
 void Inspector::State::startRecolour() {
   Document* doc = activeDocument();
   if (!doc || !doc->samples) return;
+  if (reportRunning()) {  // starting a job would cancel the report: the colouring comes after it
+    recolourWaiting = true;
+    status = "the new colouring comes once the report being made is written";
+    return;
+  }
   vis::QualityMapRequest request = mapRequest();
   request.pickable = true;
   request.caption = machineCaption(doc->machine, doc->machineKnown);
@@ -95,6 +100,7 @@ void Inspector::State::simulateAgain() {
     status = "Simulate needs a G-code program: open one first";
     return;
   }
+  if (refusedDuringReport("simulate again")) return;
   startLoad(doc->programPath, "", active);
   status = "simulating " + doc->name + " with " + machine.name;
 }
@@ -257,7 +263,13 @@ void Inspector::State::openFiles(const std::vector<std::string>& paths) {
 }
 
 void Inspector::State::startQueuedLoad() {
-  if (job.running() || pending || queuedRuns.empty()) return;
+  if (job.running() || pending) return;
+  if (recolourWaiting) {
+    recolourWaiting = false;
+    startRecolour();
+    return;
+  }
+  if (queuedRuns.empty()) return;
   const RunFiles run = queuedRuns.front();
   queuedRuns.pop_front();
   // A dump alone joins the active program when that has no dump of its own yet.

@@ -106,6 +106,9 @@ struct JobResult {
   std::string reportPath, report;            // or a report to save (File > Export)
 };
 
+// The label of the report's job begins so.
+inline constexpr const char* kReportJob = "report on ";
+
 // A file the user asked to save, waiting for "replace?" when it exists.
 struct PendingSave {
   std::string path, content, what;
@@ -195,7 +198,7 @@ struct Inspector::State {
   void openFile(const std::string& path);
   // Opens files named together (a command line, a drop): a dump after its program joins it.
   void openFiles(const std::vector<std::string>& paths);
-  // Starts loading the next run of files waiting, when no job runs.
+  // When no job runs: the colouring that waited for a report, else the next run of files waiting.
   void startQueuedLoad();
 
   Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
@@ -231,6 +234,15 @@ struct Inspector::State {
   void startRunComparison(const std::string& dumpPath);
   // Writes the active document's report (isurface-cli report, beside the window) to `path`.
   void startReport(const std::string& path, int regions);
+  bool reportRunning() const { return job.running() && job.label().rfind(kReportJob, 0) == 0; }
+  // A job started now would cancel the report being made: `what` is refused, and the status
+  // says so (true); false when no report is being made.
+  bool refusedDuringReport(const std::string& what) {
+    if (!reportRunning()) return false;
+    status = "wait for the report being made (or cancel it) to " + what;
+    return true;
+  }
+  bool recolourWaiting = false;  // a colouring asked for while a report was being made
   // The view beside the main one shows run B's map or the difference map.
   void showRunDifference(bool difference);
   void takeJobResult();

@@ -53,6 +53,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
     status = why;
     return;
   }
+  if (refusedDuringReport("optimise")) return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();

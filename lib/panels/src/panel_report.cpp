@@ -3,13 +3,14 @@
 #include <fmt/format.h>
 
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "inspector_state.h"
 #include "isurface/app_model/child_process.h"
 #include "isurface/io/atomic_file.h"
+#include "isurface/io/whole_file.h"
 
 namespace isurface::panels {
 
@@ -33,23 +34,16 @@ class ScratchFolder {
   std::filesystem::path path_;
 };
 
-std::string readWhole(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw std::runtime_error("cannot read the report written");
-  return text.str();
-}
 
-// The child's messages without its "error: " prefixes, on one line.
+// Why the report failed, in a line: the child's errors (not its warnings), or how it ended.
 std::string failure(const app_model::ChildOutcome& outcome) {
   std::string out;
   std::istringstream lines(outcome.messages);
-  for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("error: ", 0) == 0) line.erase(0, 7);
-    if (!line.empty()) out += (out.empty() ? "" : " | ") + line;
-  }
-  return out.empty() ? fmt::format("the report ended with exit code {}", outcome.exitCode) : out;
+  for (std::string line; std::getline(lines, line);)
+    if (line.rfind("error: ", 0) == 0) out += (out.empty() ? "" : " | ") + line.substr(7);
+  if (!out.empty()) return out;
+  if (outcome.signal != 0) return fmt::format("isurface-cli report was stopped by signal {} ({})", outcome.signal, strsignal(outcome.signal));
+  return fmt::format("isurface-cli report ended with exit code {}", outcome.exitCode);
 }
 
 }  // namespace
@@ -64,11 +58,12 @@ void Inspector::State::startReport(const std::string& path, int regions) {
   arguments.push_back(doc->programPath.empty() ? doc->dumpPath : doc->programPath);
   if (!doc->programPath.empty() && !doc->dumpPath.empty()) arguments.push_back(doc->dumpPath);
   arguments.insert(arguments.end(), {"--regions", std::to_string(regions)});
-  // A program simulated here was simulated with the document's machine: the report's is the same.
-  const std::string machine = doc->dumpPath.empty() ? machineDescriptionJson(doc->machine) : "";
+  // A program simulated here was simulated with the document's machine, and a dump that names
+  // none is judged against it: the report's machine is the same.
+  const std::string machine = doc->dumpPath.empty() || !doc->machineKnown ? machineDescriptionJson(doc->machine) : "";
   auto result = std::make_shared<JobResult>();
   pending = result;
-  job.start("report on " + doc->name, [result, arguments, machine, path](app_model::JobControl& control) {
+  job.start(kReportJob + doc->name, [result, arguments, machine, path](app_model::JobControl& control) {
     const ScratchFolder scratch;
     std::vector<std::string> argv = arguments;
     if (!machine.empty()) {
@@ -83,7 +78,7 @@ void Inspector::State::startReport(const std::string& path, int regions) {
         });
     // Exit code 1 is a threshold crossed, which this run does not set; anything else failed.
     if (outcome.exitCode != 0) throw std::runtime_error(failure(outcome));
-    result->report = readWhole(scratch.file("report.html"));
+    result->report = readWholeFile(scratch.file("report.html"));
     result->reportPath = path;
   });
 }

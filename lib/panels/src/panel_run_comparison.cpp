@@ -59,6 +59,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
     status = "open a program or a dump first, then compare it with another run";
     return;
   }
+  if (refusedDuringReport("compare")) return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();

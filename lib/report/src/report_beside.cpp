@@ -1,14 +1,13 @@
 #include "report_beside.h"
 
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 
 #include <fmt/format.h>
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/analysis/run_comparison.h"
+#include "isurface/io/whole_file.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/workflow/region_optimisation.h"
@@ -34,13 +33,6 @@ vis::QualityMapRequest speedTop(const ValueRange& range, const std::string& capt
 
 std::string nameOf(const std::string& path) { return std::filesystem::path(path).filename().string(); }
 
-std::string readText(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream text;
-  text << in.rdbuf();
-  if (!in.good() && !in.eof()) throw InputError(Diagnostic{path, 0, 0, "cannot read the program again to optimise it"});
-  return text.str();
-}
 
 }  // namespace
 
@@ -87,13 +79,24 @@ void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOp
   const std::string& path = run.files.program;
   const SurfaceRun before = surfaceRun(run.samples, run.program.get());
   const bool all = options.optimisation == ReportOptimisation::AllPasses;
-  const ChosenRegion chosen = all ? wholeProgramRegion(before, path) : worstRegion(before, path);
-  RegionRequest request;
-  request.options.chordTolerance = options.chordTolerance;
-  request.lines = chosen.lines;
-  request.box = std::make_pair(chosen.lower, chosen.upper);
-  const RegionOptimisation r =
-      optimiseRegion(readText(path), *run.program, before, run.machine, request, progressStage(progress, 0, 0.7));
+  RegionOptimisation r;
+  try {
+    const ChosenRegion chosen = all ? wholeProgramRegion(before, path) : worstRegion(before, path);
+    RegionRequest request;
+    request.options.chordTolerance = options.chordTolerance;
+    request.lines = chosen.lines;
+    request.box = std::make_pair(chosen.lower, chosen.upper);
+    r = optimiseRegion(readWholeFile(path), *run.program, before, run.machine, request, progressStage(progress, 0, 0.7));
+  } catch (const InputError& e) {
+    // Nothing to re-optimise (no surface, no region beyond the thresholds, an inch program):
+    // the rest of the report stands, and this section says why.
+    doc.openSection("optimisation");
+    doc.heading(2, "Re-optimisation");
+    doc.paragraph("Not re-optimised: " + e.diagnostic().message + ".");
+    doc.closeSection();
+    out["optimisation"] = {{"mode", all ? "all" : "auto"}, {"not_done", e.diagnostic().message}};
+    return;
+  }
 
   doc.openSection("optimisation");
   doc.heading(2, fmt::format("Re-optimised: {} (lines {}-{})", all ? "every pass" : "the worst region", r.lines.first,

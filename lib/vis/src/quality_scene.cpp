@@ -292,16 +292,26 @@ void QualityScene::frameBox(const Vec3& lower, const Vec3& upper) {
     box[2 * a] = centre - half;
     box[2 * a + 1] = centre + half;
   }
+  for (const double b : box)
+    if (!std::isfinite(b)) return;  // keeps the whole view
   vtkCamera* camera = parts_->renderer->GetActiveCamera();
+  parts_->renderer->ResetCamera(box);
+  // The parallel view's scale is set; the camera then steps back along its direction beyond the
+  // whole surface, so that no part of it higher than the box (a wall by a cavity) is behind it
+  // and cut away.
   double position[3], focal[3];
   camera->GetPosition(position);
   camera->GetFocalPoint(focal);
-  const double centre[3] = {0.5 * (box[0] + box[1]), 0.5 * (box[2] + box[3]), 0.5 * (box[4] + box[5])};
-  camera->SetFocalPoint(centre);
-  camera->SetPosition(centre[0] + position[0] - focal[0], centre[1] + position[1] - focal[1],
-                      centre[2] + position[2] - focal[2]);
-  parts_->renderer->ResetCamera(box);
-  parts_->renderer->ResetCameraClippingRange();  // the whole surface, not the box: nothing in view is cut
+  double direction[3] = {position[0] - focal[0], position[1] - focal[1], position[2] - focal[2]};
+  const double length = std::sqrt(direction[0] * direction[0] + direction[1] * direction[1] + direction[2] * direction[2]);
+  const double diagonal = std::sqrt((bounds[1] - bounds[0]) * (bounds[1] - bounds[0]) +
+                                    (bounds[3] - bounds[2]) * (bounds[3] - bounds[2]) +
+                                    (bounds[5] - bounds[4]) * (bounds[5] - bounds[4]));
+  if (length > 0) {
+    const double away = (length + 2 * diagonal) / length;
+    camera->SetPosition(focal[0] + direction[0] * away, focal[1] + direction[1] * away, focal[2] + direction[2] * away);
+  }
+  parts_->renderer->ResetCameraClippingRange();  // the whole surface, not the box
   syncAxes();
 }
 

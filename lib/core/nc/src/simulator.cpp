@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <stdexcept>
 
 namespace isurface {
@@ -36,8 +37,8 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
   });
-  // Dwells and motion in program order first, so that the move named is the one that passes
-  // the bound; then the plan's own total, with its stops' holds.
+  // Dwells and motion in program order, so that the move named is the one that passes the
+  // bound; then the plan's own total, with the holds of its stops.
   double known = 0;
   std::size_t next = 0;
   auto dwellsUpTo = [&](std::size_t end) {
@@ -50,12 +51,15 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   double planned = plan.holdBefore;
   for (std::size_t k = 0; k < plan.segments.size(); ++k) {
     const PlannedSegment& segment = plan.segments[k];
+    const Move* move = &program.moves[segment.move];
     dwellsUpTo(segment.move);
     known += segment.motionTime();
-    checkRunLength(known, machine, &program.moves[segment.move], program.source);
+    planned += segment.motionTime();
+    checkRunLength(known, machine, move, program.source);
+    checkRunLength(planned, machine, move, program.source);
     dwellsUpTo(k + 1 < plan.segments.size() ? plan.segments[k + 1].move : program.moves.size());
-    planned += segment.motionTime() + segment.holdAfter;
-    checkRunLength(planned, machine, &program.moves[segment.move], program.source);
+    planned += segment.holdAfter;
+    checkRunLength(planned, machine, move, program.source);
   }
   dwellsUpTo(program.moves.size());
   checkRunLength(planned, machine, nullptr, program.source);
@@ -98,9 +102,11 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
       if (firstIndex + i > 0xffffffffu)
         throw InputError(
             Diagnostic{source_, moves[i].line, moves[i].column, "more than 4,294,967,295 moves: too many for a Biip block channel"});
-      if (moves[i].kind == MoveKind::Dwell) {
-        dwellTime_ += std::max(0.0, moves[i].dwellSeconds());
-        checkRunLength(dwellTime_ + motionTime_, machine_, &moves[i], source_);
+      if (moves[i].kind == MoveKind::Dwell && moves[i].dwellSeconds() > 0) {
+        if (pendingDwells_.size() < kMostPendingDwells)
+          pendingDwells_.push_back({firstIndex + i, moves[i].dwellSeconds(), moves[i]});
+        else
+          pendingDwells_.back().seconds += moves[i].dwellSeconds();
       }
       planner_.add(static_cast<std::uint32_t>(firstIndex + i), moves[i], moveStart_);
       // Only moves that may become segments wait for the interpolator: a program of millions
@@ -128,15 +134,28 @@ void StreamingSimulation::interpolateFinalSegments() {
     if (moves_.empty() || moves_.front().index != segment.move)
       throw std::logic_error("a planned segment's move was not kept for the interpolator");
     if (plannedTime_ == 0) plannedTime_ = planner_.holdBefore();
-    plannedTime_ += segment.motionTime() + segment.holdAfter;
-    motionTime_ += segment.motionTime();
-    checkRunLength(motionTime_ + dwellTime_, machine_, &moves_.front().move, source_);
+    countDwellsBefore(segment.move);
+    countedTime_ += segment.motionTime();
+    plannedTime_ += segment.motionTime();
+    checkRunLength(countedTime_, machine_, &moves_.front().move, source_);
+    checkRunLength(plannedTime_, machine_, &moves_.front().move, source_);
+    // Its hold: the dwells up to the next move with motion, then the plan's total with it.
+    countDwellsBefore(moves_.size() > 1 ? moves_[1].index : std::numeric_limits<std::uint64_t>::max());
+    plannedTime_ += segment.holdAfter;
     checkRunLength(plannedTime_, machine_, &moves_.front().move, source_);
     interpolator_->add(segment, moves_.front().move, moves_.front().start);
     report_.pathLength += segment.length;
     ++report_.segments;
   }
   final_.clear();
+}
+
+void StreamingSimulation::countDwellsBefore(std::uint64_t index) {
+  while (!pendingDwells_.empty() && pendingDwells_.front().index < index) {
+    countedTime_ += pendingDwells_.front().seconds;
+    checkRunLength(countedTime_, machine_, &pendingDwells_.front().move, source_);
+    pendingDwells_.pop_front();
+  }
 }
 
 SimulationReport StreamingSimulation::finish() {
@@ -146,6 +165,7 @@ SimulationReport StreamingSimulation::finish() {
     planner_.finish();
     planner_.take(final_);
     interpolateFinalSegments();
+    countDwellsBefore(std::numeric_limits<std::uint64_t>::max());  // a program of dwells alone
     checkRunLength(std::max(plannedTime_, planner_.holdBefore()), machine_, nullptr, source_);
     summary = interpolator_->finish();
   } catch (const InputError& e) {

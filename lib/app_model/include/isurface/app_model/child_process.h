@@ -14,6 +14,7 @@ namespace isurface::app_model {
 
 struct ChildOutcome {
   int exitCode = -1;     // the child's exit code; -1 when a signal ended it
+  int signal = 0;        // the signal that ended it, if one did
   std::string messages;  // what it wrote on standard error that was not progress
 };
 

@@ -64,9 +64,19 @@ class StreamingSimulation : public MoveSink {
     Vec3 start;
   };
   std::deque<HeldMove> moves_;
-  double plannedTime_ = 0;  // s, of the segments handed to the interpolator and the dwells
-  double dwellTime_ = 0;    // s, of the dwells read so far: a dwell that passes the bound is named
-  double motionTime_ = 0;   // s, of the segments' motion handed to the interpolator
+  // Dwells read whose place among the segments' motion is not yet counted: checked against the
+  // run's bound in program order, so that the one passing it is named, before any of their
+  // hold is interpolated. Past kMostPendingDwells in a row, they are summed into the last.
+  struct PendingDwell {
+    std::uint64_t index;
+    double seconds;
+    Move move;
+  };
+  static constexpr std::size_t kMostPendingDwells = 4096;
+  std::deque<PendingDwell> pendingDwells_;
+  void countDwellsBefore(std::uint64_t index);
+  double plannedTime_ = 0;  // s, of the segments handed to the interpolator with their holds
+  double countedTime_ = 0;  // s, of the motion handed on and the dwells counted, in program order
   std::vector<PlannedSegment> final_;
   SimulationReport report_;
   std::optional<InputError> simulationError_;
