@@ -9,6 +9,7 @@
 #include "isurface/base/units.h"
 #include "isurface/nc/feed_plan.h"
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/nc/servo_response.h"
 #include "isurface/nc/simulator.h"
 #include "isurface/workflow/simulation_dump.h"
 #include "test_support.h"
@@ -203,4 +204,33 @@ TEST(Simulator, WritesABiipDumpThatReadsBack) {
   EXPECT_NEAR(x[reader.recordCount() - 1], 20.0, 1e-9);
   EXPECT_EQ(line[0], 1.0);
   EXPECT_EQ(line[reader.recordCount() - 1], 3.0);
+}
+
+// The servo's answer to a bend, as the optimiser plans with it: a whole simulated circle (G2 in
+// XY and in XZ) deviates from the commanded path along its normal, read at the same instant, by
+// the response times the normal acceleration v^2 / R, over the circle's steady part.
+TEST(Simulator, ServoDeviationOnACircleIsItsResponseTimesTheNormalAcceleration) {
+  const Machine m = defaultMachine();
+  const double response = servoDeviationPerNormalAcceleration(m);  // um per mm/s^2
+  ASSERT_GT(response, 0.0);
+  ASSERT_LT(response, 1.0);
+  for (const char* plane : {"G17 G2 X5 Y0 I-5 J0", "G18 G2 X5 Z0 I-5 K0"})
+    for (const double feed : {900.0, 1800.0}) {
+      const std::string f = " F" + std::to_string(static_cast<int>(feed)) + "\n";
+      const std::string text = "G21 G90 G1 X5 Y0 Z0" + f + plane + f + plane + f + plane + f + "M30\n";
+      SampleBuffer buffer;
+      simulate(parse(text), m, buffer);
+      const auto& s = buffer.data;
+      double worst = 0, path = 0;
+      const std::size_t from = s.size() / 3, to = 2 * s.size() / 3;  // the second circle, at speed
+      for (std::size_t i = from; i < to; ++i) {
+        const Vec3 commanded(s[i].x, s[i].y, s[i].z), feedback(s[i].fbX, s[i].fbY, s[i].fbZ);
+        const Vec3 radial = commanded.normalized();
+        worst = std::max(worst, std::abs((feedback - commanded).dot(radial)) * 1000.0);
+        path += (Vec3(s[i + 1].x, s[i + 1].y, s[i + 1].z) - commanded).norm();
+      }
+      const double v = path / (double(to - from) * m.cycle);  // mm/s: the planner may hold it below F
+      EXPECT_GT(v, 0.5 * mmPerMinToMmPerS(feed));
+      EXPECT_NEAR(worst, response * v * v / 5.0, 0.2 * response * v * v / 5.0) << plane << " F" << feed;
+    }
 }

@@ -12,6 +12,7 @@
 #include "isurface/analysis/quality_regions.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/nc/servo_response.h"
 #include "isurface/workflow/run_inputs.h"
 
 namespace isurface {
@@ -21,6 +22,13 @@ namespace {
 constexpr double kRegionMarginMm = 0.5;
 constexpr double kFineCharacteristicError = 0.01;  // mm
 constexpr int kDeviationRounds = 3;
+// Of the program's own deviation (p99), what the bends are planned to: the servo's answer on a
+// circle (servo_response.h) is a steady state; entering a bend adds a little.
+constexpr double kServoBoundShare = 0.95;
+
+// The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
+// faster one costs less time, the gentler one changes the speed more evenly.
+constexpr double kRampAccelerations[] = {200.0, 100.0};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -202,15 +210,21 @@ struct Candidate {
   double share;                   // of the planned feeds
   bool fine = false;              // characteristic points at kFineCharacteristicError
   std::vector<double> ceilings;   // mm/min per source line, where deviation was held
+  double normalAcceleration = 0;  // mm/s^2, no bend run faster: the servo's deviation held
+  double ramp = 0;                // mm/s^2, ramps between interval feeds
 };
 
 std::string describe(const Candidate& c) {
-  return fmt::format("{}{}{}{}",
+  return fmt::format("{}{}{}{}{}{}",
                      c.rule == CrossPassRule::None     ? "each pass its own interval feeds"
                      : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
                                                        : "interval feeds planned across passes (slowest)",
                      c.fine ? fmt::format(", characteristic points within {:g} mm", kFineCharacteristicError) : "",
                      c.ceilings.empty() ? "" : ", slowed where the servo deviated more than before",
+                     c.normalAcceleration > 0
+                         ? fmt::format(", bends within the servo's deviation ({:.0f} mm/s^2)", c.normalAcceleration)
+                         : "",
+                     c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
@@ -264,6 +278,8 @@ class ClosedLoop {
     candidate.options.feedScale = request_.options.feedScale * c.share;
     candidate.options.crossPass = c.rule;
     candidate.options.lineFeedCeiling = c.ceilings;
+    candidate.options.normalAccelerationLimit = c.normalAcceleration;
+    candidate.options.rampAcceleration = c.ramp;
     if (c.fine) candidate.options.thresholds.error = std::min(candidate.options.thresholds.error, kFineCharacteristicError);
     OptimizeResult result = optimizeRegion(text_, baseline_.program, request_.lines, machine_, candidate.options);
     const bool repeated = std::find(judged_.begin(), judged_.end(), result.text) != judged_.end();
@@ -288,7 +304,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 6;
+  static constexpr std::size_t kExpectedCandidates = 8;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -306,9 +322,11 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
                                   const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
   // The closed loop. The paper's plan first (each pass its own interval feeds); when the
   // simulation finds it worse, the feeds planned across passes (the median of the passes
-  // around, then their slowest). Then, where the servo deviated more than before (the smooth
-  // new path is run faster through bends where the old one braked at every point),
-  // characteristic points at a finer scale, so that a bend between long moves is an interval
+  // around, then their slowest). Then every bend planned to the normal acceleration at which
+  // the machine's servo deviates as much as the program's own run did, with ramps into and out
+  // of the bends (feed_ramps.h), a faster and a gentler one. Then, where the servo deviated
+  // more than before (the smooth new path is run faster through bends where the old one braked
+  // at every point), characteristic points at a finer scale, so that a bend between long moves is an interval
   // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
   // Then a little below the plan. Each distinct candidate is simulated and judged; the objective
   // chooses among those no worse than the program. When none is, the first one's figures and
@@ -316,10 +334,20 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), std::nullopt};
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
+  std::optional<double> deviationTarget;  // um: what the program's own run deviates by (p99)
   for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median, CrossPassRule::Envelope}) {
     const RegionOptimisation* r = loop.judge({rule, 1.0, false, {}});
     if (r && !r->kept && slower(*r)) tooSlow.push_back(rule);
+    if (r && !deviationTarget && r->regionBefore.hasDeviation)
+      deviationTarget = std::min(r->regionBefore.deviationP99, r->wholeBefore.deviationP99);
     if (loop.done()) break;
+  }
+  if (!loop.done() && deviationTarget) {
+    const double limit = kServoBoundShare * *deviationTarget / servoDeviationPerNormalAcceleration(machine);
+    for (const double ramp : kRampAccelerations) {
+      loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
+      if (loop.done()) break;
+    }
   }
   const RegionOptimisation* fine = loop.done() ? nullptr : loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {

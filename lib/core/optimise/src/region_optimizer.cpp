@@ -17,10 +17,13 @@
 #include "isurface/fitting/interval_speed_plan.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/optimise/cross_pass_feeds.h"
+#include "isurface/optimise/feed_ramps.h"
 
 namespace isurface {
 
 namespace {
+
+constexpr double kRampFeedStep = 0.01;  // share of the programmed feed between a ramp's moves
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
@@ -339,9 +342,9 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     const auto& run = runs[r];
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
-    const std::vector<Vec3>& fitted = plans[r].points;
-    const std::vector<std::size_t>& intervalEnd = plans[r].intervalEnd;
     const double feed = first.feed;
+    const FeedPerMove moves =
+        feedPerMove(plans[r], {options.normalAccelerationLimit, options.rampAcceleration, kRampFeedStep * feed});
     const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;
@@ -351,23 +354,23 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     pass.intervalFeeds = feeds;
     std::string feedList;
     for (double f : feeds) feedList += " F" + units.feed(f);
-    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: Akima spline in arc length, constant speed intervals{}){}",
-                               first.line, last.line, feedList, lineEnd);
+    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: Akima spline in arc length, constant speed intervals{}{}){}",
+                               first.line, last.line, feedList,
+                               options.rampAcceleration > 0 ? fmt::format(", ramps of {:g} mm/s^2", options.rampAcceleration) : "",
+                               lineEnd);
     pass.newFirstLine = ++written;
-    double current = -1;
-    std::size_t interval = 0;
-    for (std::size_t k = 1; k < fitted.size(); ++k) {
-      while (interval + 1 < intervalEnd.size() && k > intervalEnd[interval]) ++interval;
-      const double f = feeds.empty() ? feed : feeds[interval];
-      std::string block = "G1 " + units.position(fitted[k]);
-      if (f != current) block += " F" + units.feed(f), current = f;
+    std::string current;
+    for (std::size_t k = 1; k < moves.points.size(); ++k) {
+      const std::string f = units.feed(moves.feeds[k - 1]);
+      std::string block = "G1 " + units.position(moves.points[k]);
+      if (f != current) block += " F" + f, current = f;
       result.text += block + lineEnd;
-      pass.sourceLines.push_back(plans[r].sourceLines[k]);
+      pass.sourceLines.push_back(moves.sourceLines[k]);
       ++written;
       ++pass.newMoves;
     }
     // The lines after keep the feed they had.
-    if (current != feed) {
+    if (current != units.feed(feed)) {
       result.text += "F" + units.feed(feed) + lineEnd;
       ++written;
     }

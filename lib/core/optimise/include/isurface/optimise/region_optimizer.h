@@ -31,6 +31,12 @@ struct OptimizeOptions {
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
   double feedScale = 1.0;         // share of each interval's planned feed that is programmed
+  // mm/s^2: the centripetal acceleration v^2 * average curvature no interval exceeds (the
+  // paper's average-curvature speed with this acceleration); 0: only the machine's limits.
+  double normalAccelerationLimit = 0;
+  // mm/s^2: changes of feed between intervals spread into ramps at this acceleration
+  // (feed_ramps.h); 0: one step at the interval's end.
+  double rampAcceleration = 0;
   CrossPassRule crossPass = CrossPassRule::None;
   // mm/min, indexed by source line (0: none): no interval runs faster than the lowest ceiling
   // of the old lines it replaces.

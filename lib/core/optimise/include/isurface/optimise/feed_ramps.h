@@ -1,0 +1,38 @@
+#pragma once
+// The interval feeds of a re-fitted pass as one feed per G1 move, with the changes between
+// intervals spread into ramps of gentle acceleration. A step from one interval's feed to the
+// next is a jerk-limited change over a few milliseconds: the speed's fluctuation about its
+// moving average and the jerk come from such steps. A ramp laid out along the path (long moves
+// cut where the feed changes by a step) changes the speed evenly instead, and, being a
+// function of the position on the path, is the same whichever way a pass runs: a pass and its
+// neighbour cut the other way slow down over the same stretch of the surface.
+#include <cstdint>
+#include <vector>
+
+#include "isurface/base/geometry.h"
+#include "isurface/optimise/cross_pass_feeds.h"
+
+namespace isurface {
+
+struct FeedPerMove {
+  std::vector<Vec3> points;                 // the pass's points, long moves cut where a ramp crosses them
+  std::vector<std::uint32_t> sourceLines;   // per point after the first, the old line it stands for
+  std::vector<double> feeds;                // per move (point k to k + 1), mm/min
+};
+
+struct RampOptions {
+  // mm/s^2: no move runs faster than sqrt(limit / curvature), the curvature being the larger
+  // at its two ends (a point's turn over the mean length of the moves it joins); 0: no limit.
+  // Taken at every point rather than per interval: where a bend is, and so how fast it may be
+  // run, does not depend on which way a pass runs, as the interval boundaries do.
+  double normalAccelerationLimit = 0;
+  double rampAcceleration = 0;  // mm/s^2, the ramps' tangential acceleration; 0: steps
+  double feedStep = 25;         // mm/min, the change of feed from one move of a ramp to the next
+};
+
+// No move's feed is above its interval's; a ramp lies in the faster stretch. Ramps are cut at
+// whole multiples of the feed step, so that neighbouring passes whose ramps differ a little
+// still share their feeds.
+FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options);
+
+}  // namespace isurface

@@ -1,0 +1,119 @@
+#include "isurface/optimise/feed_ramps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "isurface/base/tolerances.h"
+#include "isurface/base/units.h"
+
+namespace isurface {
+
+namespace {
+
+constexpr double kShortestRampPiece = 0.05;  // mm: finer pieces only multiply lines
+
+// The feed each move may run at before ramping: its interval's (mm/s).
+std::vector<double> intervalFeedPerMove(const PassFeeds& pass) {
+  std::vector<double> feeds;
+  std::size_t interval = 0;
+  for (std::size_t k = 1; k < pass.points.size(); ++k) {
+    while (interval + 1 < pass.intervalEnd.size() && k > pass.intervalEnd[interval]) ++interval;
+    feeds.push_back(mmPerMinToMmPerS(pass.feeds.empty() ? 0.0 : pass.feeds[std::min(interval, pass.feeds.size() - 1)]));
+  }
+  return feeds;
+}
+
+// The path's curvature at each point (1/mm): its turn over the mean length of the two moves it
+// joins; 0 at the ends and beside a move of no length. (The junction of a long straight move
+// and a bend has little: the bend's feed is set by its own short moves.)
+std::vector<double> curvatureAtPoints(const std::vector<Vec3>& points) {
+  std::vector<double> curvature(points.size(), 0.0);
+  for (std::size_t k = 1; k + 1 < points.size(); ++k) {
+    const Vec3 a = points[k] - points[k - 1], b = points[k + 1] - points[k];
+    const double la = a.norm(), lb = b.norm();
+    if (la < kLengthEpsilon || lb < kLengthEpsilon) continue;
+    curvature[k] = 2.0 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)) / (la + lb);
+  }
+  return curvature;
+}
+
+void limitNormalAcceleration(const std::vector<Vec3>& points, double limit, std::vector<double>& feeds) {
+  const std::vector<double> curvature = curvatureAtPoints(points);
+  for (std::size_t k = 0; k < feeds.size(); ++k) {
+    const double largest = std::max(curvature[k], curvature[k + 1]);
+    if (largest > kZeroCurvature) feeds[k] = std::min(feeds[k], std::sqrt(limit / largest));
+  }
+}
+
+// The ramp's speed at every point (mm/s): no more than the feeds of the moves it joins, and
+// reachable from its neighbours at the ramp's acceleration, both ways along the pass.
+std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::vector<double>& feeds, double a) {
+  const std::size_t n = points.size();
+  std::vector<double> u(n);
+  for (std::size_t k = 0; k < n; ++k) u[k] = std::min(feeds[k > 0 ? k - 1 : 0], feeds[std::min(k, feeds.size() - 1)]);
+  for (std::size_t k = 0; k + 1 < n; ++k)
+    u[k + 1] = std::min(u[k + 1], std::sqrt(u[k] * u[k] + 2 * a * (points[k + 1] - points[k]).norm()));
+  for (std::size_t k = n - 1; k > 0; --k)
+    u[k - 1] = std::min(u[k - 1], std::sqrt(u[k] * u[k] + 2 * a * (points[k] - points[k - 1]).norm()));
+  return u;
+}
+
+// Distances along one move (0..length, mm) where the ramp's speed crosses a whole multiple of
+// the step: rising from its start, falling towards its end.
+std::vector<double> rampBreaks(double length, double feed, double atStart, double atEnd, double a, double step) {
+  std::vector<double> breaks;
+  for (const auto& [from, mirrored] : {std::pair{atStart, false}, std::pair{atEnd, true}})
+    for (double level = (std::floor(from / step) + 1) * step; level < feed; level += step) {
+      const double s = (level * level - from * from) / (2 * a);
+      if (s >= length) break;
+      breaks.push_back(mirrored ? length - s : s);
+    }
+  std::sort(breaks.begin(), breaks.end());
+  std::vector<double> kept;
+  for (const double s : breaks)
+    if (s >= kShortestRampPiece && s <= length - kShortestRampPiece && (kept.empty() || s - kept.back() >= kShortestRampPiece))
+      kept.push_back(s);
+  return kept;
+}
+
+}  // namespace
+
+FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
+  FeedPerMove out;
+  std::vector<double> feeds = intervalFeedPerMove(pass);
+  out.points = {pass.points.front()};
+  out.sourceLines = {0};
+  if (feeds.empty()) return out;
+  if (options.normalAccelerationLimit > 0) limitNormalAcceleration(pass.points, options.normalAccelerationLimit, feeds);
+  const double a = options.rampAcceleration;
+  const double step = mmPerMinToMmPerS(options.feedStep);
+  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, a) : std::vector<double>{};
+  for (std::size_t k = 0; k < feeds.size(); ++k) {
+    const Vec3 &from = pass.points[k], &to = pass.points[k + 1];
+    const std::uint32_t line = k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0;
+    if (!(a > 0)) {
+      out.points.push_back(to), out.sourceLines.push_back(line), out.feeds.push_back(mmPerSToMmPerMin(feeds[k]));
+      continue;
+    }
+    const double length = (to - from).norm();
+    // The ramp's speed at a distance s into the move; the lowest over a piece is at one of its ends.
+    auto envelope = [&](double s) {
+      return std::min({feeds[k], std::sqrt(u[k] * u[k] + 2 * a * s), std::sqrt(u[k + 1] * u[k + 1] + 2 * a * (length - s))});
+    };
+    std::vector<double> cuts = rampBreaks(length, feeds[k], u[k], u[k + 1], a, step);
+    cuts.push_back(length);
+    double s0 = 0;
+    for (const double s1 : cuts) {
+      const double lowest = std::min(envelope(s0), envelope(s1));
+      // A piece of a ramp runs at the step below it; one that holds its move's feed keeps it.
+      const double feed = lowest < feeds[k] * (1 - 1e-9) ? std::max(step, std::floor(lowest / step + 1e-9) * step) : feeds[k];
+      out.points.push_back(s1 < length ? from + (to - from) * (s1 / length) : to);
+      out.sourceLines.push_back(line);
+      out.feeds.push_back(mmPerSToMmPerMin(std::min(feed, feeds[k])));
+      s0 = s1;
+    }
+  }
+  return out;
+}
+
+}  // namespace isurface

@@ -1,0 +1,132 @@
+// One feed per move with the changes between intervals spread into ramps: never faster than the
+// interval, on the old path, the same whichever way the pass runs, bends within the normal
+// acceleration asked for.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "isurface/base/units.h"
+#include "isurface/optimise/feed_ramps.h"
+
+using namespace isurface;
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// A plane of 20 mm (one move), a fillet of radius 5 mm over 30 degrees (moves of 0.05 mm), a
+// slope of 20 mm (one move), along X; three intervals at F2500, F1200, F2500.
+PassFeeds planeFilletSlope() {
+  PassFeeds pass;
+  pass.points = {Vec3(0, 0, 0), Vec3(20, 0, 0)};
+  const double radius = 5, sweep = kPi / 6;
+  const int pieces = static_cast<int>(std::ceil(radius * sweep / 0.05));
+  for (int k = 1; k <= pieces; ++k) {
+    const double a = sweep * k / pieces;
+    pass.points.push_back(Vec3(20 + radius * std::sin(a), 0, radius * (1 - std::cos(a))));
+  }
+  pass.intervalEnd = {1, pass.points.size() - 1};
+  const Vec3 end = pass.points.back(), direction(std::cos(sweep), 0, std::sin(sweep));
+  pass.points.push_back(end + 20 * direction);
+  pass.intervalEnd.push_back(pass.points.size() - 1);
+  pass.feeds = {2500, 1200, 2500};
+  pass.sourceLines.assign(pass.points.size(), 7);
+  return pass;
+}
+
+PassFeeds reversed(PassFeeds pass) {
+  std::reverse(pass.points.begin(), pass.points.end());
+  const std::size_t last = pass.points.size() - 1;
+  std::vector<std::size_t> ends;
+  for (auto it = pass.intervalEnd.rbegin() + 1; it != pass.intervalEnd.rend(); ++it) ends.push_back(last - *it);
+  ends.push_back(last);
+  pass.intervalEnd = ends;
+  std::reverse(pass.feeds.begin(), pass.feeds.end());
+  return pass;
+}
+
+// The feed (mm/min) of the move that holds the point at x (mm) on the pass.
+double feedAt(const FeedPerMove& m, double x) {
+  for (std::size_t k = 0; k + 1 < m.points.size(); ++k) {
+    const double lo = std::min(m.points[k].x(), m.points[k + 1].x()), hi = std::max(m.points[k].x(), m.points[k + 1].x());
+    if (x >= lo && x <= hi) return m.feeds[k];
+  }
+  return NAN;
+}
+
+double distanceToPolyline(const Vec3& p, const std::vector<Vec3>& line) {
+  double best = INFINITY;
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    const Vec3 d = line[k + 1] - line[k];
+    const double t = std::clamp((p - line[k]).dot(d) / d.squaredNorm(), 0.0, 1.0);
+    best = std::min(best, (line[k] + t * d - p).norm());
+  }
+  return best;
+}
+
+}  // namespace
+
+TEST(feedRamps, WithoutRampsEachMoveRunsAtItsIntervalsFeed) {
+  const PassFeeds pass = planeFilletSlope();
+  const FeedPerMove m = feedPerMove(pass, {});
+  ASSERT_EQ(m.points.size(), pass.points.size());
+  EXPECT_EQ(m.feeds.front(), 2500);
+  EXPECT_EQ(m.feeds[1], 1200);
+  EXPECT_EQ(m.feeds.back(), 2500);
+}
+
+TEST(feedRamps, ARampStaysOnThePathBelowTheIntervalFeedsAndWithinItsAcceleration) {
+  const PassFeeds pass = planeFilletSlope();
+  RampOptions options;
+  options.rampAcceleration = 100;
+  options.feedStep = 25;
+  const FeedPerMove m = feedPerMove(pass, options);
+  ASSERT_EQ(m.feeds.size() + 1, m.points.size());
+  EXPECT_GT(m.points.size(), pass.points.size() + 20);  // the long moves are cut into a ramp
+  for (const Vec3& p : m.points) EXPECT_LT(distanceToPolyline(p, pass.points), 1e-9);
+  for (const Vec3& p : pass.points) EXPECT_LT(distanceToPolyline(p, m.points), 1e-9);
+  for (std::size_t k = 0; k < m.feeds.size(); ++k) {
+    const double x = 0.5 * (m.points[k].x() + m.points[k + 1].x());
+    EXPECT_LE(m.feeds[k], x < 20 || x > 22.5 ? 2500 : 1200) << "move " << k;
+    EXPECT_EQ(m.sourceLines[k + 1], 7u);
+  }
+  // From one move to the next the feed changes by a step at most, and no faster than the ramp's
+  // acceleration allows over the move before (v^2 = v0^2 + 2 a s, one step of rounding).
+  for (std::size_t k = 1; k < m.feeds.size(); ++k) {
+    const double v0 = mmPerMinToMmPerS(m.feeds[k - 1]), v1 = mmPerMinToMmPerS(m.feeds[k]);
+    const double length = (m.points[k] - m.points[k - 1]).norm();
+    const double reachable = std::sqrt(std::min(v0, v1) * std::min(v0, v1) + 2 * 100 * length);
+    EXPECT_LE(std::abs(m.feeds[k] - m.feeds[k - 1]), 25.0 + 1e-9) << "move " << k;
+    EXPECT_LE(std::max(v0, v1), reachable + mmPerMinToMmPerS(25.0) + 1e-9) << "move " << k;
+  }
+  // The ramp down ends where the fillet starts: the fillet runs at its own feed.
+  EXPECT_EQ(feedAt(m, 21.0), 1200);
+  EXPECT_LT(feedAt(m, 19.9), 1300);
+  EXPECT_EQ(feedAt(m, 5.0), 2500);
+}
+
+TEST(feedRamps, APassRunTheOtherWayGetsTheSameFeedsWhereItIs) {
+  RampOptions options;
+  options.rampAcceleration = 150;
+  options.normalAccelerationLimit = 60;
+  const FeedPerMove forward = feedPerMove(planeFilletSlope(), options);
+  const FeedPerMove backward = feedPerMove(reversed(planeFilletSlope()), options);
+  for (double x = 0.25; x < 38; x += 0.5) EXPECT_NEAR(feedAt(forward, x), feedAt(backward, x), 25.0 + 1e-9) << "x " << x;
+}
+
+TEST(feedRamps, BendsRunWithinTheNormalAccelerationAskedFor) {
+  RampOptions options;
+  options.normalAccelerationLimit = 40;  // mm/s^2: sqrt(40 * 5) = 14.1 mm/s = 849 mm/min on the fillet
+  options.rampAcceleration = 100;
+  const FeedPerMove m = feedPerMove(planeFilletSlope(), options);
+  const double expected = mmPerSToMmPerMin(std::sqrt(40.0 * 5.0));
+  for (const double x : {20.6, 21.0, 21.5, 22.0}) EXPECT_NEAR(feedAt(m, x), expected, 0.01 * expected) << "x " << x;
+  // The plane keeps its feed and slows into the bend: v^2 = v_bend^2 + 2 a s reaches F2500
+  // 7.7 mm before it.
+  EXPECT_EQ(feedAt(m, 5.0), 2500);
+  EXPECT_EQ(feedAt(m, 11.0), 2500);
+  EXPECT_LT(feedAt(m, 19.0), 1500);
+  options.normalAccelerationLimit = 1e6;  // a limit above what the interval asks changes nothing
+  options.rampAcceleration = 100;
+  EXPECT_EQ(feedAt(feedPerMove(planeFilletSlope(), options), 21.0), 1200);
+}
