@@ -408,3 +408,33 @@ TEST(workingDay, ShortcutsWaitWhileADialogIsOpen) {
   EXPECT_FALSE(windows["optimise"].get<bool>());
   EXPECT_TRUE(described(*ui)["controls"].contains("export.write")) << "the export dialog closed";
 }
+
+// A drag turns the camera as VTK's trackball does at the view's full size (200 degrees over
+// the view's width), though the view is drawn smaller while it is dragged.
+TEST(workingDay, DraggingTurnsTheCameraByTheTrackballsAngle) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'T');
+  settle(*ui);
+  const auto view = described(*ui)["controls"]["view"].get<std::array<float, 4>>();
+  const float width = view[2] - view[0], cx = (view[0] + view[2]) / 2, cy = (view[1] + view[3]) / 2;
+  auto direction = [&] {
+    const nlohmann::json c = described(*ui)["camera"];
+    auto point = [](const nlohmann::json& p) { return Vec3(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()); };
+    const Vec3 position = point(c["position"]), focal = point(c["focal_point"]);
+    return Vec3((focal - position).normalized());
+  };
+  const Vec3 before = direction();
+  const float dx = 0.2f * width;  // 40 degrees
+  ui->mouse(cx, cy, false);
+  ui->frame();
+  ui->mouse(cx, cy, true);
+  ui->frame();
+  for (int step = 1; step <= 8; ++step) {
+    ui->mouse(cx + dx * step / 8, cy, true);
+    ui->frame();
+  }
+  ui->mouse(cx + dx, cy, false);
+  settle(*ui);
+  const double turned = std::acos(std::clamp(before.dot(direction()), -1.0, 1.0)) * 180.0 / M_PI;
+  EXPECT_NEAR(turned, 200.0 * dx / width, 4.0);
+}

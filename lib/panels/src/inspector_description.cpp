@@ -61,6 +61,9 @@ std::string Inspector::describe() const {
   const auto view = s.controls.find("view");
   if (const auto r = s.view.surfaceOnScreen(); r && view != s.controls.end())
     controls["surface"] = {view->second[0] + r->x0, view->second[1] + r->y0, view->second[0] + r->x1, view->second[1] + r->y1};
+  nlohmann::json camera = nlohmann::json::object();
+  if (const auto pose = s.view.camera())
+    camera = {{"position", pointJson(pose->position)}, {"focal_point", pointJson(pose->focalPoint)}, {"view_up", pointJson(pose->viewUp)}};
   nlohmann::json windows = {{"machine", s.machineOpen},
                             {"locate", s.locateOpen},
                             {"optimise", s.optimiseDialogOpen},
@@ -96,6 +99,7 @@ std::string Inspector::describe() const {
                               {"last_saved", s.lastSaved},
                               {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
                               {"status", s.status},
+                              {"camera", camera},
                               {"controls", controls}};
   return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
 }

@@ -34,6 +34,16 @@ namespace isurface::panels {
 struct Curve {
   std::string label, unit;
   app_model::SignalPyramid values;
+  // What the signals panel last drew of it: the envelope and the range of samples [first,
+  // last) over `columns`, mm and s units. Reading a derived quantity sample by sample costs
+  // milliseconds a curve, too much to spend again on every frame of a camera drag.
+  struct Shown {
+    std::size_t first = 0, last = 0;
+    int columns = 0;
+    app_model::Envelope envelope;
+    std::pair<float, float> range;
+  };
+  std::optional<Shown> shown = std::nullopt;
 };
 
 // One program and its interpolation samples (simulated or read from a dump).

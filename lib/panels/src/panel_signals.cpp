@@ -57,15 +57,23 @@ void drawTimeAxis(const Trajectory& t, std::size_t first, std::size_t last, ImVe
   }
 }
 
-void drawCurve(Inspector::State& s, const Curve& curve, double scale, const char* unit, const Trajectory& t,
+const Curve::Shown& shownPart(Curve& curve, std::size_t first, std::size_t last, int columns) {
+  if (!curve.shown || curve.shown->first != first || curve.shown->last != last || curve.shown->columns != columns)
+    curve.shown = Curve::Shown{first, last, columns, curve.values.envelope(first, last, columns),
+                               displayRange(curve.values, first, last)};
+  return *curve.shown;
+}
+
+void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit, const Trajectory& t,
                ImVec2 origin, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
   const int columns = std::max(1, static_cast<int>(size.x));
   const std::size_t first = s.curveFirst, last = std::max(s.curveLast, s.curveFirst + 1);
-  const app_model::Envelope envelope = curve.values.envelope(first, last, columns);
-  const auto [storedLo, storedHi] = displayRange(curve.values, first, last);
+  const Curve::Shown& part = shownPart(curve, first, last, columns);
+  const app_model::Envelope& envelope = part.envelope;
+  const auto [storedLo, storedHi] = part.range;
   const float lo = static_cast<float>(storedLo * scale), hi = static_cast<float>(storedHi * scale);
   const float span = (std::isfinite(lo) && std::isfinite(hi) && hi > lo) ? hi - lo : 1.0f;
   auto toY = [&](float v) { return end.y - 2 - (v - (std::isfinite(lo) ? lo : 0)) / span * (size.y - 4); };
@@ -151,7 +159,7 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
   const DisplayUnits units = s.units();
   const char* unitOf[3] = {units.feedUnit(), units.accelerationUnit(), units.jerkUnit()};
   for (int k = 0; k < shown; ++k) {
-    const Curve& curve = doc->curves[k < 3 ? k : 3 + s.extraCurve];
+    Curve& curve = doc->curves[k < 3 ? k : 3 + s.extraCurve];
     // Speed, acceleration and jerk are lengths per time: shown in the display units.
     const double scale = k < 3 ? units.length(1.0) : 1.0;
     drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each));

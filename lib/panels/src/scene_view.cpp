@@ -22,6 +22,15 @@
 
 namespace isurface::panels {
 
+namespace {
+
+// While the camera is dragged the view is drawn at 1/kDragScale of its size and shown
+// stretched: a software renderer's time goes with the pixels it fills as much as with the
+// triangles. Mouse positions are scaled alike, so the camera turns as it would at full size.
+constexpr int kDragScale = 2;
+
+}  // namespace
+
 struct SceneView::Impl {
   GlHooks hooks;
   vtkSmartPointer<vtkGenericOpenGLRenderWindow> window = vtkSmartPointer<vtkGenericOpenGLRenderWindow>::New();
@@ -115,6 +124,16 @@ std::optional<app_model::ScreenRectangle> SceneView::surfaceOnScreen() const {
   return screenBox(projection(), bounds);
 }
 
+std::optional<SceneView::CameraPose> SceneView::camera() const {
+  if (!scene_) return std::nullopt;
+  vtkCamera* c = scene_->renderer()->GetActiveCamera();
+  CameraPose pose;
+  c->GetPosition(pose.position.data());
+  c->GetFocalPoint(pose.focalPoint.data());
+  c->GetViewUp(pose.viewUp.data());
+  return pose;
+}
+
 void SceneView::copyCameraFrom(const SceneView& other) {
   if (!scene_ || !other.scene_) return;
   vtkCamera* camera = scene_->renderer()->GetActiveCamera();
@@ -150,9 +169,11 @@ unsigned int SceneView::render(int width, int height) {
   if (resized) {
     d.width = width;
     d.height = height;
-    d.window->SetSize(width, height);
-    d.interactor->SetSize(width, height);
-    scene_->fitTextToWidth(width);
+    d.interactor->SetSize(drawnWidth(), drawnHeight());
+  }
+  if (d.window->GetSize()[0] != drawnWidth() || d.window->GetSize()[1] != drawnHeight()) {
+    d.window->SetSize(drawnWidth(), drawnHeight());
+    scene_->fitTextToWidth(d.width, double(drawnWidth()) / std::max(1, d.width));
   }
   if (refitPending_) {
     refitPending_ = false;
@@ -240,30 +261,46 @@ app_model::ScreenProjection SceneView::projection() const {
   return p;
 }
 
+int SceneView::drawnWidth() const { return std::max(1, impl_->width / (dragging_ ? kDragScale : 1)); }
+int SceneView::drawnHeight() const { return std::max(1, impl_->height / (dragging_ ? kDragScale : 1)); }
+
+void SceneView::setEventPosition(double x, double y) {
+  const double scale = dragging_ ? 1.0 / kDragScale : 1.0;
+  impl_->interactor->SetEventInformationFlipY(static_cast<int>(std::lround(x * scale)),
+                                              static_cast<int>(std::lround(y * scale)));
+}
+
 void SceneView::mouseMove(double x, double y) {
-  // A drag (not a click) shows the coarse surface until the button is let go.
-  if (pressed_ && (std::abs(x - pressX_) > 2 || std::abs(y - pressY_) > 2)) dragging_ = true;
-  impl_->interactor->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  // A drag (not a click) shows the coarse surface, drawn smaller, until the button is let go.
+  if (pressed_ && !dragging_ && (std::abs(x - pressX_) > 2 || std::abs(y - pressY_) > 2)) {
+    dragging_ = true;
+    impl_->interactor->SetSize(drawnWidth(), drawnHeight());
+    setEventPosition(pressX_, pressY_);  // the drag's first step is measured from the press
+  }
+  setEventPosition(x, y);
   impl_->interactor->MouseMoveEvent();
 }
 
 void SceneView::mouseButton(int button, bool pressed, double x, double y) {
   vtkGenericRenderWindowInteractor* i = impl_->interactor;
-  i->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  setEventPosition(x, y);
   pressed_ = pressed;
   pressX_ = x;
   pressY_ = y;
-  if (!pressed) dragging_ = false;
   switch (button) {
     case 0: pressed ? i->LeftButtonPressEvent() : i->LeftButtonReleaseEvent(); break;
     case 1: pressed ? i->RightButtonPressEvent() : i->RightButtonReleaseEvent(); break;
     default: pressed ? i->MiddleButtonPressEvent() : i->MiddleButtonReleaseEvent(); break;
   }
+  if (!pressed && dragging_) {
+    dragging_ = false;
+    i->SetSize(drawnWidth(), drawnHeight());
+  }
 }
 
 void SceneView::mouseWheel(double steps, double x, double y) {
   vtkGenericRenderWindowInteractor* i = impl_->interactor;
-  i->SetEventInformationFlipY(static_cast<int>(x), static_cast<int>(y));
+  setEventPosition(x, y);
   if (steps > 0) i->MouseWheelForwardEvent();
   else if (steps < 0) i->MouseWheelBackwardEvent();
 }

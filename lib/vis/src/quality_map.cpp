@@ -10,6 +10,7 @@
 #include "isurface/base/units.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/gcode/path_segment.h"
+#include "isurface/surface/coarse_mesh.h"
 
 namespace isurface::vis {
 
@@ -114,8 +115,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.data.scalars = scalarsFor(request, samples, *map.mesh);
   if (request.pickable) map.rayIndex = std::make_shared<SurfaceRayIndex>(map.data.positions, map.mesh);
   if (request.coarseVertices > 0 && cutting > 2 * request.coarseVertices) {
-    meshOptions.stride = (cutting + request.coarseVertices - 1) / request.coarseVertices;
-    map.coarseMesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
+    map.coarseMesh = std::make_unique<SurfaceMesh>(buildCoarseSurfaceMesh(samples, map.passes, meshOptions, request.coarseVertices));
     map.data.coarsePositions = meshPositions(samples, *map.coarseMesh, request.feedbackSurface);
     map.data.coarseMesh = map.coarseMesh.get();
     map.data.coarseScalars = scalarsFor(request, samples, *map.coarseMesh);

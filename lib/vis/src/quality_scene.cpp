@@ -207,9 +207,10 @@ std::string wrapLines(const std::string& text, std::size_t chars) {
 
 }  // namespace
 
-void QualityScene::fitTextToWidth(int width) {
+void QualityScene::fitTextToWidth(int width, double drawnScale) {
   Parts& p = *parts_;
   if (width <= 0) return;
+  const auto drawn = [&](int size) { return std::max(4, static_cast<int>(std::lround(size * drawnScale))); };
   // The caption spans at most the width left of the legend; the legend's title, centred over
   // the bar, at most what lies right of 0.80 of the width.
   const auto fit = [&](std::size_t chars, double share) {
@@ -221,12 +222,12 @@ void QualityScene::fitTextToWidth(int width) {
     // Smaller down to a size still easy to read, then lines broken at words instead.
     const int size = std::max(kSmallestCaption, fit(longestLine(p.captionText), 0.80));
     const auto chars = static_cast<std::size_t>(0.80 * width / (kAdvance * size));
-    p.caption->GetTextProperty()->SetFontSize(size);
+    p.caption->GetTextProperty()->SetFontSize(drawn(size));
     p.caption->SetInput(wrapLines(p.captionText, std::max<std::size_t>(chars, 20)).c_str());
   }
   const int legendSize = fit(longestLine(p.legendText), 0.17);
-  p.legend->GetTitleTextProperty()->SetFontSize(legendSize);
-  p.legend->GetLabelTextProperty()->SetFontSize(std::max(8, legendSize - 2));
+  p.legend->GetTitleTextProperty()->SetFontSize(drawn(legendSize));
+  p.legend->GetLabelTextProperty()->SetFontSize(drawn(std::max(8, legendSize - 2)));
 }
 
 void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample) {

@@ -54,6 +54,11 @@ class SceneView {
   double millimetresPerPixel() const;
   // Where the surface's bounding box stands in the view (pixels from its top-left corner).
   std::optional<app_model::ScreenRectangle> surfaceOnScreen() const;
+  // Where the camera stands and what it looks at (mm), and which way is up on the screen.
+  struct CameraPose {
+    Vec3 position, focalPoint, viewUp;
+  };
+  std::optional<CameraPose> camera() const;
 
   // Mouse input in pixels from the view's top-left corner.
   void mouseMove(double x, double y);
@@ -72,6 +77,10 @@ class SceneView {
   std::unique_ptr<Impl> impl_;
   std::shared_ptr<vis::QualityScene> scene_;
   std::shared_ptr<const SurfaceRayIndex> picking_;
+  // The size the view is drawn at (smaller while dragging) and mouse positions in it, pixels.
+  int drawnWidth() const;
+  int drawnHeight() const;
+  void setEventPosition(double x, double y);
   bool pressed_ = false, dragging_ = false;
   double pressX_ = 0, pressY_ = 0;
   bool invalidated_ = true;
