@@ -1,6 +1,7 @@
 // Loading a document on a background thread: program text, the program and its samples (one
 // workflow call: read and joined, or simulated), the quality map and its scene, the curves.
 #include <filesystem>
+#include <future>
 
 #include "inspector_state.h"
 #include "isurface/vis/quality_scene.h"
@@ -68,6 +69,13 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   doc->warnings = std::move(run.warnings);
   if (!doc->samples || doc->samples->size() == 0) return doc;
   control.progress(0.55);
+  // The curves' pyramids need only the samples: built on a second thread beside the map.
+  std::future<std::vector<Curve>> curves = std::async(std::launch::async, [samples = doc->samples] {
+    std::vector<Curve> made;
+    for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) made.push_back(curveOf(q, samples));
+    for (const auto& channel : samples->extra) made.push_back(channelCurve(channel.first, samples));
+    return made;
+  });
   vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
   fitted.caption = machineCaption(doc->machine, doc->machineKnown);
   if (unitsOfProgram) fitted.inch = doc->program && doc->program->inch;
@@ -81,8 +89,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
     doc->warnings.push_back(std::string("no map: ") + e.what());
   }
   control.progress(0.85);
-  for (Quantity q : {Quantity::Speed, Quantity::Acceleration, Quantity::Jerk}) doc->curves.push_back(curveOf(q, doc->samples));
-  for (const auto& channel : doc->samples->extra) doc->curves.push_back(channelCurve(channel.first, doc->samples));
+  doc->curves = curves.get();
   control.progress(1.0);
   return doc;
 }

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <future>
 
 #include <fmt/format.h>
 
@@ -113,7 +114,13 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();
   map.data.scalars = scalarsFor(request, samples, *map.mesh);
-  if (request.pickable) map.rayIndex = std::make_shared<SurfaceRayIndex>(map.data.positions, map.mesh);
+  // The picking index is built on a second thread while the rest of the map is made; it reads
+  // only the positions and the mesh, which nothing below changes.
+  std::future<std::shared_ptr<const SurfaceRayIndex>> rayIndex;
+  if (request.pickable)
+    rayIndex = std::async(std::launch::async, [&positions = map.data.positions, mesh = map.mesh] {
+      return std::shared_ptr<const SurfaceRayIndex>(std::make_shared<SurfaceRayIndex>(positions, mesh));
+    });
   if (request.coarseVertices > 0 && cutting > 2 * request.coarseVertices) {
     map.coarseMesh = std::make_unique<SurfaceMesh>(buildCoarseSurfaceMesh(samples, map.passes, meshOptions, request.coarseVertices));
     map.data.coarsePositions = meshPositions(samples, *map.coarseMesh, request.feedbackSurface);
@@ -179,6 +186,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
                               map.passes.passes.size(), pathPatternName(map.passes.pattern));
   if (request.highlightLine)
     style.caption += fmt::format("\nline {}: {} samples", *request.highlightLine, map.data.highlight.size());
+  if (rayIndex.valid()) map.rayIndex = rayIndex.get();
   return map;
 }
 
