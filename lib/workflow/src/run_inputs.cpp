@@ -149,9 +149,9 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
 }
 
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress) {
-  SampleBuffer buffer;
-  simulate(program, machine, buffer, progress);
-  return trajectoryFromSamples(buffer.data, machine.cycle, program.source);
+  TrajectorySink sink(machine.cycle, program.source);
+  simulate(program, machine, sink, progress);
+  return sink.take();
 }
 
 namespace {

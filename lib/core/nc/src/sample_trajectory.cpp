@@ -1,38 +1,45 @@
 // Simulated samples as a Trajectory.
 #include "isurface/nc/sample_trajectory.h"
 
+#include <utility>
+
 namespace isurface {
 
-Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source) {
-  const std::size_t n = samples.size();
-  Trajectory out;
-  out.source = source;
-  out.cycle = cycle;
-  out.hasLine = true;
-  out.time.resize(n);
-  out.line.resize(n);
-  out.block.resize(n);
-  out.x.resize(n);
-  out.y.resize(n);
-  out.z.resize(n);
-  out.fbX.resize(n);
-  out.fbY.resize(n);
-  out.fbZ.resize(n);
-  out.feed.resize(n);
-  for (std::size_t i = 0; i < n; ++i) {
-    const SimSample& s = samples[i];
-    out.time[i] = double(i) * cycle;
-    out.line[i] = s.line;
-    out.block[i] = s.block;
-    out.x[i] = s.x;
-    out.y[i] = s.y;
-    out.z[i] = s.z;
-    out.fbX[i] = s.fbX;
-    out.fbY[i] = s.fbY;
-    out.fbZ[i] = s.fbZ;
-    out.feed[i] = s.feed;
+TrajectorySink::TrajectorySink(double cycle, std::string source) {
+  trajectory_.source = std::move(source);
+  trajectory_.cycle = cycle;
+  trajectory_.hasLine = true;
+}
+
+void TrajectorySink::expect(std::size_t samples) {
+  Trajectory& t = trajectory_;
+  for (std::vector<double>* channel : {&t.time, &t.x, &t.y, &t.z, &t.fbX, &t.fbY, &t.fbZ, &t.feed}) channel->reserve(samples);
+  t.line.reserve(samples);
+  t.block.reserve(samples);
+}
+
+void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
+  Trajectory& t = trajectory_;
+  for (std::size_t k = 0; k < count; ++k) {
+    const SimSample& s = samples[k];
+    t.time.push_back(double(t.time.size()) * t.cycle);
+    t.line.push_back(s.line);
+    t.block.push_back(s.block);
+    t.x.push_back(s.x);
+    t.y.push_back(s.y);
+    t.z.push_back(s.z);
+    t.fbX.push_back(s.fbX);
+    t.fbY.push_back(s.fbY);
+    t.fbZ.push_back(s.fbZ);
+    t.feed.push_back(s.feed);
   }
-  return out;
+}
+
+Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source) {
+  TrajectorySink sink(cycle, source);
+  sink.expect(samples.size());
+  sink.consume(samples.data(), samples.size());
+  return sink.take();
 }
 
 }  // namespace isurface

@@ -11,6 +11,9 @@ namespace isurface {
 
 namespace {
 
+// Samples after the plan's last one: the filters' window settling, a few cycles.
+constexpr std::size_t kExpectedTail = 256;
+
 // The interpolator does not know the program's name; its errors get it here.
 InputError naming(const InputError& e, const std::string& source) {
   if (!e.diagnostic().file.empty()) return e;
@@ -63,6 +66,7 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   }
   dwellsUpTo(program.moves.size());
   checkRunLength(planned, machine, nullptr, program.source);
+  sink.expect(static_cast<std::size_t>(planned / machine.cycle) + kExpectedTail);
   InterpolationSummary summary;
   try {
     summary = interpolate(program, machine, plan, sink, [&](double f) {

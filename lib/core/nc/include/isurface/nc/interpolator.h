@@ -23,6 +23,9 @@ static_assert(sizeof(SimSample) == 64, "SimSample must match the Biip record lay
 class SampleSink {
  public:
   virtual ~SampleSink() = default;
+  // About how many samples are coming (a hint, given once the plan is known: room can be made
+  // for them at once instead of growing as they come).
+  virtual void expect(std::size_t /*samples*/) {}
   virtual void consume(const SimSample* samples, std::size_t count) = 0;
 };
 

@@ -8,7 +8,20 @@
 
 namespace isurface {
 
+// Samples written straight into a Trajectory's channels as the simulator makes them: no
+// buffer of records beside it, which for a long program is as large as the Trajectory itself.
 // rapidFeed is left 0: set it from the machine when the caller knows it.
+class TrajectorySink : public SampleSink {
+ public:
+  TrajectorySink(double cycle, std::string source);
+  void expect(std::size_t samples) override;
+  void consume(const SimSample* samples, std::size_t count) override;
+  Trajectory take() { return std::move(trajectory_); }
+
+ private:
+  Trajectory trajectory_;
+};
+
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source);
 
 }  // namespace isurface
