@@ -83,6 +83,8 @@ void addPointArray(vtkPolyData* polyData, const std::string& name, const std::ve
   polyData->GetPointData()->AddArray(array);
 }
 
+constexpr float kLineGlowSize = 14, kSampleGlowSize = 26;  // pixels
+
 struct QualityScene::Parts {
   vtkSmartPointer<vtkRenderer> renderer = vtkSmartPointer<vtkRenderer>::New();
   vtkSmartPointer<vtkRenderer> axesCorner = vtkSmartPointer<vtkRenderer>::New();
@@ -141,8 +143,8 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
 
   const float lineCore[3] = {1.0f, 1.0f, 0.85f}, lineRim[3] = {1.0f, 0.15f, 0.55f};
   const float sampleCore[3] = {1.0f, 1.0f, 1.0f}, sampleRim[3] = {1.0f, 0.85f, 0.1f};
-  p.lineGlow = makeGlowActor(p.lineGlowPoints, 14, lineCore, lineRim);
-  p.sampleGlow = makeGlowActor(p.sampleGlowPoints, 26, sampleCore, sampleRim);
+  p.lineGlow = makeGlowActor(p.lineGlowPoints, kLineGlowSize, lineCore, lineRim);
+  p.sampleGlow = makeGlowActor(p.sampleGlowPoints, kSampleGlowSize, sampleCore, sampleRim);
   setHighlight(data.highlight, {});
   p.renderer->AddActor(p.lineGlow);
   p.renderer->AddActor(p.sampleGlow);
@@ -210,6 +212,9 @@ std::string wrapLines(const std::string& text, std::size_t chars) {
 void QualityScene::fitTextToWidth(int width, double drawnScale) {
   Parts& p = *parts_;
   if (width <= 0) return;
+  // The glows are points of so many pixels: as large on the screen, and as cheap, at any scale.
+  p.lineGlow->GetProperty()->SetPointSize(static_cast<float>(kLineGlowSize * drawnScale));
+  p.sampleGlow->GetProperty()->SetPointSize(static_cast<float>(kSampleGlowSize * drawnScale));
   const auto drawn = [&](int size) { return std::max(4, static_cast<int>(std::lround(size * drawnScale))); };
   // The caption spans at most the width left of the legend; the legend's title, centred over
   // the bar, at most what lies right of 0.80 of the width.

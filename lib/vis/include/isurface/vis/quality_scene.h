@@ -75,7 +75,7 @@ class QualityScene {
   void setVisibility(bool surface, bool toolpath, bool points);
   // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
   // them (never larger than the style's font size). A view drawn at `drawnScale` of that width
-  // (and shown stretched back to it) gets its text at that scale too.
+  // (and shown stretched back to it) gets its text and its glows at that scale too.
   void fitTextToWidth(int width, double drawnScale = 1.0);
 
   vtkRenderer* renderer() const;
