@@ -78,8 +78,8 @@ TEST(feedRamps, WithoutRampsEachMoveRunsAtItsIntervalsFeed) {
 TEST(feedRamps, ARampStaysOnThePathBelowTheIntervalFeedsAndWithinItsAcceleration) {
   const PassFeeds pass = planeFilletSlope();
   RampOptions options;
+  options.programmedFeed = 2500;  // ramps in steps of 25 mm/min
   options.rampAcceleration = 100;
-  options.feedStep = 25;
   const FeedPerMove m = feedPerMove(pass, options);
   ASSERT_EQ(m.feeds.size() + 1, m.points.size());
   EXPECT_GT(m.points.size(), pass.points.size() + 20);  // the long moves are cut into a ramp
@@ -107,6 +107,7 @@ TEST(feedRamps, ARampStaysOnThePathBelowTheIntervalFeedsAndWithinItsAcceleration
 
 TEST(feedRamps, APassRunTheOtherWayGetsTheSameFeedsWhereItIs) {
   RampOptions options;
+  options.programmedFeed = 2500;
   options.rampAcceleration = 150;
   options.normalAccelerationLimit = 60;
   const FeedPerMove forward = feedPerMove(planeFilletSlope(), options);
@@ -116,6 +117,7 @@ TEST(feedRamps, APassRunTheOtherWayGetsTheSameFeedsWhereItIs) {
 
 TEST(feedRamps, BendsRunWithinTheNormalAccelerationAskedFor) {
   RampOptions options;
+  options.programmedFeed = 2500;
   options.normalAccelerationLimit = 40;  // mm/s^2: sqrt(40 * 5) = 14.1 mm/s = 849 mm/min on the fillet
   options.rampAcceleration = 100;
   const FeedPerMove m = feedPerMove(planeFilletSlope(), options);
@@ -129,4 +131,29 @@ TEST(feedRamps, BendsRunWithinTheNormalAccelerationAskedFor) {
   options.normalAccelerationLimit = 1e6;  // a limit above what the interval asks changes nothing
   options.rampAcceleration = 100;
   EXPECT_EQ(feedAt(feedPerMove(planeFilletSlope(), options), 21.0), 1200);
+}
+
+// Points a CAM system wrote a tenth of a micrometre apart turn the path by rounding, not by a
+// bend: no feed near zero comes of them, and no bend runs below a fifth of F.
+TEST(feedRamps, RoundingAndTightBendsDoNotStopTheMachine) {
+  PassFeeds pass;
+  pass.points = {Vec3(0, 0, 0), Vec3(5, 0, 0), Vec3(5.0001, 0.0001, 0), Vec3(5.0001, 5, 0), Vec3(5.2, 5.2, 0), Vec3(10, 5.2, 0)};
+  pass.intervalEnd = {pass.points.size() - 1};
+  pass.feeds = {2000};
+  pass.sourceLines.assign(pass.points.size(), 3);
+  RampOptions options;
+  options.programmedFeed = 2000;
+  options.normalAccelerationLimit = 10;
+  options.rampAcceleration = 100;
+  const FeedPerMove m = feedPerMove(pass, options);
+  for (const double f : m.feeds) {
+    EXPECT_GE(f, 0.2 * 2000 - 1e-9);
+    EXPECT_LE(f, 2000);
+  }
+  EXPECT_TRUE(feedPerMove(PassFeeds{}, options).points.empty());
+  // Without a programmed feed there is no step to cut a ramp at: the interval feeds as they are.
+  options.programmedFeed = 0;
+  const FeedPerMove plain = feedPerMove(pass, options);
+  EXPECT_EQ(plain.points.size(), pass.points.size());
+  for (const double f : plain.feeds) EXPECT_NEAR(f, 2000, 1e-9);
 }

@@ -198,6 +198,10 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     }
     if (io.MouseWheel != 0) s.view.mouseWheel(io.MouseWheel, mx, my);
   }
+  if (s.pressedInView && !texture) {  // the view went away under the press
+    s.view.cancelDrag();
+    s.pressedInView = false;
+  }
   if (s.pressedInView && texture) {
     s.view.mouseMove(mx, my);
     if (rectangleTool && ImGui::IsMouseDown(0))

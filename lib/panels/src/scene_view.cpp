@@ -82,6 +82,7 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene, std::shared_p
   vtkGenericOpenGLRenderWindow* window = impl_->window;
   window->GetRenderers()->RemoveAllItems();
   impl_->attached = nullptr;
+  cancelDrag();  // a drag does not carry over to another scene
   scene_ = std::move(scene);
   picking_ = scene_ ? std::move(picking) : nullptr;
   invalidated_ = true;
@@ -170,13 +171,10 @@ unsigned int SceneView::render(int width, int height) {
   if (resized) {
     d.width = width;
     d.height = height;
-    d.interactor->SetSize(drawnWidth(), drawnHeight());
   }
-  if (d.window->GetSize()[0] != drawnWidth() || d.window->GetSize()[1] != drawnHeight()) {
-    d.window->SetSize(drawnWidth(), drawnHeight());
-    scene_->fitTextToWidth(d.width, double(drawnWidth()) / std::max(1, d.width));
-  }
-  if (refitPending_) {
+  applyDrawnSize();
+  // Fitting works in the view's own pixels: it waits for the drag to end.
+  if (refitPending_ && !dragging_) {
     refitPending_ = false;
     fitToSurface();
   }
@@ -227,7 +225,12 @@ void SceneView::fitToSurface() {
 
 std::vector<unsigned char> SceneView::snapshot(int width, int height) {
   invalidated_ = true;
-  if (!render(width, height)) return {};
+  // Drawn at the size asked for, the full surface, even in the middle of a drag.
+  const bool wasDragging = dragging_;
+  dragging_ = false;
+  const unsigned int drawn = render(width, height);
+  dragging_ = wasDragging;
+  if (!drawn) return {};
   Impl& d = *impl_;
   vtkOpenGLFramebufferObject* frame = d.window->GetDisplayFramebuffer();
   if (!frame) return {};
@@ -241,6 +244,7 @@ std::vector<unsigned char> SceneView::snapshot(int width, int height) {
   frame->UnBind(GL_READ_FRAMEBUFFER);
   d.window->GetState()->Pop();
   invalidated_ = true;  // the next frame is drawn at the panel's own size again
+  applyDrawnSize();
   return rgb;
 }
 
@@ -265,6 +269,22 @@ app_model::ScreenProjection SceneView::projection() const {
 int SceneView::drawnWidth() const { return std::max(1, impl_->width / (dragging_ ? kDragScale : 1)); }
 int SceneView::drawnHeight() const { return std::max(1, impl_->height / (dragging_ ? kDragScale : 1)); }
 
+void SceneView::applyDrawnSize() {
+  Impl& d = *impl_;
+  if (d.width <= 0 || d.height <= 0) return;
+  d.interactor->SetSize(drawnWidth(), drawnHeight());
+  const int* size = d.window->GetSize();
+  if (size[0] == drawnWidth() && size[1] == drawnHeight()) return;
+  d.window->SetSize(drawnWidth(), drawnHeight());
+  if (scene_) scene_->fitTextToWidth(d.width, double(drawnWidth()) / d.width);
+}
+
+void SceneView::cancelDrag() {
+  if (pressed_) impl_->style->StopState();
+  pressed_ = dragging_ = false;
+  applyDrawnSize();
+}
+
 void SceneView::setEventPosition(double x, double y) {
   const double scale = dragging_ ? 1.0 / kDragScale : 1.0;
   impl_->interactor->SetEventInformationFlipY(static_cast<int>(std::lround(x * scale)),
@@ -275,7 +295,7 @@ void SceneView::mouseMove(double x, double y) {
   // A drag (not a click) shows the coarse surface, drawn smaller, until the button is let go.
   if (pressed_ && !dragging_ && (std::abs(x - pressX_) > 2 || std::abs(y - pressY_) > 2)) {
     dragging_ = true;
-    impl_->interactor->SetSize(drawnWidth(), drawnHeight());
+    applyDrawnSize();
     setEventPosition(pressX_, pressY_);  // the drag's first step is measured from the press
   }
   setEventPosition(x, y);
@@ -295,7 +315,7 @@ void SceneView::mouseButton(int button, bool pressed, double x, double y) {
   }
   if (!pressed && dragging_) {
     dragging_ = false;
-    i->SetSize(drawnWidth(), drawnHeight());
+    applyDrawnSize();  // a pick right after works in the view's own pixels
   }
 }
 

@@ -304,7 +304,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 8;
+  static constexpr std::size_t kExpectedCandidates = 11;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -342,8 +342,9 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
       deviationTarget = std::min(r->regionBefore.deviationP99, r->wholeBefore.deviationP99);
     if (loop.done()) break;
   }
-  if (!loop.done() && deviationTarget) {
-    const double limit = kServoBoundShare * *deviationTarget / servoDeviationPerNormalAcceleration(machine);
+  const double limit = deviationTarget ? kServoBoundShare * *deviationTarget / servoDeviationPerNormalAcceleration(machine) : 0.0;
+  // A run that deviated by nothing (feedback equal to the command) gives no bound to plan to.
+  if (!loop.done() && std::isfinite(limit) && limit > 0) {
     for (const double ramp : kRampAccelerations) {
       loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
       if (loop.done()) break;

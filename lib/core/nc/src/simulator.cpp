@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <stdexcept>
@@ -11,8 +12,10 @@ namespace isurface {
 
 namespace {
 
-// Samples after the plan's last one: the filters' window settling, a few cycles.
-constexpr std::size_t kExpectedTail = 256;
+// Samples after the plan's last one besides the filters' window, and the most a sink is told
+// to expect (a hint: more than a run could hold in memory is not worth making room for).
+constexpr std::size_t kExpectedTail = 16;
+constexpr std::size_t kLargestExpectation = std::size_t(1) << 32;
 
 // The interpolator does not know the program's name; its errors get it here.
 InputError naming(const InputError& e, const std::string& source) {
@@ -66,7 +69,9 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   }
   dwellsUpTo(program.moves.size());
   checkRunLength(planned, machine, nullptr, program.source);
-  sink.expect(static_cast<std::size_t>(planned / machine.cycle) + kExpectedTail);
+  // The filters' window settles after the plan's last sample.
+  const double expected = (planned + plan.filterTime1 + plan.filterTime2) / machine.cycle + kExpectedTail;
+  if (std::isfinite(expected) && expected < double(kLargestExpectation)) sink.expect(static_cast<std::size_t>(expected));
   InterpolationSummary summary;
   try {
     summary = interpolate(program, machine, plan, sink, [&](double f) {

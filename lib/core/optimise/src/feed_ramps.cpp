@@ -11,14 +11,17 @@ namespace isurface {
 namespace {
 
 constexpr double kShortestRampPiece = 0.05;  // mm: finer pieces only multiply lines
+constexpr double kShortestBendMove = 1e-3;   // mm: a turn beside a shorter move is rounding
+constexpr double kFeedStepShare = 0.01;      // of the programmed feed, from a ramp's move to the next
+constexpr double kLowestFeedShare = 0.2;     // of the programmed feed, no bend runs slower
 
 // The feed each move may run at before ramping: its interval's (mm/s).
-std::vector<double> intervalFeedPerMove(const PassFeeds& pass) {
+std::vector<double> intervalFeedPerMove(const PassFeeds& pass, double programmedFeed) {
   std::vector<double> feeds;
   std::size_t interval = 0;
   for (std::size_t k = 1; k < pass.points.size(); ++k) {
     while (interval + 1 < pass.intervalEnd.size() && k > pass.intervalEnd[interval]) ++interval;
-    feeds.push_back(mmPerMinToMmPerS(pass.feeds.empty() ? 0.0 : pass.feeds[std::min(interval, pass.feeds.size() - 1)]));
+    feeds.push_back(mmPerMinToMmPerS(pass.feeds.empty() ? programmedFeed : pass.feeds[std::min(interval, pass.feeds.size() - 1)]));
   }
   return feeds;
 }
@@ -31,17 +34,17 @@ std::vector<double> curvatureAtPoints(const std::vector<Vec3>& points) {
   for (std::size_t k = 1; k + 1 < points.size(); ++k) {
     const Vec3 a = points[k] - points[k - 1], b = points[k + 1] - points[k];
     const double la = a.norm(), lb = b.norm();
-    if (la < kLengthEpsilon || lb < kLengthEpsilon) continue;
+    if (la < kShortestBendMove || lb < kShortestBendMove) continue;
     curvature[k] = 2.0 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)) / (la + lb);
   }
   return curvature;
 }
 
-void limitNormalAcceleration(const std::vector<Vec3>& points, double limit, std::vector<double>& feeds) {
+void limitNormalAcceleration(const std::vector<Vec3>& points, double limit, double lowest, std::vector<double>& feeds) {
   const std::vector<double> curvature = curvatureAtPoints(points);
   for (std::size_t k = 0; k < feeds.size(); ++k) {
     const double largest = std::max(curvature[k], curvature[k + 1]);
-    if (largest > kZeroCurvature) feeds[k] = std::min(feeds[k], std::sqrt(limit / largest));
+    if (largest > kZeroCurvature) feeds[k] = std::min(feeds[k], std::max(lowest, std::sqrt(limit / largest)));
   }
 }
 
@@ -80,13 +83,18 @@ std::vector<double> rampBreaks(double length, double feed, double atStart, doubl
 
 FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
   FeedPerMove out;
-  std::vector<double> feeds = intervalFeedPerMove(pass);
+  if (pass.points.empty()) return out;
+  const double programmed = std::isfinite(options.programmedFeed) && options.programmedFeed > 0 ? options.programmedFeed : 0.0;
+  std::vector<double> feeds = intervalFeedPerMove(pass, programmed);
   out.points = {pass.points.front()};
   out.sourceLines = {0};
   if (feeds.empty()) return out;
-  if (options.normalAccelerationLimit > 0) limitNormalAcceleration(pass.points, options.normalAccelerationLimit, feeds);
-  const double a = options.rampAcceleration;
-  const double step = mmPerMinToMmPerS(options.feedStep);
+  const bool limited = programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0;
+  if (limited)
+    limitNormalAcceleration(pass.points, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed), feeds);
+  // Ramps need a step to cut them at: none without a programmed feed.
+  const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
+  const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
   const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, a) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
     const Vec3 &from = pass.points[k], &to = pass.points[k + 1];

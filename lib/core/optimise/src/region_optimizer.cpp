@@ -23,8 +23,6 @@ namespace isurface {
 
 namespace {
 
-constexpr double kRampFeedStep = 0.01;  // share of the programmed feed between a ramp's moves
-
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
 std::vector<std::string_view> splitLines(const std::string& text) {
@@ -343,8 +341,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
     const double feed = first.feed;
-    const FeedPerMove moves =
-        feedPerMove(plans[r], {options.normalAccelerationLimit, options.rampAcceleration, kRampFeedStep * feed});
+    const FeedPerMove moves = feedPerMove(plans[r], {feed, options.normalAccelerationLimit, options.rampAcceleration});
     const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;

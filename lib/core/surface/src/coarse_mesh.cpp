@@ -17,7 +17,8 @@ double passLength(const Trajectory& t, const Pass& pass) {
   std::size_t previous = pass.begin;
   for (std::size_t k = 1; k <= kLengthProbes; ++k) {
     const std::size_t i = pass.begin + (pass.size() - 1) * k / kLengthProbes;
-    length += (t.commanded(i) - t.commanded(previous)).norm();
+    const double step = (t.commanded(i) - t.commanded(previous)).norm();
+    if (std::isfinite(step)) length += step;
     previous = i;
   }
   return length;
@@ -28,6 +29,7 @@ double passLength(const Trajectory& t, const Pass& pass) {
 double passSpacing(const Trajectory& t, const std::vector<Pass>& passes) {
   std::vector<double> gaps;
   for (std::size_t k = 1; k < passes.size(); ++k) {
+    if (passes[k - 1].size() == 0 || passes[k].size() == 0) continue;
     const Vec3 a = t.commanded(passes[k - 1].begin + passes[k - 1].size() / 2);
     const Vec3 b = t.commanded(passes[k].begin + passes[k].size() / 2);
     const double gap = (b - a).norm();
@@ -60,6 +62,7 @@ SurfaceMesh buildCoarseSurfaceMesh(const Trajectory& samples, const PassSet& pas
   kept.pattern = passes.pattern;
   std::size_t keptSamples = 0;
   for (std::size_t k = 0; k < all.size(); k += passStep) kept.passes.push_back(all[k]), keptSamples += all[k].size();
+  if (!all.empty() && (all.size() - 1) % passStep != 0) kept.passes.push_back(all.back()), keptSamples += all.back().size();  // the far edge
   options.gapLimit *= double(passStep);
   options.stride = std::max<std::size_t>(1, (keptSamples + vertexBudget - 1) / vertexBudget);
   return buildSurfaceMesh(samples, kept, options);

@@ -65,6 +65,8 @@ class SceneView {
   void mouseButton(int button, bool pressed, double x, double y);  // 0 left, 1 right, 2 middle
   void mouseWheel(double steps, double x, double y);
   bool interacting() const { return dragging_; }
+  // Ends a press or a drag whose release will not come (the view stopped being drawn).
+  void cancelDrag();
   // Zooms to a rectangle given in view pixels.
   void zoomToRectangle(double x0, double y0, double x1, double y1);
   // The surface under a pixel, if any: the point (mm) and the triangle of the picking index.
@@ -81,6 +83,7 @@ class SceneView {
   int drawnWidth() const;
   int drawnHeight() const;
   void setEventPosition(double x, double y);
+  void applyDrawnSize();  // the interactor's, the window's and the text's, for drawnWidth()
   bool pressed_ = false, dragging_ = false;
   double pressX_ = 0, pressY_ = 0;
   bool invalidated_ = true;

@@ -21,18 +21,21 @@ struct FeedPerMove {
 };
 
 struct RampOptions {
+  double programmedFeed = 0;    // mm/min, the pass's F: the feed of a pass with no intervals
   // mm/s^2: no move runs faster than sqrt(limit / curvature), the curvature being the larger
-  // at its two ends (a point's turn over the mean length of the moves it joins); 0: no limit.
+  // at its two ends (a point's turn over the mean length of the moves it joins; a turn beside
+  // a move under a micrometre, rounding in the program's digits, is no bend); 0: no limit.
   // Taken at every point rather than per interval: where a bend is, and so how fast it may be
-  // run, does not depend on which way a pass runs, as the interval boundaries do.
+  // run, does not depend on which way a pass runs, as the interval boundaries do. No move is
+  // slowed below a fifth of the programmed feed, as no interval is.
   double normalAccelerationLimit = 0;
   double rampAcceleration = 0;  // mm/s^2, the ramps' tangential acceleration; 0: steps
-  double feedStep = 25;         // mm/min, the change of feed from one move of a ramp to the next
 };
 
-// No move's feed is above its interval's; a ramp lies in the faster stretch. Ramps are cut at
-// whole multiples of the feed step, so that neighbouring passes whose ramps differ a little
-// still share their feeds.
+// No move's feed is above its interval's; a ramp lies in the faster stretch and changes the
+// feed by 1 % of the programmed feed from one move to the next. Ramps are cut at whole
+// multiples of that step, so that neighbouring passes whose ramps differ a little still share
+// their feeds.
 FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options);
 
 }  // namespace isurface
