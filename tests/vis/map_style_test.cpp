@@ -82,10 +82,10 @@ TEST(mapStyle, TextInANarrowViewIsMadeToFit) {
   vis::QualityScene scene(map.data, map.style);
   vtkTextActor* caption = captionOf(scene);
   ASSERT_NE(caption, nullptr);
-  scene.fitTextToWidth(1600);
+  scene.fitOverlaysToWidth(1600);
   EXPECT_EQ(caption->GetTextProperty()->GetFontSize(), map.style.fontSize);  // room enough: as styled
   const int wideLegend = legendOf(scene)->GetTitleTextProperty()->GetFontSize();
-  scene.fitTextToWidth(300);
+  scene.fitOverlaysToWidth(300);
   EXPECT_LT(caption->GetTextProperty()->GetFontSize(), map.style.fontSize);
   EXPECT_LT(legendOf(scene)->GetTitleTextProperty()->GetFontSize(), wideLegend);
   // Each caption line now fits: at most 0.8 of 300 pixels at the font's average advance.

@@ -87,7 +87,7 @@ void SceneView::setScene(std::shared_ptr<vis::QualityScene> scene, std::shared_p
   picking_ = scene_ ? std::move(picking) : nullptr;
   invalidated_ = true;
   if (!scene_) return;
-  if (impl_->width > 0) scene_->fitTextToWidth(impl_->width);
+  if (impl_->width > 0) scene_->fitOverlaysToWidth(impl_->width);
   scene_->attachTo(window);
   impl_->attached = scene_->renderer();
   impl_->interactor->GetInteractorStyle()->SetDefaultRenderer(scene_->renderer());
@@ -276,7 +276,7 @@ void SceneView::applyDrawnSize() {
   const int* size = d.window->GetSize();
   if (size[0] == drawnWidth() && size[1] == drawnHeight()) return;
   d.window->SetSize(drawnWidth(), drawnHeight());
-  if (scene_) scene_->fitTextToWidth(d.width, double(drawnWidth()) / d.width);
+  if (scene_) scene_->fitOverlaysToWidth(d.width, double(drawnWidth()) / d.width);
 }
 
 void SceneView::cancelDrag() {

@@ -209,7 +209,7 @@ std::string wrapLines(const std::string& text, std::size_t chars) {
 
 }  // namespace
 
-void QualityScene::fitTextToWidth(int width, double drawnScale) {
+void QualityScene::fitOverlaysToWidth(int width, double drawnScale) {
   Parts& p = *parts_;
   if (width <= 0) return;
   // The glows are points of so many pixels: as large on the screen, and as cheap, at any scale.

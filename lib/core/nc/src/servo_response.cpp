@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isurface/base/units.h"
 #include "isurface/nc/servo.h"
 
 namespace isurface {
@@ -15,7 +16,6 @@ double circleResponse(const Machine& machine, int first, int second) {
   constexpr double kRadius = 5.0;       // mm
   constexpr double kSpeed = 20.0;       // mm/s: a normal acceleration of 80 mm/s^2
   constexpr int kRevolutions = 3;
-  constexpr double kPi = 3.14159265358979323846;
   const double omega = kSpeed / kRadius;  // rad/s
   const double period = 2 * kPi / omega;
   const long steps = static_cast<long>(std::ceil(kRevolutions * period / machine.cycle));

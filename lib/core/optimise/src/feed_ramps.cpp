@@ -26,16 +26,16 @@ std::vector<double> intervalFeedPerMove(const PassFeeds& pass, double programmed
   return feeds;
 }
 
-// The path's curvature at each point (1/mm): its turn over the mean length of the two moves it
-// joins; 0 at the ends and beside a move of no length. (The junction of a long straight move
-// and a bend has little: the bend's feed is set by its own short moves.)
+// The path's curvature at each point (1/mm): one over the radius of the circle through it and
+// its neighbours (equation 1 of the paper); 0 at the ends and beside a move under a micrometre.
+// (The junction of a long straight move and a bend has little: the bend's feed is set by its
+// own short moves.)
 std::vector<double> curvatureAtPoints(const std::vector<Vec3>& points) {
   std::vector<double> curvature(points.size(), 0.0);
   for (std::size_t k = 1; k + 1 < points.size(); ++k) {
-    const Vec3 a = points[k] - points[k - 1], b = points[k + 1] - points[k];
-    const double la = a.norm(), lb = b.norm();
-    if (la < kShortestBendMove || lb < kShortestBendMove) continue;
-    curvature[k] = 2.0 * std::acos(std::clamp(a.dot(b) / (la * lb), -1.0, 1.0)) / (la + lb);
+    if ((points[k] - points[k - 1]).norm() < kShortestBendMove || (points[k + 1] - points[k]).norm() < kShortestBendMove)
+      continue;
+    curvature[k] = 1.0 / threePointRadius(points[k - 1], points[k], points[k + 1]);
   }
   return curvature;
 }

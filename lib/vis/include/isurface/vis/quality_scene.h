@@ -76,7 +76,7 @@ class QualityScene {
   // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
   // them (never larger than the style's font size). A view drawn at `drawnScale` of that width
   // (and shown stretched back to it) gets its text and its glows at that scale too.
-  void fitTextToWidth(int width, double drawnScale = 1.0);
+  void fitOverlaysToWidth(int width, double drawnScale = 1.0);
 
   vtkRenderer* renderer() const;
   vtkPolyData* surface() const;  // points, triangles, "value" and "pass_coord" arrays

@@ -23,8 +23,9 @@ struct FeedPerMove {
 struct RampOptions {
   double programmedFeed = 0;    // mm/min, the pass's F: the feed of a pass with no intervals
   // mm/s^2: no move runs faster than sqrt(limit / curvature), the curvature being the larger
-  // at its two ends (a point's turn over the mean length of the moves it joins; a turn beside
-  // a move under a micrometre, rounding in the program's digits, is no bend); 0: no limit.
+  // at its two ends (one over the radius of the circle through a point and its neighbours; a
+  // turn beside a move under a micrometre, rounding in the program's digits, is no bend); 0: no
+  // limit.
   // Taken at every point rather than per interval: where a bend is, and so how fast it may be
   // run, does not depend on which way a pass runs, as the interval boundaries do. No move is
   // slowed below a fifth of the programmed feed, as no interval is.

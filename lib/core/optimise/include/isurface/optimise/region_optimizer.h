@@ -31,8 +31,8 @@ struct OptimizeOptions {
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
   double feedScale = 1.0;         // share of each interval's planned feed that is programmed
-  // mm/s^2: the centripetal acceleration v^2 * average curvature no interval exceeds (the
-  // paper's average-curvature speed with this acceleration); 0: only the machine's limits.
+  // mm/s^2: the centripetal acceleration v^2 * curvature no move of a bend exceeds, taken at
+  // every point (feed_ramps.h); 0: only the machine's limits.
   double normalAccelerationLimit = 0;
   // mm/s^2: changes of feed between intervals spread into ramps at this acceleration
   // (feed_ramps.h); 0: one step at the interval's end.
