@@ -89,6 +89,7 @@ int runRender(const RenderOptions& o) {
   const auto start = std::chrono::steady_clock::now();
   const auto [width, height] = parseSize(o.size);
   vis::QualityMapRequest request = makeRequest(o);
+  request.maxVertices = vis::vertexBudgetForPixels(std::size_t(width) * std::size_t(height));
   // A dump alone (no program: a slow tool servo path, a machine trace) is shown as it is.
   const bool dumpOnly = o.biip.empty() && isBiipFile(o.gcode);
   const std::string dump = dumpOnly ? o.gcode : o.biip;

@@ -48,6 +48,7 @@ int runSnapshot(const SnapshotOptions& o) {
   panels::HeadlessUi ui(width, height, app_model::Settings{});
   panels::Inspector& inspector = ui.inspector();
   if (!o.machine.empty()) inspector.useMachine(loadMachine(o.machine), o.machine);
+  ui.frame();  // laid out first: a map is made for the view's size
   for (const RunFiles& run : pairRunFiles(o.files)) {
     std::vector<std::string> files;
     for (const std::string& f : {run.program, run.dump})

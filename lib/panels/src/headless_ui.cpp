@@ -42,6 +42,8 @@ void HeadlessUi::mouse(float x, float y, bool leftDown) {
   io.MouseDown[0] = leftDown;
 }
 
+void HeadlessUi::wheel(float steps) { ImGui::GetIO().MouseWheel += steps; }
+
 void HeadlessUi::key(int imguiKey, bool down) { ImGui::GetIO().KeysDown[kNamedKeys + imguiKey] = down; }
 
 void HeadlessUi::letter(char upperCase, bool down) { ImGui::GetIO().KeysDown[static_cast<unsigned char>(upperCase)] = down; }

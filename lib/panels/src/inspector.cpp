@@ -36,6 +36,8 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   // llvmpipe spends about 0.5 ms a thousand triangles on this machine: 30,000 vertices (60,000
   // triangles, thinned along and across the passes) leave a drag frame under 67 ms.
   r.coarseVertices = 30'000;
+  // Half a vertex a pixel of the view, as it was last drawn; closer views are refined.
+  if (refinement.vertexBudget > 0) r.maxVertices = refinement.vertexBudget;
   return r;
 }
 
@@ -330,6 +332,7 @@ void Inspector::frame() {
 bool Inspector::busy() const {
   return state_->job.running() || state_->job.finishedPending() || !state_->queuedRuns.empty();
 }
+bool Inspector::refining() const { return state_->refinement.pending(); }
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }
 
 void Inspector::waitUntilIdle() {

@@ -32,6 +32,17 @@ nlohmann::json machineJson(const Machine& m) {
 
 }  // namespace
 
+// The finer surface shown where the camera looks, if any, and whether one is being made.
+static nlohmann::json closeUpJson(const ViewRefinement& r) {
+  nlohmann::json out = {{"building", r.building.valid()}};
+  if (r.shown)
+    out.update({{"vertices", r.shown->mesh->vertexSample.size()},
+                {"stride", r.shown->stride},
+                {"lower", pointJson(r.shown->lower)},
+                {"upper", pointJson(r.shown->upper)}});
+  return out;
+}
+
 std::string Inspector::describe() const {
   const State& s = *state_;
   nlohmann::json documents = nlohmann::json::array();
@@ -63,7 +74,8 @@ std::string Inspector::describe() const {
     controls["surface"] = {view->second[0] + r->x0, view->second[1] + r->y0, view->second[0] + r->x1, view->second[1] + r->y1};
   nlohmann::json camera = nlohmann::json::object();
   if (const auto pose = s.view.camera())
-    camera = {{"position", pointJson(pose->position)}, {"focal_point", pointJson(pose->focalPoint)}, {"view_up", pointJson(pose->viewUp)}};
+    camera = {{"position", pointJson(pose->position)}, {"focal_point", pointJson(pose->focalPoint)}, {"view_up", pointJson(pose->viewUp)},
+              {"parallel_scale_mm", pose->parallelScale}, {"view_angle_deg", pose->viewAngle}};
   nlohmann::json windows = {{"machine", s.machineOpen},
                             {"locate", s.locateOpen},
                             {"optimise", s.optimiseDialogOpen},
@@ -75,7 +87,9 @@ std::string Inspector::describe() const {
            {"unit", doc->map.style.unit},
            {"colour_map", doc->map.style.colorMap},
            {"caption", doc->map.style.caption},
-           {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"}};
+           {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"},
+           {"vertices", doc->map.mesh ? doc->map.mesh->vertexSample.size() : 0},
+           {"close_up", closeUpJson(s.refinement)}};
   const nlohmann::json out = {{"documents", documents},
                               {"map", map},
                               {"length_unit", s.units().lengthUnit()},

@@ -27,6 +27,7 @@
 #include "isurface/vis/quality_map.h"
 #include "isurface/workflow/run_inputs.h"
 #include "display_units.h"
+#include "view_refinement.h"
 
 namespace isurface::panels {
 
@@ -128,6 +129,7 @@ struct Inspector::State {
   explicit State(GlHooks hooks) : view(hooks), afterView(hooks) {}
 
   SceneView view;
+  ViewRefinement refinement;                    // of `view`'s surface where the camera looks
   SceneView afterView;                          // the re-optimised map beside it
   std::shared_ptr<Comparison> comparison;       // of the active document
   std::shared_ptr<RunComparisonView> runComparison;  // of the active document
@@ -279,6 +281,9 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width);
 void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h);
 void drawColourControls(Inspector::State& s, float x, float y, float w, float h);
 void drawSceneView(Inspector::State& s, float x, float y, float w, float h);
+// Before the main view is drawn at this size: a close-up where the camera has come to rest,
+// taken away when the camera looks beyond it (view_refinement.h).
+void refineWhereTheCameraLooks(Inspector::State& s, int viewWidth, int viewHeight);
 void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h);
 void drawGcodePane(Inspector::State& s, float x, float y, float w, float h);
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h);

@@ -138,6 +138,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
   s.controls["view"] = {origin.x, origin.y, origin.x + size.x, origin.y + size.y};
+  refineWhereTheCameraLooks(s, static_cast<int>(size.x), static_cast<int>(size.y));
   const unsigned int texture = s.view.render(static_cast<int>(size.x), static_cast<int>(size.y));
   if (texture) {
     drawViewFrame(texture, size);
@@ -171,6 +172,9 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     }
     drawMeasure(s, draw, origin);
     drawScaleBar(s, draw, origin, size);
+    if (s.refinement.building.valid())
+      draw->AddText(ImVec2(origin.x + size.x * 0.45f, origin.y + size.y - 2 * ImGui::GetTextLineHeightWithSpacing()),
+                    IM_COL32(30, 30, 36, 255), "refining the surface in sight...");
     // The box that chose the region, while the dialog it filled is open.
     const app_model::ScreenRectangle& r = s.optimiseBoxOnView;
     if (s.optimiseBox && s.optimiseDialogOpen && r.x0 != r.x1 && r.y0 != r.y1) {

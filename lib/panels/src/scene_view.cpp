@@ -133,6 +133,8 @@ std::optional<SceneView::CameraPose> SceneView::camera() const {
   c->GetPosition(pose.position.data());
   c->GetFocalPoint(pose.focalPoint.data());
   c->GetViewUp(pose.viewUp.data());
+  pose.parallelScale = c->GetParallelProjection() ? c->GetParallelScale() : 0;
+  pose.viewAngle = c->GetViewAngle();
   return pose;
 }
 

@@ -55,7 +55,24 @@ std::vector<float> scalarsFor(const QualityMapRequest& request, const Trajectory
   return std::move(*values);
 }
 
+// The request's values are lengths or rates of them that it asks to see in inches.
+bool shownInInch(const QualityMapRequest& request) {
+  if (!request.inch || request.sampleValues) return false;
+  const std::string unit = request.channel.empty() ? quantityInfo(request.quantity).unit : channelUnit(request.channel);
+  return !inchUnitOf(unit).empty();
+}
+
+void toInch(std::vector<float>& values) {
+  for (float& v : values) v = static_cast<float>(v / kMmPerInch);
+}
+
 }  // namespace
+
+std::vector<float> vertexValuesShown(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh) {
+  std::vector<float> values = scalarsFor(request, samples, mesh);
+  if (shownInInch(request)) toInch(values);
+  return values;
+}
 
 std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
   std::vector<std::vector<Vec3>> lines;
@@ -94,6 +111,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
                                 std::string("no feedback channels (fb_x fb_y fb_z): cannot show ") +
                                     (request.feedbackSurface ? "the feedback surface" : info.label)});
   QualityMap map;
+  map.request = request;
   PassOptions passOptions;
   passOptions.program = program;
   passOptions.pattern = request.pattern;
@@ -153,11 +171,8 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   MapStyle& style = map.style;
   style.quantityLabel = request.sampleValues ? request.valuesLabel : request.channel.empty() ? info.label : request.channel;
   style.unit = request.sampleValues ? request.valuesUnit : request.channel.empty() ? info.unit : channelUnit(request.channel);
-  if (request.inch && !request.sampleValues && !inchUnitOf(style.unit).empty()) {
+  if (shownInInch(request)) {
     // Before the range is taken: a fixed range is given in the units shown.
-    const auto toInch = [](std::vector<float>& values) {
-      for (float& v : values) v = static_cast<float>(v / kMmPerInch);
-    };
     toInch(map.data.scalars);
     toInch(map.data.coarseScalars);
     for (std::vector<float>& values : map.data.toolpathScalars) toInch(values);

@@ -27,6 +27,7 @@
 #include <cmath>
 
 #include "isurface/vis/color_map.h"
+#include "isurface/vis/detail_surface.h"
 #include "scene_actors.h"
 
 // VTK's rendering classes come from object factories that these register; without them every
@@ -90,7 +91,8 @@ struct QualityScene::Parts {
   vtkSmartPointer<vtkRenderer> axesCorner = vtkSmartPointer<vtkRenderer>::New();
   vtkSmartPointer<vtkPolyData> surface, coarseSurface;
   vtkSmartPointer<vtkLookupTable> table;
-  vtkSmartPointer<vtkActor> surfaceActor, coarseActor, toolpathActor, lineGlow, sampleGlow, pointsActor;
+  vtkSmartPointer<vtkActor> surfaceActor, coarseActor, detailActor, toolpathActor, lineGlow, sampleGlow, pointsActor;
+  MapStyle style;
   vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   bool coarse = false, showSurface = true;
@@ -108,6 +110,7 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.renderer->SetBackgroundAlpha(1.0);
   p.renderer->SetUseFXAA(false);
 
+  p.style = style;
   p.table = makeLookupTable(style.colorMap, style.range.lo, style.range.hi);
   p.surface = surfacePolyData(data.positions, *data.mesh);
   addPointArray(p.surface, "value", data.scalars);
@@ -245,9 +248,26 @@ void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector
 void QualityScene::useCoarseSurface(bool coarse) {
   Parts& p = *parts_;
   p.coarse = coarse && p.coarseActor;
-  p.surfaceActor->SetVisibility(p.showSurface && !p.coarse);
+  p.surfaceActor->SetVisibility(p.showSurface && !p.coarse && !p.detailActor);
+  if (p.detailActor) p.detailActor->SetVisibility(p.showSurface && !p.coarse);
   if (p.coarseActor) p.coarseActor->SetVisibility(p.showSurface && p.coarse);
 }
+
+void QualityScene::setDetailSurface(const DetailSurface* detail) {
+  Parts& p = *parts_;
+  if (p.detailActor) p.renderer->RemoveActor(p.detailActor);
+  p.detailActor = nullptr;
+  if (detail && detail->mesh) {
+    vtkSmartPointer<vtkPolyData> poly = surfacePolyData(detail->positions, *detail->mesh);
+    addPointArray(poly, "value", detail->scalars);
+    poly->GetPointData()->SetActiveScalars("value");
+    p.detailActor = makeSurfaceActor(poly, p.table, p.style, p.style.passWires);
+    p.renderer->AddActor(p.detailActor);
+  }
+  useCoarseSurface(p.coarse);
+}
+
+bool QualityScene::showsDetail() const { return parts_->detailActor != nullptr; }
 
 void QualityScene::setVisibility(bool surface, bool toolpath, bool points) {
   Parts& p = *parts_;

@@ -48,11 +48,14 @@ std::string printableName(const unsigned char* p, std::size_t n) {
   return out;
 }
 
+// Records scanned between two releases of their pages at open: 16 MB of a 64-byte record.
+constexpr std::size_t kScanRecords = std::size_t(1) << 18;
+
 std::size_t countNonFinite(const BiipChannelView& x, const BiipChannelView& y, const BiipChannelView& z,
-                           std::size_t n) {
+                           std::size_t begin, std::size_t end) {
   std::size_t bad = 0;
   // v - v is 0 for a finite v and NaN for NaN or an infinity: no branch per sample.
-  for (std::size_t i = 0; i < n; ++i) {
+  for (std::size_t i = begin; i < end; ++i) {
     const double a = x[i], b = y[i], c = z[i];
     const double s = (a - a) + (b - b) + (c - c);
     bad += static_cast<std::size_t>(s != s);
@@ -118,6 +121,18 @@ void BiipReader::parse() {
   parseMetadata(kBiipFixedHeaderBytes + std::size_t(kBiipChannelEntryBytes) * channelCount, metadataBytes);
   countRecords();
   checkIntact();
+}
+
+void BiipReader::releaseRecords(std::size_t begin, std::size_t end) const {
+  if (data_ == nullptr || begin >= end) return;
+  static const std::size_t page = static_cast<std::size_t>(::sysconf(_SC_PAGESIZE));
+  const std::size_t recordBytes = header_.recordBytes;
+  // Only whole pages inside the range: a page shared with a record outside it stays.
+  std::size_t first = header_.headerBytes + begin * recordBytes;
+  std::size_t last = end >= records_ ? size_ : header_.headerBytes + end * recordBytes;
+  first = (first + page - 1) / page * page;
+  last = last / page * page;
+  if (last > first) ::madvise(const_cast<unsigned char*>(data_) + first, last - first, MADV_DONTNEED);
 }
 
 void BiipReader::checkIntact() const {
@@ -302,7 +317,13 @@ void BiipReader::countRecords() {
 
   t_ = channel("t");
   if (t_.valid()) checkTimeChannel();
-  nonFinite_ = countNonFinite(channel("x"), channel("y"), channel("z"), records_);
+  const BiipChannelView x = channel("x"), y = channel("y"), z = channel("z");
+  nonFinite_ = 0;
+  for (std::size_t begin = 0; begin < records_; begin += kScanRecords) {
+    const std::size_t end = std::min(records_, begin + kScanRecords);
+    nonFinite_ += countNonFinite(x, y, z, begin, end);
+    releaseRecords(begin, end);
+  }
   if (nonFinite_ > 0) {
     warnings_.push_back(std::to_string(nonFinite_) + (nonFinite_ == 1 ? " sample" : " samples") +
                         " with non-finite x/y/z " + (nonFinite_ == 1 ? "is" : "are") + " kept out of geometry");
@@ -319,6 +340,7 @@ void BiipReader::checkTimeChannel() const {
     if (t < previous)
       refuse(fmt::format("record {}: time t runs backwards ({:.9g} s after {:.9g} s)", i, t, previous));
     previous = t;
+    if ((i + 1) % kScanRecords == 0) releaseRecords(i + 1 - kScanRecords, i + 1);
   }
   if (records_ > 1 && !(t_[records_ - 1] > t_[0]))
     refuse(fmt::format("time t stands still ({:.9g} s in all {} records)", t_[0], records_));

@@ -99,6 +99,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
       for (std::size_t i = begin; i < begin + count; ++i) out.block[i] = clampToU32(block.integer(i));
     if (!t.valid())
       for (std::size_t i = begin; i < begin + count; ++i) out.time[i] = header.t0Seconds + double(i) * header.cycleSeconds;
+    reader.releaseRecords(begin, begin + count);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));
       nextReport += kProgressRecords;

@@ -24,6 +24,8 @@ class HeadlessUi {
   panels::Inspector& inspector() { return *inspector_; }
   // Mouse state for the next frame, in window pixels.
   void mouse(float x, float y, bool leftDown);
+  // The mouse wheel turned by `steps` notches (positive: away from the user, zooming in) in the next frame.
+  void wheel(float steps);
   // A named key (an ImGuiKey_ value: arrows, pages, Home, End, Escape, ...) held or not for the
   // next frame.
   void key(int imguiKey, bool down);

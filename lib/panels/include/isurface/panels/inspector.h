@@ -37,6 +37,9 @@ class Inspector {
   void frame();
 
   bool busy() const;
+  // The view waits to refine the surface where the camera rests, or is refining it: frames
+  // are wanted though no input comes.
+  bool refining() const;
   std::size_t documentCount() const;
   // Lets background work finish and takes over its results (for snapshots and tests).
   void waitUntilIdle();

@@ -55,8 +55,11 @@ class SceneView {
   // Where the surface's bounding box stands in the view (pixels from its top-left corner).
   std::optional<app_model::ScreenRectangle> surfaceOnScreen() const;
   // Where the camera stands and what it looks at (mm), and which way is up on the screen.
+  // How much it takes in: half the view's height (mm) in a parallel projection (0 in a
+  // perspective one), and the perspective's angle (degrees).
   struct CameraPose {
     Vec3 position, focalPoint, viewUp;
+    double parallelScale = 0, viewAngle = 0;
   };
   std::optional<CameraPose> camera() const;
 

@@ -1,6 +1,7 @@
 #pragma once
 // From samples to a ready scene description: passes, surface mesh, the coloured quantity, its
 // range, the programmed tool path and the highlighted line.
+#include <algorithm>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -14,6 +15,11 @@
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::vis {
+
+// Vertices enough for a picture of `pixels` pixels: half a vertex a pixel. A mesh has about two
+// triangles a vertex, so a surface filling the picture still gets at least a triangle a pixel;
+// more vertices change no pixel but cost memory (about 260 bytes a vertex on screen) and time.
+constexpr std::size_t vertexBudgetForPixels(std::size_t pixels) { return std::max<std::size_t>(pixels / 2, 50'000); }
 
 struct QualityMapRequest {
   Quantity quantity = Quantity::Speed;
@@ -34,7 +40,8 @@ struct QualityMapRequest {
   int isoBands = 12;
   double gapLimit = MeshOptions{}.gapLimit;  // mm; passes further apart are not joined by triangles
   PathPattern pattern = PathPattern::Auto;   // how the samples split into passes
-  std::size_t maxVertices = 3'000'000;       // samples are thinned along passes beyond this
+  // Samples are thinned along passes beyond this; by default a full HD screen's worth.
+  std::size_t maxVertices = vertexBudgetForPixels(1920 * 1080);
   std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
   bool pickable = false;                     // also index the surface for picking (QualityMap::rayIndex)
   std::string caption;                       // prefix of the caption (e.g. the file name)
@@ -51,10 +58,14 @@ struct QualityMap {
   PassSet passes;
   SurfaceData data;
   MapStyle style;
+  QualityMapRequest request;  // what it was made for: a close-up of it is made alike
 };
 
 // Throws InputError when the request cannot be met (no feedback, no cutting passes, ...).
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request);
+
+// The values a map of this request colours the mesh's vertices by, in the units it shows.
+std::vector<float> vertexValuesShown(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh);
 
 // The programmed cutting moves as polylines (arcs sampled within 0.01 mm), rapids left out.
 std::vector<std::vector<Vec3>> programPolylines(const Program& program);

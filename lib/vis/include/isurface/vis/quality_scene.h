@@ -20,6 +20,7 @@ class vtkLookupTable;
 namespace isurface::vis {
 
 enum class ViewDirection { Iso, Top, Front, Left };
+struct DetailSurface;
 
 // The orientation axes take the view's lower left corner: these fractions of its width and height.
 constexpr double kAxesCornerWidth = 0.14, kAxesCornerHeight = 0.2;
@@ -72,6 +73,10 @@ class QualityScene {
   void setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample);
   // Shows the coarse surface instead of the full one (while the camera moves), if there is one.
   void useCoarseSurface(bool coarse);
+  // A close-up of part of the surface, finer than the whole one, shown instead of it at rest (the
+  // coarse surface still stands in while the camera moves); null takes it away.
+  void setDetailSurface(const DetailSurface* detail);
+  bool showsDetail() const;
   void setVisibility(bool surface, bool toolpath, bool points);
   // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
   // them (never larger than the style's font size). A view drawn at `drawnScale` of that width

@@ -126,6 +126,10 @@ class BiipReader {
   // The raw bytes of record i (recordBytes() of them), in place in the mapping.
   const unsigned char* record(std::size_t i) const { return data_ + header_.headerBytes + i * header_.recordBytes; }
   std::size_t fileBytes() const { return size_; }
+  // Drops the pages of records [begin, end) from this process's resident memory; reading them
+  // again maps them again from the file. A reader that walks a dump once calls it behind itself,
+  // so a dump larger than memory can be read and a copy of it does not cost twice its size.
+  void releaseRecords(std::size_t begin, std::size_t end) const;
   // Throws InputError when another process cut the file short while it was read: the records
   // read past its new end held zeros, not the dump.
   void checkIntact() const;

@@ -1,0 +1,32 @@
+#pragma once
+// The surface refined where the camera looks. A document's map has about half a vertex for each
+// pixel of the view (thinned along the passes); once the camera has rested on a close-up, the
+// part of the surface in sight is built again in the background with as many vertices for the
+// view alone, and shown instead of the whole surface until the camera looks beyond it.
+#include <chrono>
+#include <cstddef>
+#include <future>
+#include <memory>
+#include <optional>
+
+#include "isurface/panels/scene_view.h"
+#include "isurface/vis/detail_surface.h"
+
+namespace isurface::panels {
+
+struct ViewRefinement {
+  std::shared_ptr<const vis::DetailSurface> shown;   // on `scene` now
+  const vis::QualityScene* scene = nullptr;          // the scene `shown` and `building` are for
+  std::future<std::optional<vis::DetailSurface>> building;
+  std::optional<SceneView::CameraPose> askedAt;      // the camera the last build was asked for
+  std::optional<SceneView::CameraPose> lastPose;     // the camera at the last frame
+  std::chrono::steady_clock::time_point movedAt;     // when the camera last moved
+  std::size_t vertexBudget = 0;                      // of the view it was last drawn at
+
+  // A close-up is being made, or may be once the camera has rested: the host keeps drawing
+  // frames so that it is decided on and shown without waiting for input.
+  bool pending() const { return building.valid() || (lastPose.has_value() && !askedAtLastPose); }
+  bool askedAtLastPose = false;
+};
+
+}  // namespace isurface::panels

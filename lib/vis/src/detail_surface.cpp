@@ -1,0 +1,52 @@
+#include "isurface/vis/detail_surface.h"
+
+#include <algorithm>
+
+namespace isurface::vis {
+
+PassSet passesInBox(const Trajectory& samples, const PassSet& passes, const Vec3& lower, const Vec3& upper,
+                    bool feedback) {
+  const std::vector<double>& xs = feedback ? samples.fbX : samples.x;
+  const std::vector<double>& ys = feedback ? samples.fbY : samples.y;
+  const auto inside = [&](std::size_t i) {
+    return xs[i] >= lower.x() && xs[i] <= upper.x() && ys[i] >= lower.y() && ys[i] <= upper.y();
+  };
+  PassSet out;
+  out.pattern = passes.pattern;
+  for (const Pass& pass : passes.passes) {
+    std::size_t first = pass.end, last = pass.begin;
+    for (std::size_t i = pass.begin; i < pass.end; ++i) {
+      if (!inside(i)) continue;
+      first = std::min(first, i);
+      last = i;
+    }
+    // Two samples at least: a pass of one point makes no triangle.
+    if (first < pass.end && last > first) out.passes.push_back(Pass{first, last + 1});
+  }
+  return out;
+}
+
+std::optional<DetailSurface> buildDetailSurface(const Trajectory& samples, const PassSet& passes,
+                                                const QualityMapRequest& request, const Vec3& lower, const Vec3& upper) {
+  const PassSet inBox = passesInBox(samples, passes, lower, upper, request.feedbackSurface);
+  std::size_t cutting = 0;
+  for (const Pass& pass : inBox.passes) cutting += pass.size();
+  if (cutting == 0) return std::nullopt;
+  DetailSurface detail;
+  detail.lower = lower;
+  detail.upper = upper;
+  const std::size_t budget = std::max<std::size_t>(request.maxVertices, 1);
+  detail.stride = std::max<std::size_t>(1, (cutting + budget - 1) / budget);
+  MeshOptions options;
+  options.feedback = request.feedbackSurface;
+  options.gapLimit = request.gapLimit;
+  options.stride = detail.stride;
+  auto mesh = std::make_shared<SurfaceMesh>(buildSurfaceMesh(samples, inBox, options));
+  if (mesh->triangles.empty()) return std::nullopt;
+  detail.positions = meshPositions(samples, *mesh, request.feedbackSurface);
+  detail.scalars = vertexValuesShown(request, samples, *mesh);
+  detail.mesh = std::move(mesh);
+  return detail;
+}
+
+}  // namespace isurface::vis
