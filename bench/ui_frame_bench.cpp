@@ -37,6 +37,7 @@ std::string writeRaster() {
 panels::HeadlessUi& app() {
   static std::unique_ptr<panels::HeadlessUi> ui = [] {
     auto made = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
+    made->frame();  // laid out first, as the window is: the map is made for the view's size
     const char* given = std::getenv("ISURFACE_BENCH_PROGRAM");
     made->inspector().open(given && *given ? std::string(given) : writeRaster());
     made->inspector().waitUntilIdle();

@@ -148,8 +148,9 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
   return pathMismatch(samples, program);
 }
 
-Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress) {
-  TrajectorySink sink(machine.cycle, program.source);
+Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress,
+                       bool feedback) {
+  TrajectorySink sink(machine.cycle, program.source, feedback);
   simulate(program, machine, sink, progress);
   return sink.take();
 }
@@ -199,7 +200,8 @@ OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progres
   if (hasDump) {
     readSamples(request, progress, run);
   } else if (run.program) {
-    run.samples = std::make_shared<const Trajectory>(simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0)));
+    run.samples = std::make_shared<const Trajectory>(
+        simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0), request.channels.feedback));
   }
   if (progress) progress(1.0);
   return run;

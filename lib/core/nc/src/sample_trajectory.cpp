@@ -5,7 +5,7 @@
 
 namespace isurface {
 
-TrajectorySink::TrajectorySink(double cycle, std::string source) {
+TrajectorySink::TrajectorySink(double cycle, std::string source, bool feedback) : feedback_(feedback) {
   trajectory_.source = std::move(source);
   trajectory_.cycle = cycle;
   trajectory_.hasLine = true;
@@ -13,7 +13,9 @@ TrajectorySink::TrajectorySink(double cycle, std::string source) {
 
 void TrajectorySink::expect(std::size_t samples) {
   Trajectory& t = trajectory_;
-  for (std::vector<double>* channel : {&t.time, &t.x, &t.y, &t.z, &t.fbX, &t.fbY, &t.fbZ, &t.feed}) channel->reserve(samples);
+  for (std::vector<double>* channel : {&t.time, &t.x, &t.y, &t.z, &t.feed}) channel->reserve(samples);
+  if (feedback_)
+    for (std::vector<double>* channel : {&t.fbX, &t.fbY, &t.fbZ}) channel->reserve(samples);
   t.line.reserve(samples);
   t.block.reserve(samples);
 }
@@ -28,10 +30,13 @@ void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
     t.x.push_back(s.x);
     t.y.push_back(s.y);
     t.z.push_back(s.z);
-    t.fbX.push_back(s.fbX);
-    t.fbY.push_back(s.fbY);
-    t.fbZ.push_back(s.fbZ);
     t.feed.push_back(s.feed);
+  }
+  if (!feedback_) return;
+  for (std::size_t k = 0; k < count; ++k) {
+    t.fbX.push_back(samples[k].fbX);
+    t.fbY.push_back(samples[k].fbY);
+    t.fbZ.push_back(samples[k].fbZ);
   }
 }
 

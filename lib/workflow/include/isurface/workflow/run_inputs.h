@@ -61,7 +61,7 @@ struct OpenRunRequest {
   RunFiles files;
   // The machine to simulate with when there is no dump; when empty, the default machine.
   std::optional<Machine> machine;
-  TrajectoryChannels channels;
+  TrajectoryChannels channels;  // kept of a dump, or of a simulation (its feedback)
   bool force = false;  // join a dump to a program that does not look like its own
 };
 
@@ -80,6 +80,8 @@ struct OpenedRun {
 OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress = {});
 
 // Simulates a program in memory with a machine (progress 0..1).
-Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress = {});
+// Without `feedback` the servo's positions are not kept (see TrajectoryChannels).
+Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress = {},
+                       bool feedback = true);
 
 }  // namespace isurface

@@ -10,16 +10,18 @@ namespace isurface {
 
 // Samples written straight into a Trajectory's channels as the simulator makes them: no
 // buffer of records beside it, which for a long program is as large as the Trajectory itself.
-// rapidFeed is left 0: set it from the machine when the caller knows it.
+// rapidFeed is left 0: set it from the machine when the caller knows it. Without `feedback`
+// the servo's positions are not kept (24 bytes a sample less, for what shows no feedback).
 class TrajectorySink : public SampleSink {
  public:
-  TrajectorySink(double cycle, std::string source);
+  TrajectorySink(double cycle, std::string source, bool feedback = true);
   void expect(std::size_t samples) override;
   void consume(const SimSample* samples, std::size_t count) override;
   Trajectory take() { return std::move(trajectory_); }
 
  private:
   Trajectory trajectory_;
+  bool feedback_;
 };
 
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source);
