@@ -186,13 +186,13 @@ int run(int argc, char** argv) {
     }
     double lastInput = glfwGetTime();
     bool frameDue = true;
-    long framesDrawn = 0;
+    bool laidOut = false;  // a frame has been drawn
     std::string toldState;
     while (!glfwWindowShouldClose(window) && !inspector.quitRequested()) {
       if (exitAfter >= 0 && dropped.empty() && !inspector.busy() && exitAfter-- == 0) break;
       waitForInput(inspector.busy() || inspector.refining(), frameDue || !dropped.empty(), exitAfter >= 0, lastInput);
       // After a first frame: a map is made for the view's size, known once it has been laid out.
-      if (!dropped.empty() && framesDrawn > 0) {
+      if (!dropped.empty() && laidOut) {
         inspector.open(dropped);  // together: a dump after its program joins it
         dropped.clear();
       }
@@ -212,7 +212,7 @@ int run(int argc, char** argv) {
       glfwSwapBuffers(window);
       frameDue = releaseHeldKeys(window) || mouseFrameDue(window);
       tellState(inspector, toldState);
-      ++framesDrawn;
+      laidOut = true;
     }
     glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
     settings.recentFiles = inspector.settings().recentFiles;

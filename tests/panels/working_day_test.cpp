@@ -6,9 +6,6 @@
 #include <imgui.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cmath>
-#include <thread>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -440,61 +437,4 @@ TEST(workingDay, DraggingTurnsTheCameraByTheTrackballsAngle) {
   settle(*ui);
   const double turned = std::acos(std::clamp(before.dot(direction()), -1.0, 1.0)) * 180.0 / M_PI;
   EXPECT_NEAR(turned, 200.0 * dx / width, 4.0);
-}
-
-TEST(workingDay, ZoomingInRefinesTheSurfaceInSightAndZoomingOutTakesItAway) {
-  // A raster of 60 passes of 100 mm at F600: 10,000 samples a pass, 600,000 in all, more than
-  // the view's half a vertex a pixel: the map keeps every ninth sample or so.
-  const std::string path = (test::scratchDir() / "long-raster.nc").string();
-  {
-    std::ofstream out(path);
-    out << "G21 G90 G17 G94\nG0 Z5\nG0 X0 Y0\nG1 Z0 F600\n";
-    for (int p = 0; p < 60; ++p) {
-      out << "G1 Y" << 0.5 * p << "\n";
-      for (int i = 1; i <= 20; ++i) {
-        const double x = 5.0 * (p % 2 == 0 ? i : 20 - i);
-        out << "G1 X" << x << " Z" << 0.3 * std::sin(0.1 * x + 0.2 * p) << "\n";
-      }
-    }
-    out << "G0 Z5\nM30\n";
-  }
-  panels::HeadlessUi ui(800, 600, app_model::Settings{});
-  settle(ui);
-  ui.inspector().open(path);
-  waitForJobs(ui);
-  const nlohmann::json map = described(ui)["map"];
-  const double vertices = map["vertices"].get<double>();
-  ASSERT_GT(vertices, 10'000.0);
-  ASSERT_LT(vertices, 200'000.0);  // thinned: not every one of the 600,000 samples
-  EXPECT_FALSE(map["close_up"].contains("vertices"));
-  const auto view = described(ui)["controls"]["view"].get<std::array<float, 4>>();
-  const float cx = (view[0] + view[2]) / 2, cy = (view[1] + view[3]) / 2;
-  const auto closeUp = [&] { return described(ui)["map"]["close_up"]; };
-  const auto waitForCloseUp = [&](bool wanted) {
-    for (int frame = 0; frame < 400 && closeUp().contains("vertices") != wanted; ++frame) {
-      ui.frame();
-      std::this_thread::sleep_for(std::chrono::milliseconds(20));
-    }
-    return closeUp();
-  };
-  ui.mouse(cx, cy, false);
-  settle(ui);
-  for (int notch = 0; notch < 12; ++notch) {
-    ui.wheel(1);
-    ui.frame();
-  }
-  const nlohmann::json refined = waitForCloseUp(true);
-  ASSERT_TRUE(refined.contains("vertices")) << refined.dump();
-  // Finer than the map: at most every fourth sample where the map keeps every ninth or so.
-  EXPECT_LE(refined["stride"].get<int>(), 4);
-  EXPECT_GT(refined["vertices"].get<double>(), 1'000.0);
-  // Only the part in sight: a box well inside the 100 x 29.5 mm part.
-  const double wide = refined["upper"][0].get<double>() - refined["lower"][0].get<double>();
-  const double deep = refined["upper"][1].get<double>() - refined["lower"][1].get<double>();
-  EXPECT_LT(wide * deep, 0.5 * 100 * 29.5);
-  for (int notch = 0; notch < 14; ++notch) {
-    ui.wheel(-1);
-    ui.frame();
-  }
-  EXPECT_FALSE(waitForCloseUp(false).contains("vertices"));
 }

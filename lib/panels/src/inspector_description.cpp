@@ -30,10 +30,8 @@ nlohmann::json machineJson(const Machine& m) {
   return {{"name", m.name}, {"cycle_s", m.cycle}, {"axes", axes}};
 }
 
-}  // namespace
-
 // The finer surface shown where the camera looks, if any, and whether one is being made.
-static nlohmann::json closeUpJson(const ViewRefinement& r) {
+nlohmann::json closeUpJson(const ViewRefinement& r) {
   nlohmann::json out = {{"building", r.building.valid()}};
   if (r.shown)
     out.update({{"vertices", r.shown->mesh->vertexSample.size()},
@@ -42,6 +40,8 @@ static nlohmann::json closeUpJson(const ViewRefinement& r) {
                 {"upper", pointJson(r.shown->upper)}});
   return out;
 }
+
+}  // namespace
 
 std::string Inspector::describe() const {
   const State& s = *state_;

@@ -50,7 +50,7 @@ std::string figuresJson(const Document& doc) {
                         {"passes", doc.map.passes.passes.size()},
                         {"values", valueFigures(doc.map.data.scalars)}};
   if (doc.map.mesh) {
-    const QualityFigures f = measureQualityFigures(*doc.samples, *doc.map.mesh);
+    const QualityFigures f = measureQualityFigures(*doc.samples, *vis::figuresMesh(*doc.samples, doc.map));
     out["figures"] = {{"surface_samples", f.samples},
                       {"speed_fluctuation_mm_min", f.speedFluctuation},
                       {"inconsistency_p99_mm_min", f.inconsistencyP99},

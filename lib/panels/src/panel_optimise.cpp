@@ -139,7 +139,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
     try {
       // As `optimize --auto`: whole passes around the region, its figures taken inside its box.
-      const SurfaceRun run{doc->samples, doc->map.passes, doc->map.mesh};
+      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
       const ChosenRegion worst = worstRegion(run, doc->name);
       s.optimiseFirst = static_cast<int>(worst.lines.first);
       s.optimiseLast = static_cast<int>(worst.lines.last);
@@ -153,7 +153,8 @@ void drawOptimiseDialog(Inspector::State& s) {
   if (ImGui::Button("Whole program") && doc && doc->samples && doc->map.mesh) {
     try {
       // As `optimize --all`: every pass, the figures taken over all of them.
-      const ChosenRegion all = wholeProgramRegion(SurfaceRun{doc->samples, doc->map.passes, doc->map.mesh}, doc->name);
+      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
+      const ChosenRegion all = wholeProgramRegion(run, doc->name);
       s.optimiseFirst = static_cast<int>(all.lines.first);
       s.optimiseLast = static_cast<int>(all.lines.last);
       s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};

@@ -230,7 +230,13 @@ std::vector<unsigned char> SceneView::snapshot(int width, int height) {
   // Drawn at the size asked for, the full surface, even in the middle of a drag.
   const bool wasDragging = dragging_;
   dragging_ = false;
+  // A close-up covers what the view shows; a picture of another shape shows more.
+  const Impl& view = *impl_;
+  const bool sameShape = view.height > 0 && height > 0 &&
+                         std::abs(double(width) / height - double(view.width) / view.height) < 0.01;
+  if (scene_) scene_->allowDetailSurface(sameShape);
   const unsigned int drawn = render(width, height);
+  if (scene_) scene_->allowDetailSurface(true);
   dragging_ = wasDragging;
   if (!drawn) return {};
   Impl& d = *impl_;

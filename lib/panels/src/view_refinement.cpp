@@ -1,7 +1,7 @@
 #include "view_refinement.h"
 
 #include <algorithm>
-#include <chrono>
+#include <cmath>
 #include <limits>
 
 #include "inspector_state.h"
@@ -14,49 +14,65 @@ namespace {
 // How long the camera rests before a close-up is built (a wheel turned notch by notch would
 // otherwise start one build a notch).
 constexpr std::chrono::milliseconds kRest(250);
-// A close-up is built when it is at least this much finer than the map along the passes.
+// A close-up is built when it is at least this much finer along the passes than what is shown.
 constexpr std::size_t kFinerAtLeast = 2;
 
 struct Footprint {
-  Vec3 lower, upper;            // mm, of the map's vertices in sight (widened by a margin)
-  std::size_t vertices = 0;     // the map's vertices in sight
+  Vec3 lower, upper;          // mm: what the view shows of the surface, x and y bound it
+  std::size_t vertices = 0;   // the map's vertices in sight (0: the view falls between them)
 };
 
-// The part of the map's surface the view shows: its vertices that project inside the view.
-std::optional<Footprint> footprint(const std::vector<Vec3>& positions, const app_model::ScreenProjection& view) {
-  if (view.width <= 0 || view.height <= 0) return std::nullopt;
-  Footprint f;
+bool samePose(const std::optional<ViewPose>& a, const std::optional<ViewPose>& b) {
+  if (!a || !b) return false;
+  const SceneView::CameraPose &p = a->camera, &q = b->camera;
+  return p.position == q.position && p.focalPoint == q.focalPoint && p.viewUp == q.viewUp &&
+         p.parallelScale == q.parallelScale && p.viewAngle == q.viewAngle && a->width == b->width &&
+         a->height == b->height && a->interacting == b->interacting;
+}
+
+// The map's vertices that project inside the view, widened by the longest step from one of them
+// to its neighbour along its pass or on the next one: the triangles of the vertices just outside
+// the view reach that far into it. With no vertex inside (a view between them), the view's
+// rectangle about the focal point. Nothing when the view shows no surface at all.
+std::optional<Footprint> footprint(const vis::QualityMap& map, const SceneView& view) {
+  const app_model::ScreenProjection projection = view.projection();
+  const Eigen::Matrix4d& m = projection.worldToDevice;
+  const std::vector<Vec3>& at = map.data.positions;
+  const SurfaceMesh& mesh = *map.mesh;
   constexpr double kFar = std::numeric_limits<double>::max();
-  f.lower = Vec3(kFar, kFar, kFar);
-  f.upper = -f.lower;
-  const Eigen::Matrix4d& m = view.worldToDevice;
-  for (const Vec3& p : positions) {
+  Footprint f{Vec3(kFar, kFar, kFar), Vec3(-kFar, -kFar, -kFar), 0};
+  double step = 0;
+  for (std::size_t v = 0; v < at.size(); ++v) {
+    const Vec3& p = at[v];
     const double w = m(3, 0) * p.x() + m(3, 1) * p.y() + m(3, 2) * p.z() + m(3, 3);
     if (!(w > 0)) continue;
     const double x = (m(0, 0) * p.x() + m(0, 1) * p.y() + m(0, 2) * p.z() + m(0, 3)) / w;
     const double y = (m(1, 0) * p.x() + m(1, 1) * p.y() + m(1, 2) * p.z() + m(1, 3)) / w;
-    if (x < -1 || x > 1 || y < -1 || y > 1) continue;
+    if (!(x >= -1 && x <= 1 && y >= -1 && y <= 1)) continue;
     f.lower = f.lower.cwiseMin(p);
     f.upper = f.upper.cwiseMax(p);
     ++f.vertices;
+    if (v + 1 < at.size() && mesh.vertexPass[v + 1] == mesh.vertexPass[v]) step = std::max(step, (at[v + 1] - p).norm());
+    for (const std::uint32_t n : {mesh.previousPassNeighbour[v], mesh.nextPassNeighbour[v]})
+      if (n != kNoVertex) step = std::max(step, (at[n] - p).norm());
   }
-  if (f.vertices == 0) return std::nullopt;
-  // Triangles reach a vertex spacing beyond their last vertex in sight: a twentieth of the box
-  // on each side covers that on a close-up of a few hundred vertices across.
-  const Vec3 margin = (f.upper - f.lower) * 0.05;
+  if (f.vertices == 0) {
+    const auto pose = view.camera();
+    const double reach = 0.5 * std::hypot(projection.width, projection.height) * view.millimetresPerPixel();
+    if (!pose || !(reach > 0)) return std::nullopt;
+    f.lower = pose->focalPoint - Vec3(reach, reach, reach);
+    f.upper = pose->focalPoint + Vec3(reach, reach, reach);
+    return f;
+  }
+  const Vec3 margin = Vec3::Constant(std::isfinite(step) ? step : 0.0);
   f.lower -= margin;
   f.upper += margin;
   return f;
 }
 
-bool covers(const vis::DetailSurface& detail, const Footprint& f) {
-  return f.lower.x() >= detail.lower.x() && f.lower.y() >= detail.lower.y() && f.upper.x() <= detail.upper.x() &&
-         f.upper.y() <= detail.upper.y();
-}
-
-bool samePose(const std::optional<SceneView::CameraPose>& a, const std::optional<SceneView::CameraPose>& b) {
-  return a && b && a->position == b->position && a->focalPoint == b->focalPoint && a->viewUp == b->viewUp &&
-         a->parallelScale == b->parallelScale && a->viewAngle == b->viewAngle;
+bool covers(const vis::DetailSurface& detail, const std::optional<Footprint>& f) {
+  return f && f->lower.x() >= detail.lower.x() && f->lower.y() >= detail.lower.y() && f->upper.x() <= detail.upper.x() &&
+         f->upper.y() <= detail.upper.y();
 }
 
 // Every how many samples of a pass the map keeps a vertex.
@@ -69,79 +85,95 @@ std::size_t mapStride(const vis::QualityMap& map) {
 
 void dropDetail(Inspector::State& s) {
   ViewRefinement& r = s.refinement;
-  if (r.shown && s.view.scene() && r.scene == s.view.scene()) {
+  if (r.shown && s.view.scene()) {
     s.view.scene()->setDetailSurface(nullptr);
     s.view.invalidate();
   }
   r.shown.reset();
 }
 
-// A finished build goes on the scene when the camera still stands where it was asked for.
+// A finished build goes on the scene when the view still stands where it was asked for.
 void takeFinishedBuild(Inspector::State& s) {
   ViewRefinement& r = s.refinement;
   if (!r.building.valid() || r.building.wait_for(std::chrono::seconds(0)) != std::future_status::ready) return;
-  std::optional<vis::DetailSurface> detail = r.building.get();
+  std::optional<vis::DetailSurface> detail;
+  try {
+    detail = r.building.get();
+  } catch (const std::exception& e) {
+    s.status = std::string("the surface in sight was not refined: ") + e.what();
+    return;
+  }
   vis::QualityScene* scene = s.view.scene();
-  if (!detail || !scene || scene != r.scene || !samePose(s.view.camera(), r.askedAt)) return;
+  if (!detail || !scene || scene != r.scene || !samePose(r.lastPose, r.askedAt)) return;
   r.shown = std::make_shared<const vis::DetailSurface>(std::move(*detail));
   scene->setDetailSurface(r.shown.get());
   s.view.invalidate();
 }
 
 void startBuild(Inspector::State& s, const Document& doc, const Footprint& f) {
-  ViewRefinement& r = s.refinement;
   vis::QualityMapRequest request = doc.map.request;
-  request.maxVertices = r.vertexBudget;
+  request.maxVertices = s.refinement.vertexBudget;
   request.pickable = false;
   request.coarseVertices = 0;
-  r.askedAt = s.view.camera();
-  r.building = std::async(std::launch::async, [samples = doc.samples, passes = doc.map.passes, request, f] {
+  s.refinement.building = std::async(std::launch::async, [samples = doc.samples, passes = doc.map.passes, request, f] {
     return vis::buildDetailSurface(*samples, passes, request, f.lower, f.upper);
   });
 }
 
+// Once the view has rested: the close-up goes when it does not cover the view, and a finer one
+// is built when the view shows few enough samples for it.
+void decide(Inspector::State& s, const Document& doc) {
+  ViewRefinement& r = s.refinement;
+  r.askedAt = r.lastPose;
+  const std::optional<Footprint> inSight = footprint(doc.map, s.view);
+  if (r.shown && !covers(*r.shown, inSight)) dropDetail(s);
+  if (!inSight) return;
+  const std::size_t stride = r.shown ? r.shown->stride : mapStride(doc.map);
+  if (inSight->vertices > 0) {
+    const std::size_t samplesInSight = inSight->vertices * mapStride(doc.map);
+    const std::size_t budget = std::max<std::size_t>(r.vertexBudget, 1);
+    if ((samplesInSight + budget - 1) / budget * kFinerAtLeast > stride) return;  // about as fine already
+  } else if (stride == 1) {
+    return;
+  }
+  startBuild(s, doc, *inSight);
+}
+
 }  // namespace
+
+bool ViewRefinement::pending() const { return building.valid() || (lastPose && !samePose(lastPose, askedAt)); }
 
 void refineWhereTheCameraLooks(Inspector::State& s, int viewWidth, int viewHeight) {
   ViewRefinement& r = s.refinement;
   vis::QualityScene* scene = s.view.scene();
-  if (r.scene != scene) {  // another document, or a new colouring: the close-up was of the old one
+  if (r.scene != scene) {  // another document, or a new colouring: a close-up is of the old one
+    if (scene && scene->showsDetail()) scene->setDetailSurface(nullptr);
     r.shown.reset();
     r.askedAt.reset();
-    r.askedAtLastPose = false;
     r.scene = scene;
   }
   r.vertexBudget = vis::vertexBudgetForPixels(std::size_t(std::max(viewWidth, 0)) * std::size_t(std::max(viewHeight, 0)));
   takeFinishedBuild(s);
   Document* doc = s.activeDocument();
-  if (!scene || !doc || !doc->samples || !doc->map.mesh || doc->scene.get() != scene) {
-    r.lastPose.reset();  // nothing to refine: no frames needed for it
+  const auto camera = s.view.camera();
+  if (!scene || !doc || !doc->samples || !doc->map.mesh || doc->scene.get() != scene || !camera || viewWidth <= 0 ||
+      viewHeight <= 0) {
+    r.lastPose.reset();  // nothing to refine: no frames are needed for it
     return;
   }
-  const std::optional<SceneView::CameraPose> pose = s.view.camera();
-  if (s.view.interacting() || !samePose(pose, r.lastPose)) {
+  const ViewPose pose{*camera, viewWidth, viewHeight, s.view.interacting()};
+  if (!samePose(pose, r.lastPose)) {
     r.lastPose = pose;
     r.movedAt = std::chrono::steady_clock::now();
-    r.askedAtLastPose = samePose(pose, r.askedAt);
-    if (!s.view.interacting() && r.shown) {
-      const auto inSight = footprint(doc->map.data.positions, s.view.projection());
-      if (!inSight || !covers(*r.shown, *inSight)) dropDetail(s);
-    }
+    // Not shown over a view it does not cover, not even until the camera rests.
+    if (!pose.interacting && r.shown && !covers(*r.shown, footprint(doc->map, s.view))) dropDetail(s);
     return;
   }
-  // Once per resting place, and not beside a load or a colouring that replaces the map.
-  if (std::chrono::steady_clock::now() - r.movedAt < kRest || samePose(pose, r.askedAt) || r.building.valid() ||
-      s.job.running())
+  // Not beside a load or a colouring that replaces the map.
+  if (pose.interacting || samePose(pose, r.askedAt) || std::chrono::steady_clock::now() - r.movedAt < kRest ||
+      r.building.valid() || s.job.running())
     return;
-  const auto inSight = footprint(doc->map.data.positions, s.view.projection());
-  r.askedAt = pose;
-  r.askedAtLastPose = true;
-  if (!inSight || (r.shown && covers(*r.shown, *inSight))) return;
-  const std::size_t stride = mapStride(doc->map);
-  const std::size_t samplesInSight = inSight->vertices * stride;
-  const std::size_t closeUpStride = (samplesInSight + r.vertexBudget - 1) / std::max<std::size_t>(r.vertexBudget, 1);
-  if (closeUpStride * kFinerAtLeast > stride) return;  // the map is about as fine here already
-  startBuild(s, *doc, *inSight);
+  decide(s, *doc);
 }
 
 }  // namespace isurface::panels

@@ -66,7 +66,24 @@ void toInch(std::vector<float>& values) {
   for (float& v : values) v = static_cast<float>(v / kMmPerInch);
 }
 
+std::size_t strideFor(const PassSet& passes, std::size_t maxVertices) {
+  std::size_t cutting = 0;
+  for (const Pass& pass : passes.passes) cutting += pass.size();
+  const std::size_t budget = std::max<std::size_t>(maxVertices, 1);
+  return std::max<std::size_t>(1, (cutting + budget - 1) / budget);
+}
+
 }  // namespace
+
+std::shared_ptr<const SurfaceMesh> figuresMesh(const Trajectory& samples, const QualityMap& map) {
+  const std::size_t stride = strideFor(map.passes, kFiguresVertices);
+  if (map.mesh && strideFor(map.passes, map.request.maxVertices) <= stride) return map.mesh;
+  MeshOptions options;
+  options.feedback = map.request.feedbackSurface;
+  options.gapLimit = map.request.gapLimit;
+  options.stride = stride;
+  return std::make_shared<const SurfaceMesh>(buildSurfaceMesh(samples, map.passes, options));
+}
 
 std::vector<float> vertexValuesShown(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh) {
   std::vector<float> values = scalarsFor(request, samples, mesh);
@@ -119,11 +136,12 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   std::size_t cutting = 0;
   for (const Pass& pass : map.passes.passes) cutting += pass.size();
   if (cutting == 0) throw InputError(Diagnostic{samples.source, 0, 0, "no cutting passes found to build a surface on"});
+  const std::size_t stride = strideFor(map.passes, request.maxVertices);
 
   MeshOptions meshOptions;
   meshOptions.feedback = request.feedbackSurface;
   meshOptions.gapLimit = request.gapLimit;
-  meshOptions.stride = std::max<std::size_t>(1, (cutting + request.maxVertices - 1) / request.maxVertices);
+  meshOptions.stride = stride;
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,

@@ -95,7 +95,7 @@ struct QualityScene::Parts {
   MapStyle style;
   vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
-  bool coarse = false, showSurface = true;
+  bool coarse = false, showSurface = true, detailAllowed = true;
   vtkSmartPointer<vtkScalarBarActor> legend;
   vtkSmartPointer<vtkTextActor> caption;
   std::string captionText, legendText;
@@ -248,8 +248,9 @@ void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector
 void QualityScene::useCoarseSurface(bool coarse) {
   Parts& p = *parts_;
   p.coarse = coarse && p.coarseActor;
-  p.surfaceActor->SetVisibility(p.showSurface && !p.coarse && !p.detailActor);
-  if (p.detailActor) p.detailActor->SetVisibility(p.showSurface && !p.coarse);
+  const bool detail = p.detailActor && p.detailAllowed;
+  p.surfaceActor->SetVisibility(p.showSurface && !p.coarse && !detail);
+  if (p.detailActor) p.detailActor->SetVisibility(p.showSurface && !p.coarse && detail);
   if (p.coarseActor) p.coarseActor->SetVisibility(p.showSurface && p.coarse);
 }
 
@@ -268,6 +269,11 @@ void QualityScene::setDetailSurface(const DetailSurface* detail) {
 }
 
 bool QualityScene::showsDetail() const { return parts_->detailActor != nullptr; }
+
+void QualityScene::allowDetailSurface(bool allowed) {
+  parts_->detailAllowed = allowed;
+  useCoarseSurface(parts_->coarse);
+}
 
 void QualityScene::setVisibility(bool surface, bool toolpath, bool points) {
   Parts& p = *parts_;

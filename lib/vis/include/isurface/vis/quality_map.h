@@ -21,6 +21,10 @@ namespace isurface::vis {
 // more vertices change no pixel but cost memory (about 260 bytes a vertex on screen) and time.
 constexpr std::size_t vertexBudgetForPixels(std::size_t pixels) { return std::max<std::size_t>(pixels / 2, 50'000); }
 
+// Quality figures and regions are measured on a surface of up to this many vertices, whatever
+// the picture it is shown in: the same program gives the same figures in every window.
+constexpr std::size_t kFiguresVertices = 3'000'000;
+
 struct QualityMapRequest {
   Quantity quantity = Quantity::Speed;
   std::string channel;                       // when not empty: colour by this channel of the dump instead
@@ -40,8 +44,9 @@ struct QualityMapRequest {
   int isoBands = 12;
   double gapLimit = MeshOptions{}.gapLimit;  // mm; passes further apart are not joined by triangles
   PathPattern pattern = PathPattern::Auto;   // how the samples split into passes
-  // Samples are thinned along passes beyond this; by default a full HD screen's worth.
-  std::size_t maxVertices = vertexBudgetForPixels(1920 * 1080);
+  // Samples are thinned along passes beyond this (a picture needs no more than
+  // vertexBudgetForPixels of its size).
+  std::size_t maxVertices = kFiguresVertices;
   std::size_t coarseVertices = 0;            // > 0: also a coarse surface of about this many vertices
   bool pickable = false;                     // also index the surface for picking (QualityMap::rayIndex)
   std::string caption;                       // prefix of the caption (e.g. the file name)
@@ -63,6 +68,11 @@ struct QualityMap {
 
 // Throws InputError when the request cannot be met (no feedback, no cutting passes, ...).
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request);
+
+// The surface the quality figures of a map's samples are measured on: the map's own when it
+// keeps as many samples as kFiguresVertices allows, else its passes meshed again so (a map made
+// for a small view keeps fewer).
+std::shared_ptr<const SurfaceMesh> figuresMesh(const Trajectory& samples, const QualityMap& map);
 
 // The values a map of this request colours the mesh's vertices by, in the units it shows.
 std::vector<float> vertexValuesShown(const QualityMapRequest& request, const Trajectory& samples, const SurfaceMesh& mesh);

@@ -77,6 +77,9 @@ class QualityScene {
   // coarse surface still stands in while the camera moves); null takes it away.
   void setDetailSurface(const DetailSurface* detail);
   bool showsDetail() const;
+  // A picture of another shape than the view the close-up was made for shows more than it
+  // covers: drawn with the whole surface instead while not allowed.
+  void allowDetailSurface(bool allowed);
   void setVisibility(bool surface, bool toolpath, bool points);
   // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
   // them (never larger than the style's font size). A view drawn at `drawnScale` of that width
