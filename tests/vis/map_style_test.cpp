@@ -7,6 +7,7 @@
 #include <vtkTextProperty.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/quality_map.h"
@@ -93,4 +94,21 @@ TEST(mapStyle, TextInANarrowViewIsMadeToFit) {
   std::size_t longest = 0, length = 0;
   for (char c : text) length = c == '\n' ? 0 : length + 1, longest = std::max(longest, length);
   EXPECT_LE(static_cast<double>(longest) * 0.56 * caption->GetTextProperty()->GetFontSize(), 0.8 * 300 + 1);
+}
+
+TEST(mapStyle, AConstantSpeedIsOneColourWithoutIsoLines) {
+  // 12 passes of 40 mm at a constant 600 mm/min: the speeds differ only by rounding.
+  const Trajectory raster = test::zigZagRaster(12, 40.0, 1.0, 600.0);
+  vis::QualityMapRequest request;
+  request.quantity = Quantity::Speed;
+  const vis::QualityMap map = vis::buildQualityMap(raster, nullptr, request);
+  EXPECT_NEAR(map.style.range.hi - map.style.range.lo, 1.2, 0.01);  // two thousandths of 600
+  EXPECT_NEAR(0.5 * (map.style.range.lo + map.style.range.hi), 600.0, 0.05);
+  EXPECT_EQ(map.style.isoBands, 0) << map.style.range.lo << " .. " << map.style.range.hi;
+  // Speeds that do vary keep their range and their iso-lines.
+  const Trajectory wavy = test::zigZagRaster(12, 40.0, 1.0, 600.0, [](double x, double) { return 2.0 * std::sin(x); });
+  request.quantity = Quantity::VelocityZ;
+  const vis::QualityMap varying = vis::buildQualityMap(wavy, nullptr, request);
+  EXPECT_EQ(varying.style.isoBands, request.isoBands);
+  EXPECT_GT(varying.style.range.hi - varying.style.range.lo, 10.0);
 }

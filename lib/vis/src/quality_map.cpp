@@ -66,6 +66,19 @@ void toInch(std::vector<float>& values) {
   for (float& v : values) v = static_cast<float>(v / kMmPerInch);
 }
 
+// Values that vary by no more than two thousandths of their size (a constant speed, rounding
+// noise) are one colour: the range spans those two thousandths about them, as a range of one
+// value is widened (percentileRange), and no iso-lines are drawn, which would only trace the
+// noise (a 100 M-sample raster at a constant F600 came out in stripes along the passes, speeds
+// of 599.96 and 600 mm/min at the two ends of the colour map).
+void widenNarrowRange(MapStyle& style) {
+  const double size = std::max(std::fabs(style.range.lo), std::fabs(style.range.hi));
+  if (!(size > 0) || !std::isfinite(size) || style.range.hi - style.range.lo > 2e-3 * size * (1 + 1e-9)) return;
+  const double middle = 0.5 * (style.range.lo + style.range.hi);
+  style.range = ValueRange{middle - 1e-3 * size, middle + 1e-3 * size};
+  style.isoBands = 0;
+}
+
 std::size_t strideFor(const PassSet& passes, std::size_t maxVertices) {
   std::size_t cutting = 0;
   for (const Pass& pass : passes.passes) cutting += pass.size();
@@ -210,6 +223,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;
   style.isoBands = request.isoBands;
+  if (!request.fixedRange) widenNarrowRange(style);
   std::string rangeKind = request.fixedRange ? "fixed" : (request.lowPercent <= 0 && request.highPercent >= 100)
                                                              ? "full"
                                                              : fmt::format("{:g}-{:g}%", request.lowPercent, request.highPercent);
