@@ -107,7 +107,15 @@ class DrivenWindow {
   }
   // As a user does, waits for the control to appear (a dialog opened by the key before) first.
   void clickControl(const std::string& name) const {
-    waitFor([&](const json& s) { return s["controls"].contains(name); }, 20);
+    // Where it stands once it has stopped moving: a window that has just opened is laid out
+    // again in its next frames, and on a loaded machine a click at its first place misses.
+    json last;
+    auto since = std::chrono::steady_clock::now();
+    waitFor([&](const json& s) {
+      const json now = s["controls"].contains(name) ? s["controls"][name] : json();
+      if (now != last) last = now, since = std::chrono::steady_clock::now();
+      return !now.is_null() && std::chrono::steady_clock::now() - since > std::chrono::milliseconds(300);
+    }, 20);
     const json c = state()["controls"];
     ASSERT_TRUE(c.contains(name)) << name << " is not drawn: " << c.dump();
     const auto r = c[name].get<std::array<double, 4>>();
