@@ -16,7 +16,7 @@ namespace {
 // jumping across the whole part, which is not part of the surface.
 struct Raster {
   Trajectory samples;
-  std::vector<std::uint32_t> surface;
+  PassSet surface;
 };
 
 Raster raster() {
@@ -24,7 +24,9 @@ Raster raster() {
   Trajectory& t = r.samples;
   t.hasLine = true;
   auto add = [&](double x, double y, std::uint32_t line, bool onSurface) {
-    if (onSurface) r.surface.push_back(static_cast<std::uint32_t>(t.size()));
+    if (onSurface && (r.surface.passes.empty() || r.surface.passes.back().end != t.size()))
+      r.surface.passes.push_back(Pass{t.size(), t.size()});
+    if (onSurface) ++r.surface.passes.back().end;
     t.time.push_back(0.001 * static_cast<double>(t.size()));
     t.x.push_back(x), t.y.push_back(y), t.z.push_back(0), t.line.push_back(line);
   };
@@ -83,12 +85,13 @@ TEST(boxSelection, EmptyRectangleOrNoSurfaceSelectsNothing) {
   EXPECT_FALSE(selectInRectangle(r.samples, r.surface, topView(), ScreenRectangle{0, 72, 200, 78}));
   // Beside the part.
   EXPECT_FALSE(selectInRectangle(r.samples, r.surface, topView(), ScreenRectangle{-50, 0, -10, 100}));
-  EXPECT_FALSE(selectInRectangle(r.samples, {}, topView(), ScreenRectangle{0, 0, 200, 100}));
+  EXPECT_FALSE(selectInRectangle(r.samples, PassSet{}, topView(), ScreenRectangle{0, 0, 200, 100}));
   // Samples without a line, or indices past the samples, are passed over.
   Raster unknown = raster();
   std::fill(unknown.samples.line.begin(), unknown.samples.line.end(), 0u);
   EXPECT_FALSE(selectInRectangle(unknown.samples, unknown.surface, topView(), ScreenRectangle{0, 0, 200, 100}));
-  EXPECT_FALSE(selectInRectangle(r.samples, {999999u}, topView(), ScreenRectangle{0, 0, 200, 100}));
+  const PassSet beyondTheSamples{PathPattern::NoBoundary, {Pass{999999, 1000000}}};
+  EXPECT_FALSE(selectInRectangle(r.samples, beyondTheSamples, topView(), ScreenRectangle{0, 0, 200, 100}));
 }
 
 TEST(boxSelection, WholeViewSelectsEveryPass) {
@@ -97,5 +100,5 @@ TEST(boxSelection, WholeViewSelectsEveryPass) {
   ASSERT_TRUE(s);
   EXPECT_EQ(s->lines.first, 10u);
   EXPECT_EQ(s->lines.last, 19u);
-  EXPECT_EQ(s->samples, r.surface.size());
+  EXPECT_EQ(s->samples, 10u * 101u);  // every sample of the ten passes
 }

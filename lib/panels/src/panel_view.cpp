@@ -19,12 +19,7 @@ namespace {
 void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectangle) {
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || !doc->map.mesh) return;
-  // Every cutting sample, not only the map's vertices: a map thinned for the view would leave
-  // the samples between them out of the box's lines.
-  std::vector<std::uint32_t> cutting;
-  for (const Pass& pass : doc->map.passes.passes)
-    for (std::size_t i = pass.begin; i < pass.end; ++i) cutting.push_back(static_cast<std::uint32_t>(i));
-  const auto chosen = app_model::selectInRectangle(*doc->samples, cutting, s.view.projection(), rectangle);
+  const auto chosen = app_model::selectInRectangle(*doc->samples, doc->map.passes, s.view.projection(), rectangle);
   if (!chosen) {
     s.status = "no cutting sample of the surface inside the box";
     return;

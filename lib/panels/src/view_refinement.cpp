@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "inspector_state.h"
+#include "isurface/surface/surface_mesh.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
@@ -75,14 +76,6 @@ bool covers(const vis::DetailSurface& detail, const std::optional<Footprint>& f)
          f->upper.y() <= detail.upper.y();
 }
 
-// Every how many samples of a pass the map keeps a vertex.
-std::size_t mapStride(const vis::QualityMap& map) {
-  std::size_t cutting = 0;
-  for (const Pass& pass : map.passes.passes) cutting += pass.size();
-  const std::size_t vertices = map.mesh ? map.mesh->vertexSample.size() : 0;
-  return vertices == 0 ? 1 : std::max<std::size_t>(1, cutting / vertices);
-}
-
 void dropDetail(Inspector::State& s) {
   ViewRefinement& r = s.refinement;
   if (r.shown && s.view.scene()) {
@@ -128,9 +121,9 @@ void decide(Inspector::State& s, const Document& doc) {
   const std::optional<Footprint> inSight = footprint(doc.map, s.view);
   if (r.shown && !covers(*r.shown, inSight)) dropDetail(s);
   if (!inSight) return;
-  const std::size_t stride = r.shown ? r.shown->stride : mapStride(doc.map);
+  const std::size_t stride = r.shown ? r.shown->stride : strideWithin(doc.map.passes, doc.map.request.maxVertices);
   if (inSight->vertices > 0) {
-    const std::size_t samplesInSight = inSight->vertices * mapStride(doc.map);
+    const std::size_t samplesInSight = inSight->vertices * strideWithin(doc.map.passes, doc.map.request.maxVertices);
     const std::size_t budget = std::max<std::size_t>(r.vertexBudget, 1);
     if ((samplesInSight + budget - 1) / budget * kFinerAtLeast > stride) return;  // about as fine already
   } else if (stride == 1) {

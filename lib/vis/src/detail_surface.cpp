@@ -29,14 +29,11 @@ PassSet passesInBox(const Trajectory& samples, const PassSet& passes, const Vec3
 std::optional<DetailSurface> buildDetailSurface(const Trajectory& samples, const PassSet& passes,
                                                 const QualityMapRequest& request, const Vec3& lower, const Vec3& upper) {
   const PassSet inBox = passesInBox(samples, passes, lower, upper, request.feedbackSurface);
-  std::size_t cutting = 0;
-  for (const Pass& pass : inBox.passes) cutting += pass.size();
-  if (cutting == 0) return std::nullopt;
+  if (inBox.passes.empty()) return std::nullopt;
   DetailSurface detail;
   detail.lower = lower;
   detail.upper = upper;
-  const std::size_t budget = std::max<std::size_t>(request.maxVertices, 1);
-  detail.stride = std::max<std::size_t>(1, (cutting + budget - 1) / budget);
+  detail.stride = strideWithin(inBox, request.maxVertices);
   MeshOptions options;
   options.feedback = request.feedbackSurface;
   options.gapLimit = request.gapLimit;

@@ -66,31 +66,11 @@ void toInch(std::vector<float>& values) {
   for (float& v : values) v = static_cast<float>(v / kMmPerInch);
 }
 
-// Values that vary by no more than two thousandths of their size (a constant speed, rounding
-// noise) are one colour: the range spans those two thousandths about them, as a range of one
-// value is widened (percentileRange), and no iso-lines are drawn, which would only trace the
-// noise (a 100 M-sample raster at a constant F600 came out in stripes along the passes, speeds
-// of 599.96 and 600 mm/min at the two ends of the colour map).
-void widenNarrowRange(MapStyle& style) {
-  const double size = std::max(std::fabs(style.range.lo), std::fabs(style.range.hi));
-  if (!(size > 0) || !std::isfinite(size) || style.range.hi - style.range.lo > 2e-3 * size * (1 + 1e-9)) return;
-  const double middle = 0.5 * (style.range.lo + style.range.hi);
-  style.range = ValueRange{middle - 1e-3 * size, middle + 1e-3 * size};
-  style.isoBands = 0;
-}
-
-std::size_t strideFor(const PassSet& passes, std::size_t maxVertices) {
-  std::size_t cutting = 0;
-  for (const Pass& pass : passes.passes) cutting += pass.size();
-  const std::size_t budget = std::max<std::size_t>(maxVertices, 1);
-  return std::max<std::size_t>(1, (cutting + budget - 1) / budget);
-}
-
 }  // namespace
 
 std::shared_ptr<const SurfaceMesh> figuresMesh(const Trajectory& samples, const QualityMap& map) {
-  const std::size_t stride = strideFor(map.passes, kFiguresVertices);
-  if (map.mesh && strideFor(map.passes, map.request.maxVertices) <= stride) return map.mesh;
+  const std::size_t stride = strideWithin(map.passes, kFiguresVertices);
+  if (map.mesh && strideWithin(map.passes, map.request.maxVertices) <= stride) return map.mesh;
   MeshOptions options;
   options.feedback = map.request.feedbackSurface;
   options.gapLimit = map.request.gapLimit;
@@ -149,7 +129,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   std::size_t cutting = 0;
   for (const Pass& pass : map.passes.passes) cutting += pass.size();
   if (cutting == 0) throw InputError(Diagnostic{samples.source, 0, 0, "no cutting passes found to build a surface on"});
-  const std::size_t stride = strideFor(map.passes, request.maxVertices);
+  const std::size_t stride = strideWithin(map.passes, request.maxVertices);
 
   MeshOptions meshOptions;
   meshOptions.feedback = request.feedbackSurface;
@@ -223,7 +203,12 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;
   style.isoBands = request.isoBands;
-  if (!request.fixedRange) widenNarrowRange(style);
+  // A range too narrow for colours (see isNarrowRange) would only trace rounding noise with
+  // iso-lines: a 100 M-sample raster at a constant F600 came out in stripes along the passes.
+  if (!request.fixedRange && isNarrowRange(style.range)) {
+    style.range = widenNarrowRange(style.range);
+    style.isoBands = 0;
+  }
   std::string rangeKind = request.fixedRange ? "fixed" : (request.lowPercent <= 0 && request.highPercent >= 100)
                                                              ? "full"
                                                              : fmt::format("{:g}-{:g}%", request.lowPercent, request.highPercent);

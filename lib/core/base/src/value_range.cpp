@@ -13,22 +13,26 @@ namespace {
 // range does not need more precision than a 1-in-1,000,000 rank.
 constexpr std::size_t kMaxRankedValues = 1u << 20;
 
-ValueRange widenEmpty(ValueRange r) {
-  if (r.lo == r.hi) {
-    const double pad = r.lo == 0 ? 1.0 : std::abs(r.lo) * 1e-3;
-    r.lo -= pad;
-    r.hi += pad;
-  }
-  return r;
-}
 }  // namespace
+
+bool isNarrowRange(const ValueRange& r) {
+  const double size = std::max(std::abs(r.lo), std::abs(r.hi));
+  return r.valid() && std::isfinite(size) && r.hi - r.lo <= kNarrowRange * size * (1 + 1e-9);
+}
+
+ValueRange widenNarrowRange(ValueRange r) {
+  if (!isNarrowRange(r)) return r;
+  const double middle = 0.5 * (r.lo + r.hi);
+  const double half = middle == 0 && r.lo == r.hi ? 1.0 : 0.5 * kNarrowRange * std::max(std::abs(r.lo), std::abs(r.hi));
+  return {middle - half, middle + half};
+}
 
 ValueRange fullRange(const std::vector<float>& values) {
   double lo = INFINITY, hi = -INFINITY;
   for (float v : values)
     if (std::isfinite(v)) lo = std::min<double>(lo, v), hi = std::max<double>(hi, v);
   if (!(lo <= hi)) return {0, 1};
-  return widenEmpty({lo, hi});
+  return widenNarrowRange({lo, hi});
 }
 
 ValueRange percentileRange(const std::vector<float>& values, double lowPercent, double highPercent) {
@@ -44,7 +48,7 @@ ValueRange percentileRange(const std::vector<float>& values, double lowPercent, 
     return static_cast<double>(finite[k]);
   };
   const double lo = rank(lowPercent), hi = rank(highPercent);
-  return widenEmpty({lo, hi});
+  return widenNarrowRange({lo, hi});
 }
 
 ValueRange parseRange(const std::string& text) {
@@ -59,7 +63,7 @@ ValueRange parseRange(const std::string& text) {
   if (a.empty() || *end != '\0') return fail();
   const double hi = std::strtod(b.c_str(), &end);
   if (b.empty() || *end != '\0' || !std::isfinite(lo) || !std::isfinite(hi) || lo > hi) return fail();
-  return widenEmpty({lo, hi});
+  return widenNarrowRange({lo, hi});
 }
 
 }  // namespace isurface

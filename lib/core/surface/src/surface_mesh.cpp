@@ -292,4 +292,11 @@ std::vector<Vec3> vertexNormals(const std::vector<Vec3>& positions, const Surfac
   return normals;
 }
 
+std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices) {
+  std::size_t cutting = 0;
+  for (const Pass& pass : passes.passes) cutting += pass.size();
+  const std::size_t budget = std::max<std::size_t>(maxVertices, 1);
+  return std::max<std::size_t>(1, (cutting + budget - 1) / budget);
+}
+
 }  // namespace isurface

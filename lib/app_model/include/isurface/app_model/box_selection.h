@@ -10,6 +10,7 @@
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/base/geometry.h"
 #include "isurface/base/trajectory.h"
+#include "isurface/surface/passes.h"
 
 namespace isurface::app_model {
 
@@ -34,11 +35,11 @@ struct BoxSelection {
   std::size_t samples = 0;
 };
 
-// The samples listed in `surfaceSamples` (the surface's vertices: cutting samples only, so
-// that rapids and approach moves crossing the rectangle do not widen the range) whose
+// The samples of the surface's passes (cutting samples only, so that rapids and approach moves
+// crossing the rectangle do not widen the range; every one, not a thinned map's vertices) whose
 // projection falls inside the rectangle. Samples hidden behind the surface count too: the
 // rectangle selects through the part. Nothing when no sample with a line falls inside.
-std::optional<BoxSelection> selectInRectangle(const Trajectory& samples, const std::vector<std::uint32_t>& surfaceSamples,
+std::optional<BoxSelection> selectInRectangle(const Trajectory& samples, const PassSet& surface,
                                               const ScreenProjection& projection, const ScreenRectangle& rectangle);
 
 }  // namespace isurface::app_model

@@ -11,6 +11,12 @@ struct ValueRange {
   bool valid() const { return lo <= hi; }
 };
 
+// Values that vary by no more than kNarrowRange of their size (a constant speed, rounding noise)
+// are one colour: such a range is widened to span kNarrowRange about its middle (0 to +-1).
+constexpr double kNarrowRange = 2e-3;
+bool isNarrowRange(const ValueRange& r);
+ValueRange widenNarrowRange(ValueRange r);
+
 ValueRange fullRange(const std::vector<float>& values);
 // lowPercent, highPercent in [0, 100], low < high.
 ValueRange percentileRange(const std::vector<float>& values, double lowPercent, double highPercent);

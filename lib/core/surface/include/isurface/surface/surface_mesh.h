@@ -29,6 +29,9 @@ struct MeshOptions {
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options = {});
 
+// The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
+std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);
+
 // Vertex positions of a mesh, commanded or feedback, mm.
 std::vector<Vec3> meshPositions(const Trajectory& samples, const SurfaceMesh& mesh, bool feedback = false);
 
