@@ -107,7 +107,7 @@ TEST(locate, CommandPrintsTheMotion) {
   EXPECT_DOUBLE_EQ(j["velocity_mm_min"][0].get<double>(), 60 * m.velocity.x());
   EXPECT_DOUBLE_EQ(j["acceleration_mm_s2"][2].get<double>(), m.acceleration.z());
   EXPECT_DOUBLE_EQ(j["jerk_axes_mm_s3"][1].get<double>(), m.jerkAxes.y());
-  EXPECT_DOUBLE_EQ(j["time_s"].get<double>(), t.time[k]);
+  EXPECT_DOUBLE_EQ(j["time_s"].get<double>(), t.timeAt(k));
   EXPECT_DOUBLE_EQ(j["feed_mm_min"].get<double>(), t.feed[k]);
   EXPECT_DOUBLE_EQ(j["feedback"][0].get<double>(), t.fbX[k]);
   EXPECT_NEAR(j["following_error_um"].get<double>(), 1000.0 * (t.feedback(k) - t.commanded(k)).norm(), 1e-9);

@@ -38,7 +38,7 @@ TEST(traceImport, halsamplerSmallFileWithCustomMap) {
   EXPECT_TRUE(t.hasLine);
   EXPECT_EQ(t.line, (std::vector<std::uint32_t>{7, 8, 0}));
   EXPECT_DOUBLE_EQ(t.x[2], 1.7);
-  EXPECT_DOUBLE_EQ(t.time[2], 0.004);
+  EXPECT_DOUBLE_EQ(t.timeAt(2), 0.004);
   EXPECT_TRUE(t.extra.empty());
 }
 
@@ -49,7 +49,7 @@ TEST(traceImport, csvTimeColumnAndIrregularSampling) {
   const Trajectory t = importCsv(path, o);
   ASSERT_EQ(t.size(), 3u);
   EXPECT_FALSE(t.hasLine);
-  EXPECT_DOUBLE_EQ(t.time[2], 0.3);
+  EXPECT_DOUBLE_EQ(t.timeAt(2), 0.3);
   EXPECT_NEAR(t.cycle, 0.15, 1e-12);
   EXPECT_TRUE(t.irregularTime);
   ASSERT_NE(t.extraChannel("load"), nullptr);

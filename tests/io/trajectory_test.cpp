@@ -9,6 +9,7 @@
 #include "isurface/nc/interpolator.h"
 #include "isurface/base/trajectory.h"
 #include "isurface/io/trajectory_loading.h"
+#include "isurface/io/trajectory_writing.h"
 #include "isurface/nc/sample_trajectory.h"
 #include "test_support.h"
 
@@ -66,6 +67,7 @@ TEST(trajectory, LoadsEveryChannel) {
   EXPECT_TRUE(t.hasFeedback());
   EXPECT_TRUE(t.hasFeed());
   EXPECT_FALSE(t.irregularTime);
+  EXPECT_TRUE(t.time.empty()) << "a dump without a t channel keeps no times: the cycle gives them";
   EXPECT_DOUBLE_EQ(t.rapidFeed, 24000);
   ASSERT_EQ(t.block.size(), n);
   ASSERT_EQ(t.extra.size(), 1u);
@@ -75,7 +77,7 @@ TEST(trajectory, LoadsEveryChannel) {
   for (std::size_t r = 0; r < n; r += 7) {
     EXPECT_EQ(t.line[r], 10 + r / 100);
     EXPECT_EQ(t.block[r], r / 50);
-    EXPECT_DOUBLE_EQ(t.time[r], 1.5 + 0.002 * double(r));
+    EXPECT_DOUBLE_EQ(t.timeAt(r), 1.5 + 0.002 * double(r));
     EXPECT_DOUBLE_EQ(t.x[r], value("x", r));
     EXPECT_DOUBLE_EQ(t.y[r], value("y", r));
     EXPECT_DOUBLE_EQ(t.z[r], value("z", r));
@@ -109,7 +111,7 @@ TEST(trajectory, TimeChannelAndIrregularSampling) {
       [](const std::string& name, std::size_t r) { return name == "t" ? 0.002 * double(r) : 0.0; });
   const Trajectory a = loadTrajectory(BiipReader(regular));
   EXPECT_FALSE(a.irregularTime);
-  EXPECT_DOUBLE_EQ(a.time[10], 0.02);
+  EXPECT_DOUBLE_EQ(a.timeAt(10), 0.02);
   EXPECT_TRUE(a.extra.empty());  // `t` is the time, not an extra channel
 
   const std::string jittered = writeDump(
@@ -119,7 +121,7 @@ TEST(trajectory, TimeChannelAndIrregularSampling) {
       });
   const Trajectory b = loadTrajectory(BiipReader(jittered));
   EXPECT_TRUE(b.irregularTime);
-  EXPECT_DOUBLE_EQ(b.time[3], 0.0063);
+  EXPECT_DOUBLE_EQ(b.timeAt(3), 0.0063);
 }
 
 TEST(trajectory, NonFiniteSamplesAreKept) {
@@ -160,7 +162,7 @@ TEST(trajectory, FromSimulationSamples) {
   EXPECT_TRUE(t.hasFeedback());
   EXPECT_EQ(t.line[4], 7u);
   EXPECT_EQ(t.block[3], 1u);
-  EXPECT_DOUBLE_EQ(t.time[4], 0.016);
+  EXPECT_DOUBLE_EQ(t.timeAt(4), 0.016);
   EXPECT_DOUBLE_EQ(t.fbX[2], 1.9);
   EXPECT_DOUBLE_EQ(t.feed[0], 1500);
   EXPECT_EQ(t.commanded(2), Vec3(2, 4, -1));
@@ -180,6 +182,27 @@ TEST(trajectory, IrregularTimeCheck) {
   EXPECT_FALSE(timeIsIrregular(regular.data(), regular.size(), 0.001));
   EXPECT_TRUE(timeIsIrregular(late.data(), late.size(), 0.001));
   EXPECT_FALSE(timeIsIrregular(nullptr, 0, 0.001));
+}
+
+// Written back, regular samples take their start and cycle to the header (no t channel), and
+// recorded times stay as they were.
+TEST(trajectory, WrittenTimesReadBackTheSame) {
+  Trajectory regular;
+  regular.cycle = 0.004;
+  regular.startTime = 2.5;
+  for (int i = 0; i < 5; ++i) regular.x.push_back(i), regular.y.push_back(0), regular.z.push_back(0), regular.line.push_back(1);
+  Trajectory recorded = regular;
+  recorded.time = {0, 0.004, 0.009, 0.012, 0.016};
+  for (const Trajectory* written : {&regular, &recorded}) {
+    const std::string path = (scratchDir() / "written-times.biip").string();
+    writeTrajectoryBiip(*written, path);
+    const BiipReader reader(path);
+    EXPECT_EQ(reader.hasChannel("t"), !written->time.empty());
+    const Trajectory back = loadTrajectory(reader);
+    ASSERT_EQ(back.size(), 5u);
+    for (std::size_t i = 0; i < 5; ++i) EXPECT_DOUBLE_EQ(back.timeAt(i), written->timeAt(i));
+  }
+  EXPECT_DOUBLE_EQ(regular.timeAt(4), 2.516);
 }
 
 }  // namespace

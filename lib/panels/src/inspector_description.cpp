@@ -53,7 +53,7 @@ std::string Inspector::describe() const {
                         {"samples", doc->samples ? doc->samples->size() : 0},
                         {"machine", doc->machineKnown ? doc->machine.name : ""}};
     if (doc->samples && doc->samples->size() > 1)
-      d["duration_s"] = doc->samples->time.back() - doc->samples->time.front();
+      d["duration_s"] = doc->samples->timeAt(doc->samples->size() - 1) - doc->samples->timeAt(0);
     documents.push_back(d);
   }
   const app_model::Selection& sel = s.selection.current();

@@ -43,7 +43,7 @@ std::string figuresJson(const Document& doc) {
                         {"dump", doc.dumpPath},
                         {"machine", doc.machineKnown ? doc.machine.name : ""},
                         {"samples", doc.samples->size()},
-                        {"machining_time_s", doc.samples->size() > 1 ? doc.samples->time.back() - doc.samples->time.front() : 0.0},
+                        {"machining_time_s", machiningTime(*doc.samples)},
                         {"quantity", doc.map.style.quantityLabel},
                         {"unit", doc.map.style.unit},
                         {"colour_range", {doc.map.style.range.lo, doc.map.style.range.hi}},
@@ -84,7 +84,7 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
       while (runLast < t.size() && runLast - runFirst < kCsvRun && t.line[runLast] >= first && t.line[runLast] <= last) ++runLast;
       for (std::size_t c = 0; c < doc.curves.size(); ++c) curveValues[c] = doc.curves[c].values.values(runFirst, runLast);
     }
-    out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.time[k], t.line[k], t.x[k], t.y[k], t.z[k]);
+    out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.timeAt(k), t.line[k], t.x[k], t.y[k], t.z[k]);
     if (feedback) {
       const Vec3 f = t.feedback(k);
       out += fmt::format(",{:.6f},{:.6f},{:.6f}", f.x(), f.y(), f.z());

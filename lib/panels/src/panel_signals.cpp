@@ -45,7 +45,7 @@ std::vector<double> niceTicks(double lo, double hi, int count) {
 void drawTimeAxis(const Trajectory& t, std::size_t first, std::size_t last, ImVec2 origin, float width) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   if (last <= first + 1 || last > t.size()) return;
-  const double t0 = t.time[first], t1 = t.time[last - 1];
+  const double t0 = t.timeAt(first), t1 = t.timeAt(last - 1);
   for (double tick : niceTicks(t0, t1, std::max(2, static_cast<int>(width / 90)))) {
     const float px = origin.x + static_cast<float>((tick - t0) / (t1 - t0)) * width;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, origin.y + 4), IM_COL32(200, 200, 200, 255));
@@ -102,7 +102,7 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, end.y), IM_COL32(255, 210, 40, 255), 1.5f);
-    std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample) * scale, t.time[*sel.sample]);
+    std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample) * scale, t.timeAt(*sel.sample));
     draw->AddText(ImVec2(std::min(px + 4, end.x - 150), end.y - 16), IM_COL32(255, 210, 40, 255), label);
   }
   ImGui::SetCursorScreenPos(origin);

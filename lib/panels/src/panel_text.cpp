@@ -135,7 +135,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
         if (ImGui::Selectable(index, sel.sample && *sel.sample == i, ImGuiSelectableFlags_SpanAllColumns))
           s.selection.selectSample(i);
         ImGui::TableNextColumn();
-        ImGui::Text("%.3f", t.time[i]);
+        ImGui::Text("%.3f", t.timeAt(i));
         ImGui::TableNextColumn();
         ImGui::Text("%u", t.line[i]);
         for (double v : {t.x[i], t.y[i], t.z[i]}) {

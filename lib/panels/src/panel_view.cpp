@@ -159,7 +159,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       const DisplayUnits u = s.units();
       const int d = u.lengthDecimals();
       std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.*f  Y %.*f  Z %.*f %s\n"
-                    "v %.1f %s   a %.1f %s   j %.0f %s", k, t.line[k], t.time[k], d, u.length(t.x[k]), d,
+                    "v %.1f %s   a %.1f %s   j %.0f %s", k, t.line[k], t.timeAt(k), d, u.length(t.x[k]), d,
                     u.length(t.y[k]), d, u.length(t.z[k]), u.lengthUnit(), u.length(doc->curves[0].values.value(k)),
                     u.feedUnit(), u.length(doc->curves[1].values.value(k)), u.accelerationUnit(),
                     u.length(doc->curves[2].values.value(k)), u.jerkUnit());

@@ -85,18 +85,18 @@ std::size_t maps(HtmlDocument& doc, const OpenedRun& run, const ProgressCallback
 // many passes, and the seconds around its worst point show what the machine did there.
 void regionPlots(HtmlDocument& doc, const Trajectory& t, const QualityRegion& r, const std::vector<double>& speed,
                  const std::vector<double>& accel) {
-  const double centre = t.time[r.worstSample];
+  const double centre = t.timeAt(r.worstSample);
   std::size_t first = r.worstSample, last = r.worstSample;
-  while (first > 0 && t.time[first - 1] >= centre - kPlotSeconds) --first;
-  while (last + 1 < t.size() && t.time[last + 1] <= centre + kPlotSeconds) ++last;
+  while (first > 0 && t.timeAt(first - 1) >= centre - kPlotSeconds) --first;
+  while (last + 1 < t.size() && t.timeAt(last + 1) <= centre + kPlotSeconds) ++last;
   if (first >= last) return;
   const std::size_t stride = std::max<std::size_t>(1, (last - first) / kPlotPoints);
   const std::string around = fmt::format("around the worst point (line {}, {:.2f} s)", t.line[r.worstSample], centre);
   vis::LinePlot speedPlot{"Path speed " + around, "time (s)", "mm/min", {}, {{"speed (mm/min)", {}}}};
   vis::LinePlot accelPlot{"Tangential acceleration " + around, "time (s)", "mm/s^2", {}, {{"acceleration (mm/s^2)", {}}}};
   for (std::size_t i = first; i <= last; i += stride) {
-    speedPlot.x.push_back(t.time[i]);
-    accelPlot.x.push_back(t.time[i]);
+    speedPlot.x.push_back(t.timeAt(i));
+    accelPlot.x.push_back(t.timeAt(i));
     speedPlot.series[0].y.push_back(speed[i]);
     accelPlot.series[0].y.push_back(accel[i]);
   }

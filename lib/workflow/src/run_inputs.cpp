@@ -172,7 +172,9 @@ void readSamples(const OpenRunRequest& request, const ProgressCallback& progress
   } else {
     const BiipReader reader(path);
     for (const std::string& w : reader.warnings()) run.warnings.push_back(path + ": " + w);
-    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), request.channels));
+    TrajectoryChannels channels = request.channels;
+    channels.block = run.program != nullptr;  // a move index means nothing without the program's moves
+    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), channels));
     if (run.program && !request.force) mismatch = dumpMismatch(reader, *samples, *run.program);
     const std::optional<Machine> own = machineOfDump(reader);
     run.machineKnown = own.has_value();

@@ -105,7 +105,7 @@ double plainValue(Quantity q, const Trajectory& s, std::size_t i) {
   switch (q) {
     case Quantity::FollowingError: return 1000.0 * (s.feedback(i) - s.commanded(i)).norm();
     case Quantity::Line: return double(s.line[i]);
-    case Quantity::Time: return s.time[i];
+    case Quantity::Time: return s.timeAt(i);
     case Quantity::Feed: return s.feed[i];
     default: return kNaN;
   }

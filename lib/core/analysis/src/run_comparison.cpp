@@ -66,8 +66,8 @@ LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys
     const std::uint32_t line = keyOf(t.line[i]);
     if (line == 0) continue;
     if (index.offsets[slotOf(line) + 1]++ == 0) index.order.push_back(line);
-    if (!started) index.firstTime = t.time[i], started = true;
-    index.lastTime = t.time[i];
+    if (!started) index.firstTime = t.timeAt(i), started = true;
+    index.lastTime = t.timeAt(i);
   }
   for (std::size_t k = 1; k < index.offsets.size(); ++k) index.offsets[k] += index.offsets[k - 1];
   std::vector<std::size_t> fill(index.offsets.begin(), index.offsets.end() - 1);
@@ -79,7 +79,7 @@ LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys
 
 // The time sample i stands for: up to the next sample (the last one: one cycle).
 double sampleDuration(const Trajectory& t, std::size_t i) {
-  const double dt = i + 1 < t.size() ? t.time[i + 1] - t.time[i] : t.cycle;
+  const double dt = i + 1 < t.size() ? t.timeAt(i + 1) - t.timeAt(i) : t.cycle;
   return std::isfinite(dt) && dt > 0 ? dt : 0.0;
 }
 
@@ -168,8 +168,8 @@ class Aligner {
                     at.at([&](std::size_t j) { return b_.z[j]; }));
       const double speed = at.at([&](std::size_t j) { return speedB_[j]; }) - speedA_[i];
       const double position = (pb - a_.commanded(i)).norm();
-      const double timeB = at.at([&](std::size_t j) { return b_.time[j]; }) - ib.firstTime;
-      const double time = timeB - (a_.time[i] - ia.firstTime);
+      const double timeB = at.at([&](std::size_t j) { return b_.timeAt(j); }) - ib.firstTime;
+      const double time = timeB - (a_.timeAt(i) - ia.firstTime);
       out_.speedDifference[i] = std::isfinite(speed) ? float(speed) : kNoValue;
       out_.positionDistance[i] = std::isfinite(position) ? float(position) : kNoValue;
       out_.timeDifference[i] = std::isfinite(time) ? float(time) : kNoValue;

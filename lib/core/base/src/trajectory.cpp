@@ -23,8 +23,8 @@ bool timeIsIrregular(const double* time, std::size_t n, double cycle) {
 }
 
 double machiningTime(const Trajectory& samples) {
-  if (samples.size() < 2 || samples.time.size() != samples.size()) return 0;
-  const double span = samples.time.back() - samples.time.front();
+  if (samples.size() < 2 || (!samples.time.empty() && samples.time.size() != samples.size())) return 0;
+  const double span = samples.timeAt(samples.size() - 1) - samples.timeAt(0);
   return std::isfinite(span) && span > 0 ? span : 0;
 }
 

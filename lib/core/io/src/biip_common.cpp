@@ -94,12 +94,24 @@ std::uint64_t BiipChannelView::integer(std::size_t i) const {
 }
 
 namespace {
-template <class T>
-void copyAs(const unsigned char* p, std::size_t stride, double* out, std::size_t count) {
+template <class T, class Out>
+void copyAs(const unsigned char* p, std::size_t stride, Out* out, std::size_t count) {
   for (std::size_t i = 0; i < count; ++i, p += stride) {
     T v;
     std::memcpy(&v, p, sizeof v);
-    out[i] = static_cast<double>(v);
+    out[i] = static_cast<Out>(v);
+  }
+}
+
+template <class Out>
+void copyChannel(const unsigned char* p, std::size_t stride, BiipType type, Out* out, std::size_t count) {
+  switch (type) {
+    case BiipType::F64: copyAs<double>(p, stride, out, count); break;
+    case BiipType::F32: copyAs<float>(p, stride, out, count); break;
+    case BiipType::I32: copyAs<std::int32_t>(p, stride, out, count); break;
+    case BiipType::U32: copyAs<std::uint32_t>(p, stride, out, count); break;
+    case BiipType::I64: copyAs<std::int64_t>(p, stride, out, count); break;
+    case BiipType::U64: copyAs<std::uint64_t>(p, stride, out, count); break;
   }
 }
 }  // namespace
@@ -107,15 +119,13 @@ void copyAs(const unsigned char* p, std::size_t stride, double* out, std::size_t
 void BiipChannelView::copyTo(double* out, std::size_t begin, std::size_t count) const {
   if (!valid() || begin >= count_) return;
   if (count > count_ - begin) count = count_ - begin;
-  const unsigned char* p = first_ + begin * stride_;
-  switch (type_) {
-    case BiipType::F64: copyAs<double>(p, stride_, out, count); break;
-    case BiipType::F32: copyAs<float>(p, stride_, out, count); break;
-    case BiipType::I32: copyAs<std::int32_t>(p, stride_, out, count); break;
-    case BiipType::U32: copyAs<std::uint32_t>(p, stride_, out, count); break;
-    case BiipType::I64: copyAs<std::int64_t>(p, stride_, out, count); break;
-    case BiipType::U64: copyAs<std::uint64_t>(p, stride_, out, count); break;
-  }
+  copyChannel(first_ + begin * stride_, stride_, type_, out, count);
+}
+
+void BiipChannelView::copyTo(float* out, std::size_t begin, std::size_t count) const {
+  if (!valid() || begin >= count_) return;
+  if (count > count_ - begin) count = count_ - begin;
+  copyChannel(first_ + begin * stride_, stride_, type_, out, count);
 }
 
 }  // namespace isurface

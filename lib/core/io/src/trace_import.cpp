@@ -164,10 +164,8 @@ class TrajectoryBuilder {
       }
       t.time = std::move(time_);
       t.irregularTime = timeIsIrregular(t.time.data(), t.time.size(), t.cycle);
-    } else {
-      t.time.resize(rows_);
-      for (std::size_t i = 0; i < rows_; ++i) t.time[i] = double(i) * t.cycle;
     }
+    t.feed.assign(feedValues_.begin(), feedValues_.end());
     t.hasLine = !lineValues_.empty();
     t.line.assign(rows_, 0);
     for (std::size_t i = 0; i < lineValues_.size(); ++i) {
@@ -187,7 +185,7 @@ class TrajectoryBuilder {
       case Target::FbX: return t_.fbX;
       case Target::FbY: return t_.fbY;
       case Target::FbZ: return t_.fbZ;
-      case Target::Feed: return t_.feed;
+      case Target::Feed: return feedValues_;
       case Target::Line: return lineValues_;
       case Target::Time: return time_;
       case Target::Extra: break;
@@ -214,7 +212,7 @@ class TrajectoryBuilder {
   std::string file_;
   Trajectory t_;
   std::vector<Binding> bindings_;
-  std::vector<double> lineValues_, time_;
+  std::vector<double> lineValues_, feedValues_, time_;
   std::size_t rows_ = 0;
 };
 

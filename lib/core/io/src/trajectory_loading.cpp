@@ -55,6 +55,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   const BiipChannelView t = reader.channel("t");
   const BiipChannelView line = reader.channel("line");
   const BiipChannelView block = reader.channel("block");
+  const bool useBlock = block.valid() && channels.block;
   const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
   out.hasLine = line.valid();
 
@@ -77,7 +78,8 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
     add("fb_y", out.fbY);
     add("fb_z", out.fbZ);
   }
-  if (reader.hasChannel("feed")) add("feed", out.feed);
+  const BiipChannelView feed = reader.channel("feed");
+  if (feed.valid()) out.feed.resize(n);
   for (const BiipChannel& c : header.channels) {
     if (!channels.extra || isKnownChannel(c.name, feedbackComplete)) continue;
     out.extra.emplace_back(c.name, std::vector<double>());
@@ -86,19 +88,18 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   for (auto& [name, values] : out.extra) add(name, values);
 
   out.line.assign(n, 0);
-  if (block.valid()) out.block.resize(n);
-  if (!t.valid()) out.time.resize(n);
+  if (useBlock) out.block.resize(n);
+  if (!t.valid()) out.startTime = header.t0Seconds;
 
   std::size_t nextReport = kProgressRecords;
   for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
     const std::size_t count = std::min(kChunkRecords, n - begin);
     for (const Copy& c : copies) c.view.copyTo(c.to->data() + begin, begin, count);
+    if (feed.valid()) feed.copyTo(out.feed.data() + begin, begin, count);
     if (line.valid())
       for (std::size_t i = begin; i < begin + count; ++i) out.line[i] = clampToU32(line.integer(i));
-    if (block.valid())
+    if (useBlock)
       for (std::size_t i = begin; i < begin + count; ++i) out.block[i] = clampToU32(block.integer(i));
-    if (!t.valid())
-      for (std::size_t i = begin; i < begin + count; ++i) out.time[i] = header.t0Seconds + double(i) * header.cycleSeconds;
     reader.releaseRecords(begin, begin + count);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));

@@ -13,7 +13,8 @@ TrajectorySink::TrajectorySink(double cycle, std::string source, bool feedback) 
 
 void TrajectorySink::expect(std::size_t samples) {
   Trajectory& t = trajectory_;
-  for (std::vector<double>* channel : {&t.time, &t.x, &t.y, &t.z, &t.feed}) channel->reserve(samples);
+  for (std::vector<double>* channel : {&t.x, &t.y, &t.z}) channel->reserve(samples);
+  t.feed.reserve(samples);
   if (feedback_)
     for (std::vector<double>* channel : {&t.fbX, &t.fbY, &t.fbZ}) channel->reserve(samples);
   t.line.reserve(samples);
@@ -24,13 +25,12 @@ void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
   Trajectory& t = trajectory_;
   for (std::size_t k = 0; k < count; ++k) {
     const SimSample& s = samples[k];
-    t.time.push_back(double(t.time.size()) * t.cycle);
     t.line.push_back(s.line);
     t.block.push_back(s.block);
     t.x.push_back(s.x);
     t.y.push_back(s.y);
     t.z.push_back(s.z);
-    t.feed.push_back(s.feed);
+    t.feed.push_back(static_cast<float>(s.feed));
   }
   if (!feedback_) return;
   for (std::size_t k = 0; k < count; ++k) {

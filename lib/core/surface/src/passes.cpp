@@ -161,7 +161,7 @@ std::vector<char> rapidFromSpeed(const Trajectory& s) {
   if (n < 3) return out;
   std::vector<double> speed(n, 0);  // mm/s, central differences
   for (std::size_t i = 1; i + 1 < n; ++i) {
-    const double dt = s.time[i + 1] - s.time[i - 1];
+    const double dt = s.timeAt(i + 1) - s.timeAt(i - 1);
     const double d = (s.commanded(i + 1) - s.commanded(i - 1)).norm();
     speed[i] = dt > 0 && std::isfinite(d) ? d / dt : 0;
   }

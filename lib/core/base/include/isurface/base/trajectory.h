@@ -13,12 +13,15 @@ namespace isurface {
 struct Trajectory {
   std::string source;                // file the samples came from
   double cycle = 0.001;              // s, nominal sample period
-  std::vector<double> time;          // s, per sample
+  double startTime = 0;              // s, time of sample 0 when `time` is empty
+  // s, per sample, only where the source recorded times (a dump's `t` channel, a trace's time
+  // column); empty when sample i is at startTime + i * cycle, which saves 8 bytes a sample.
+  std::vector<double> time;
   std::vector<std::uint32_t> line;   // 1-based G-code line, 0 unknown (all 0 when absent)
   std::vector<std::uint32_t> block;  // move index, when the dump has one (else empty)
   std::vector<double> x, y, z;       // commanded position, mm
   std::vector<double> fbX, fbY, fbZ; // feedback position, mm (empty when absent)
-  std::vector<double> feed;          // programmed feed, mm/min (empty when absent)
+  std::vector<float> feed;           // programmed feed, mm/min (empty when absent; 7 digits suffice)
   // Any other numeric channel of the dump, kept to colour by.
   std::vector<std::pair<std::string, std::vector<double>>> extra;
   bool hasLine = false;              // the dump had a `line` channel
@@ -29,6 +32,7 @@ struct Trajectory {
   std::size_t size() const { return x.size(); }
   bool hasFeedback() const { return !fbX.empty(); }
   bool hasFeed() const { return !feed.empty(); }
+  double timeAt(std::size_t i) const { return time.empty() ? startTime + double(i) * cycle : time[i]; }
   // The `extra` channel of that name, nullptr when absent.
   const std::vector<double>* extraChannel(const std::string& name) const;
   Vec3 commanded(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }

@@ -77,6 +77,7 @@ class BiipChannelView {
   std::uint64_t integer(std::size_t i) const;
   // Converts values [begin, begin + count) to doubles; count is clipped to the view's size.
   void copyTo(double* out, std::size_t begin, std::size_t count) const;
+  void copyTo(float* out, std::size_t begin, std::size_t count) const;
 
   static double convert(const unsigned char* p, BiipType type) {
     switch (type) {

@@ -11,9 +11,10 @@ class BiipReader;
 
 using TrajectoryProgress = std::function<void(double)>;
 
-// Which channels loadTrajectory copies besides time, line, block, x y z and feed (48 bytes a
-// sample as doubles and u32).
+// Which channels loadTrajectory copies besides line, x y z and feed (36 bytes a sample; the
+// time only when the dump records it in a t channel).
 struct TrajectoryChannels {
+  bool block = true;     // the move index: 4 bytes a sample, used only to join a program's moves
   bool feedback = true;  // fb_x fb_y fb_z: 24 bytes a sample
   bool extra = true;     // every other channel of the dump: 8 bytes a sample each
 };
