@@ -192,7 +192,7 @@ unsigned int SceneView::render(int width, int height) {
   if (!resized && !invalidated_ && !dragging_ && d.coarse == dragging_ && view == d.camera && d.texture)
     return d.texture;
   scene_->useCoarseSurface(dragging_);
-  scene_->syncAxes();
+  scene_->followCamera();
   // ImGui changes GL state behind VTK's back: let VTK start from what is really bound.
   d.window->GetState()->Reset();
   d.window->GetState()->Push();

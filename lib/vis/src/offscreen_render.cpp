@@ -74,7 +74,7 @@ std::string renderOffscreen(int width, int height, const std::function<void(vtkR
 std::string renderSceneToPngBytes(QualityScene& scene, int width, int height) {
   return renderOffscreen(width, height, [&](vtkRenderWindow* window) {
     scene.attachTo(window);
-    scene.syncAxes();
+    scene.followCamera();
   });
 }
 

@@ -26,6 +26,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "isurface/base/units.h"
+#include "isurface/surface/surface_mesh.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/detail_surface.h"
 #include "scene_actors.h"
@@ -95,7 +97,9 @@ struct QualityScene::Parts {
   MapStyle style;
   vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
-  bool coarse = false, showSurface = true, detailAllowed = true;
+  bool coarse = false, showSurface = true, detailAllowed = true, showToolpath = true;
+  double passSpacing = 0;  // mm, median distance between neighbouring passes
+  double toolpathOpacity = 1;  // the toolpath's own, where its passes lie far enough apart
   vtkSmartPointer<vtkScalarBarActor> legend;
   vtkSmartPointer<vtkTextActor> caption;
   std::string captionText, legendText;
@@ -129,6 +133,8 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
 
   if (style.showToolpath && !data.toolpath.empty()) {
     p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);
+    p.toolpathOpacity = p.toolpathActor->GetProperty()->GetOpacity();
+    p.passSpacing = medianPassSpacing(data.positions, *data.mesh);
     p.renderer->AddActor(p.toolpathActor);
   }
 
@@ -279,7 +285,8 @@ void QualityScene::setVisibility(bool surface, bool toolpath, bool points) {
   Parts& p = *parts_;
   p.showSurface = surface;
   useCoarseSurface(p.coarse);
-  if (p.toolpathActor) p.toolpathActor->SetVisibility(toolpath);
+  p.showToolpath = toolpath;
+  fadeDenseToolpath();
   p.pointsActor->SetVisibility(points);
 }
 
@@ -309,7 +316,7 @@ void QualityScene::setView(ViewDirection view) {
   camera->ParallelProjectionOn();
   parts_->renderer->ResetCamera(bounds);
   camera->Zoom(1.15);
-  syncAxes();
+  followCamera();
 }
 
 void QualityScene::frameBox(const Vec3& lower, const Vec3& upper) {
@@ -344,10 +351,11 @@ void QualityScene::frameBox(const Vec3& lower, const Vec3& upper) {
     camera->SetPosition(focal[0] + direction[0] * away, focal[1] + direction[1] * away, focal[2] + direction[2] * away);
   }
   parts_->renderer->ResetCameraClippingRange();  // the whole surface, not the box
-  syncAxes();
+  followCamera();
 }
 
-void QualityScene::syncAxes() {
+void QualityScene::followCamera() {
+  fadeDenseToolpath();
   vtkCamera* main = parts_->renderer->GetActiveCamera();
   vtkCamera* corner = parts_->axesCorner->GetActiveCamera();
   double position[3], focal[3];
@@ -360,6 +368,24 @@ void QualityScene::syncAxes() {
   corner->SetPosition(4 * direction[0], 4 * direction[1], 4 * direction[2]);
   corner->SetViewUp(main->GetViewUp());
   parts_->axesCorner->ResetCamera();
+}
+
+// As the pass wires do (pass_wire.frag.glsl): full from 6 pixels apart, gone at 2.
+void QualityScene::fadeDenseToolpath() {
+  Parts& p = *parts_;
+  if (!p.toolpathActor) return;
+  const int* size = p.renderer->GetSize();
+  vtkCamera* camera = p.renderer->GetActiveCamera();
+  double apart = 1;
+  if (p.passSpacing > 0 && size && size[1] > 0) {
+    const double shown = camera->GetParallelProjection()
+                             ? 2 * camera->GetParallelScale()
+                             : 2 * camera->GetDistance() * std::tan(0.5 * camera->GetViewAngle() * kPi / 180);
+    const double pixels = p.passSpacing * size[1] / shown;
+    if (std::isfinite(pixels)) apart = std::clamp((pixels - 2) / 4, 0.0, 1.0);
+  }
+  p.toolpathActor->GetProperty()->SetOpacity(p.toolpathOpacity * apart);
+  p.toolpathActor->SetVisibility(p.showToolpath && apart > 0);
 }
 
 vtkRenderer* QualityScene::renderer() const { return parts_->renderer; }

@@ -299,4 +299,20 @@ std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices) {
   return std::max<std::size_t>(1, (cutting + budget - 1) / budget);
 }
 
+double medianPassSpacing(const std::vector<Vec3>& positions, const SurfaceMesh& mesh) {
+  const std::size_t n = std::min(positions.size(), mesh.nextPassNeighbour.size());
+  const std::size_t step = std::max<std::size_t>(1, n / 4096);
+  std::vector<double> spacing;
+  for (std::size_t v = 0; v < n; v += step) {
+    const std::uint32_t next = mesh.nextPassNeighbour[v];
+    if (next == kNoVertex || next >= positions.size()) continue;
+    const double d = (positions[next] - positions[v]).norm();
+    if (std::isfinite(d) && d > 0) spacing.push_back(d);
+  }
+  if (spacing.empty()) return 0;
+  auto middle = spacing.begin() + static_cast<std::ptrdiff_t>(spacing.size() / 2);
+  std::nth_element(spacing.begin(), middle, spacing.end());
+  return *middle;
+}
+
 }  // namespace isurface

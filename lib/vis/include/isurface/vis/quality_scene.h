@@ -66,8 +66,9 @@ class QualityScene {
   // Keeps the view's direction and fills the view with a box of the surface (mm), with a
   // margin around it: a region's close-up.
   void frameBox(const Vec3& lower, const Vec3& upper);
-  // Keeps the axes corner turned like the main camera; call before each render.
-  void syncAxes();
+  // Keeps the axes corner turned like the main camera, and fades the toolpath out where its
+  // passes lie closer than a few pixels (they would cover the colours); call before each render.
+  void followCamera();
 
   // The glowing samples: a selected line's, and the selected sample itself (brighter, larger).
   void setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample);
@@ -91,6 +92,7 @@ class QualityScene {
   vtkLookupTable* lookupTable() const;
 
  private:
+  void fadeDenseToolpath();
   struct Parts;
   Parts* parts_;
 };
