@@ -6,7 +6,9 @@
 #include <vector>
 
 #include "isurface/io/biip.h"
+#include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/interpolator.h"
+#include "isurface/nc/simulator.h"
 #include "isurface/base/trajectory.h"
 #include "isurface/io/trajectory_loading.h"
 #include "isurface/io/trajectory_writing.h"
@@ -166,6 +168,25 @@ TEST(trajectory, FromSimulationSamples) {
   EXPECT_DOUBLE_EQ(t.fbX[2], 1.9);
   EXPECT_DOUBLE_EQ(t.feed[0], 1500);
   EXPECT_EQ(t.commanded(2), Vec3(2, 4, -1));
+}
+
+// Without feedback the servo is not simulated, and the commanded samples are the same.
+TEST(trajectory, ASimulationWithoutFeedbackCommandsTheSame) {
+  const InterpretResult program = interpretGcode("G21 G90 G64\nG1 X10 Y2 F1200\nG2 X20 Y2 R5\nG1 Z-1\n", "sim.nc");
+  ASSERT_TRUE(program.ok());
+  const Machine machine = defaultMachine();
+  TrajectorySink withServo(machine.cycle, "sim.nc", true), without(machine.cycle, "sim.nc", false);
+  simulate(program.program, machine, withServo);
+  simulate(program.program, machine, without);
+  const Trajectory a = withServo.take(), b = without.take();
+  EXPECT_TRUE(a.hasFeedback());
+  EXPECT_FALSE(b.hasFeedback());
+  ASSERT_EQ(a.size(), b.size());
+  EXPECT_EQ(a.x, b.x);
+  EXPECT_EQ(a.y, b.y);
+  EXPECT_EQ(a.z, b.z);
+  EXPECT_EQ(a.line, b.line);
+  EXPECT_EQ(a.feed, b.feed);
 }
 
 TEST(trajectory, RapidRateFromMetadata) {

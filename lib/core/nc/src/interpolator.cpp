@@ -170,6 +170,7 @@ struct StreamingInterpolator::Impl {
        SampleSink& s)
       : machine(m),
         sink(s),
+        feedback(s.wantsFeedback()),
         start(startPosition),
         walker(startPosition, holdBefore),
         holdBefore(holdBefore),
@@ -191,9 +192,13 @@ struct StreamingInterpolator::Impl {
     s.x = commanded[0];
     s.y = commanded[1];
     s.z = commanded[2];
-    s.fbX = servos[0].step(commanded[0]);
-    s.fbY = servos[1].step(commanded[1]);
-    s.fbZ = servos[2].step(commanded[2]);
+    if (feedback) {
+      s.fbX = servos[0].step(commanded[0]);
+      s.fbY = servos[1].step(commanded[1]);
+      s.fbZ = servos[2].step(commanded[2]);
+    } else {
+      s.fbX = s.fbY = s.fbZ = std::numeric_limits<double>::quiet_NaN();
+    }
     s.feed = tag.feedMmMin;
     batch.push_back(s);
     if (batch.size() == kBatch) flush();
@@ -279,6 +284,7 @@ struct StreamingInterpolator::Impl {
   static constexpr std::size_t kBatch = 4096;
   const Machine& machine;
   SampleSink& sink;
+  const bool feedback;
   const Vec3 start;
   ProfileWalker walker;
   const double holdBefore;

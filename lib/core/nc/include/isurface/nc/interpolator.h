@@ -26,6 +26,9 @@ class SampleSink {
   // About how many samples are coming (a hint, given once the plan is known: room can be made
   // for them at once instead of growing as they come).
   virtual void expect(std::size_t /*samples*/) {}
+  // False when the sink drops the servo's positions: the servo is then not simulated (fbX, fbY
+  // and fbZ of its samples are NaN).
+  virtual bool wantsFeedback() const { return true; }
   virtual void consume(const SimSample* samples, std::size_t count) = 0;
 };
 

@@ -17,6 +17,7 @@ class TrajectorySink : public SampleSink {
   TrajectorySink(double cycle, std::string source, bool feedback = true);
   void expect(std::size_t samples) override;
   void consume(const SimSample* samples, std::size_t count) override;
+  bool wantsFeedback() const override { return feedback_; }
   Trajectory take() { return std::move(trajectory_); }
 
  private:
