@@ -46,7 +46,7 @@ template <class Keep>
 Trajectory filtered(const Trajectory& t, Keep keep) {
   Trajectory out = t;
   out.time.clear(), out.line.clear(), out.x.clear(), out.y.clear(), out.z.clear(), out.block.clear();
-  out.fbX.clear(), out.fbY.clear(), out.fbZ.clear(), out.feed.clear(), out.extra.clear();
+  out.fbOffsetX.clear(), out.fbOffsetY.clear(), out.fbOffsetZ.clear(), out.feed.clear(), out.extra.clear();
   for (std::size_t i = 0; i < t.size(); ++i) {
     if (!keep(i)) continue;
     out.time.push_back(t.timeAt(i)), out.line.push_back(t.line[i]);
@@ -169,13 +169,13 @@ TEST(runComparison, feedbackIsComparedWhenBothRunsHaveIt) {
   const Trajectory a = simulateText(zigzag(1200), "a.nc");
   ASSERT_TRUE(a.hasFeedback());
   Trajectory b = a;
-  for (double& y : b.fbY) y += 0.01;  // mm
+  for (float& y : b.fbOffsetY) y += 0.01f;  // mm
   const RunComparison c = compareRuns(a, b);
   ASSERT_TRUE(c.feedbackCompared);
   ASSERT_TRUE(c.total.maxFeedbackDistance.has_value());
-  EXPECT_NEAR(*c.total.maxFeedbackDistance, 0.01, 1e-9);
+  EXPECT_NEAR(*c.total.maxFeedbackDistance, 0.01, 1e-8);  // offsets are floats: 1e-7 of themselves
   EXPECT_NEAR(c.total.maxPositionDistance, 0.0, 1e-12);
-  b.fbX.clear(), b.fbY.clear(), b.fbZ.clear();
+  b.fbOffsetX.clear(), b.fbOffsetY.clear(), b.fbOffsetZ.clear();
   EXPECT_FALSE(compareRuns(a, b).total.maxFeedbackDistance.has_value());
 }
 

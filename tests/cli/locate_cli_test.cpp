@@ -109,8 +109,9 @@ TEST(locate, CommandPrintsTheMotion) {
   EXPECT_DOUBLE_EQ(j["jerk_axes_mm_s3"][1].get<double>(), m.jerkAxes.y());
   EXPECT_DOUBLE_EQ(j["time_s"].get<double>(), t.timeAt(k));
   EXPECT_DOUBLE_EQ(j["feed_mm_min"].get<double>(), t.feed[k]);
-  EXPECT_DOUBLE_EQ(j["feedback"][0].get<double>(), t.fbX[k]);
-  EXPECT_NEAR(j["following_error_um"].get<double>(), 1000.0 * (t.feedback(k) - t.commanded(k)).norm(), 1e-9);
+  // The window holds feedback as float offsets from the commanded position (1e-7 of the lag).
+  EXPECT_NEAR(j["feedback"][0].get<double>(), t.feedback(k).x(), 1e-9);
+  EXPECT_NEAR(j["following_error_um"].get<double>(), 1000.0 * t.feedbackOffset(k).norm(), 1e-6);
   for (const char* key : {"file", "sample", "line", "time_s", "position", "feedback", "feed_mm_min", "speed_mm_min",
                           "accel_mm_s2", "jerk_mm_s3", "velocity_mm_min", "acceleration_mm_s2", "jerk_axes_mm_s3",
                           "following_error_um"})

@@ -83,7 +83,9 @@ TEST(trajectory, LoadsEveryChannel) {
     EXPECT_DOUBLE_EQ(t.x[r], value("x", r));
     EXPECT_DOUBLE_EQ(t.y[r], value("y", r));
     EXPECT_DOUBLE_EQ(t.z[r], value("z", r));
-    EXPECT_DOUBLE_EQ(t.fbZ[r], value("fb_z", r));
+    // Feedback is held as a float offset from the commanded position: to 1e-7 of the lag.
+    EXPECT_NEAR(t.feedback(r).x(), value("fb_x", r), 1e-10);
+    EXPECT_NEAR(t.feedback(r).z(), value("fb_z", r), 1e-10);
     EXPECT_DOUBLE_EQ(t.feed[r], 3000);
     EXPECT_FLOAT_EQ(static_cast<float>(t.extra[0].second[r]), static_cast<float>(value("spindle", r)));
   }
@@ -165,7 +167,7 @@ TEST(trajectory, FromSimulationSamples) {
   EXPECT_EQ(t.line[4], 7u);
   EXPECT_EQ(t.block[3], 1u);
   EXPECT_DOUBLE_EQ(t.timeAt(4), 0.016);
-  EXPECT_DOUBLE_EQ(t.fbX[2], 1.9);
+  EXPECT_NEAR(t.feedback(2).x(), 1.9, 1e-7);
   EXPECT_DOUBLE_EQ(t.feed[0], 1500);
   EXPECT_EQ(t.commanded(2), Vec3(2, 4, -1));
 }

@@ -103,7 +103,7 @@ TEST(inspectorWorkflow, RememberedSettingsThatNoLongerFitDoNotBlockOpening) {
   OpenRunRequest own;
   own.files = {"", transitionDump()};
   Trajectory samples = *openRun(own).samples;
-  samples.fbX.clear(), samples.fbY.clear(), samples.fbZ.clear();
+  samples.fbOffsetX.clear(), samples.fbOffsetY.clear(), samples.fbOffsetZ.clear();
   const std::string noFeedback = (scratchDir() / "no-feedback.biip").string();
   writeTrajectoryBiip(samples, noFeedback);
 

@@ -75,14 +75,10 @@ class PathSampler {
     if (!feed_) out.feed.clear();
     if (feedback_) {
       const std::size_t n = out.x.size();
-      out.fbX.resize(n);
-      out.fbY.resize(n);
-      out.fbZ.resize(n);
+      for (std::vector<float>* offset : {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ}) offset->resize(n);
       for (std::size_t i = 0; i < n; ++i) {
-        const Vec3 p = out.commanded(i), f = p + feedback_(p);
-        out.fbX[i] = f.x();
-        out.fbY[i] = f.y();
-        out.fbZ[i] = f.z();
+        const Vec3 p = out.commanded(i);
+        out.setFeedback(i, p + feedback_(p));
       }
     }
     return out;

@@ -147,7 +147,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
           ImGui::Text("%.5g", units.length(doc->curves[k].values.value(i)));
         }
         if (feedback)
-          for (double v : {t.fbX[i], t.fbY[i], t.fbZ[i]}) {
+          for (const double v : {t.feedback(i).x(), t.feedback(i).y(), t.feedback(i).z()}) {
             ImGui::TableNextColumn();
             ImGui::Text("%.*f", units.lengthDecimals(), units.length(v));
           }

@@ -6,10 +6,9 @@ namespace isurface::vis {
 
 PassSet passesInBox(const Trajectory& samples, const PassSet& passes, const Vec3& lower, const Vec3& upper,
                     bool feedback) {
-  const std::vector<double>& xs = feedback ? samples.fbX : samples.x;
-  const std::vector<double>& ys = feedback ? samples.fbY : samples.y;
   const auto inside = [&](std::size_t i) {
-    return xs[i] >= lower.x() && xs[i] <= upper.x() && ys[i] >= lower.y() && ys[i] <= upper.y();
+    const Vec3 p = feedback ? samples.feedback(i) : samples.commanded(i);
+    return p.x() >= lower.x() && p.x() <= upper.x() && p.y() >= lower.y() && p.y() <= upper.y();
   };
   PassSet out;
   out.pattern = passes.pattern;

@@ -103,7 +103,7 @@ const std::vector<double>* storedChannel(Quantity q, const Trajectory& s) {
 double plainValue(Quantity q, const Trajectory& s, std::size_t i) {
   if (const std::vector<double>* stored = storedChannel(q, s)) return (*stored)[i];
   switch (q) {
-    case Quantity::FollowingError: return 1000.0 * (s.feedback(i) - s.commanded(i)).norm();
+    case Quantity::FollowingError: return 1000.0 * s.feedbackOffset(i).norm();
     case Quantity::Line: return double(s.line[i]);
     case Quantity::Time: return s.timeAt(i);
     case Quantity::Feed: return s.feed[i];

@@ -175,8 +175,9 @@ class Aligner {
       out_.timeDifference[i] = std::isfinite(time) ? float(time) : kNoValue;
       acc.addSample(speed, position, pathDistance(a_.commanded(i), at));
       if (out_.feedbackCompared) {
-        const Vec3 fb(at.at([&](std::size_t j) { return b_.fbX[j]; }), at.at([&](std::size_t j) { return b_.fbY[j]; }),
-                      at.at([&](std::size_t j) { return b_.fbZ[j]; }));
+        const Vec3 fb(at.at([&](std::size_t j) { return b_.feedback(j).x(); }),
+                      at.at([&](std::size_t j) { return b_.feedback(j).y(); }),
+                      at.at([&](std::size_t j) { return b_.feedback(j).z(); }));
         acc.addFeedbackDistance((fb - a_.feedback(i)).norm());
       }
     }

@@ -150,9 +150,13 @@ class TrajectoryBuilder {
     Trajectory& t = t_;
     if (t.x.empty() || t.y.empty() || t.z.empty()) fail(file_, 0, 0, "the column mapping needs x, y and z");
     // Feedback is a position: one or two of its axes alone would be read past their end.
-    const int feedbackAxes = int(!t.fbX.empty()) + int(!t.fbY.empty()) + int(!t.fbZ.empty());
+    const int feedbackAxes = int(!feedback_[0].empty()) + int(!feedback_[1].empty()) + int(!feedback_[2].empty());
     if (feedbackAxes != 0 && feedbackAxes != 3)
       fail(file_, 0, 0, "the column mapping needs fb_x, fb_y and fb_z together, or none of them");
+    if (feedbackAxes == 3) {
+      for (std::vector<float>* offset : {&t.fbOffsetX, &t.fbOffsetY, &t.fbOffsetZ}) offset->resize(rows_);
+      for (std::size_t i = 0; i < rows_; ++i) t.setFeedback(i, Vec3(feedback_[0][i], feedback_[1][i], feedback_[2][i]));
+    }
     t.cycle = cycle;
     if (rows_ > 1 && !time_.empty() && !(time_.back() > time_.front()))
       fail(file_, 0, 0, fmt::format("time stands still ({:.9g} s on every row)", time_.front()));
@@ -182,9 +186,9 @@ class TrajectoryBuilder {
       case Target::X: return t_.x;
       case Target::Y: return t_.y;
       case Target::Z: return t_.z;
-      case Target::FbX: return t_.fbX;
-      case Target::FbY: return t_.fbY;
-      case Target::FbZ: return t_.fbZ;
+      case Target::FbX: return feedback_[0];
+      case Target::FbY: return feedback_[1];
+      case Target::FbZ: return feedback_[2];
       case Target::Feed: return feedValues_;
       case Target::Line: return lineValues_;
       case Target::Time: return time_;
@@ -213,6 +217,7 @@ class TrajectoryBuilder {
   Trajectory t_;
   std::vector<Binding> bindings_;
   std::vector<double> lineValues_, feedValues_, time_;
+  std::vector<double> feedback_[3];  // positions, mm, until the commanded ones are complete
   std::size_t rows_ = 0;
 };
 

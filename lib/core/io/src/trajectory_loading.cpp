@@ -73,10 +73,12 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   add("y", out.y);
   add("z", out.z);
   if (t.valid()) add("t", out.time);
-  if (feedbackComplete && channels.feedback) {
-    add("fb_x", out.fbX);
-    add("fb_y", out.fbY);
-    add("fb_z", out.fbZ);
+  const bool useFeedback = feedbackComplete && channels.feedback;
+  const BiipChannelView feedback[3] = {reader.channel("fb_x"), reader.channel("fb_y"), reader.channel("fb_z")};
+  std::vector<double> feedbackChunk;
+  if (useFeedback) {
+    for (std::vector<float>* offset : {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ}) offset->resize(n);
+    feedbackChunk.resize(kChunkRecords);
   }
   const BiipChannelView feed = reader.channel("feed");
   if (feed.valid()) out.feed.resize(n);
@@ -96,6 +98,15 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
     const std::size_t count = std::min(kChunkRecords, n - begin);
     for (const Copy& c : copies) c.view.copyTo(c.to->data() + begin, begin, count);
     if (feed.valid()) feed.copyTo(out.feed.data() + begin, begin, count);
+    if (useFeedback) {
+      const std::vector<double>* commanded[3] = {&out.x, &out.y, &out.z};
+      std::vector<float>* offset[3] = {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ};
+      for (int axis = 0; axis < 3; ++axis) {
+        feedback[axis].copyTo(feedbackChunk.data(), begin, count);
+        for (std::size_t k = 0; k < count; ++k)
+          (*offset[axis])[begin + k] = static_cast<float>(feedbackChunk[k] - (*commanded[axis])[begin + k]);
+      }
+    }
     if (line.valid())
       for (std::size_t i = begin; i < begin + count; ++i) out.line[i] = clampToU32(line.integer(i));
     if (useBlock)

@@ -1,5 +1,6 @@
 #include "isurface/io/trajectory_writing.h"
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <vector>
 
@@ -8,16 +9,24 @@
 namespace isurface {
 
 void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
-  std::vector<std::pair<std::string, BiipType>> names = {
-      {"line", BiipType::U32}, {"x", BiipType::F64}, {"y", BiipType::F64}, {"z", BiipType::F64}};
-  std::vector<const std::vector<double>*> values = {&samples.x, &samples.y, &samples.z};
+  using Value = std::function<double(std::size_t)>;
+  std::vector<std::pair<std::string, Value>> written;
+  const auto channel = [&](const std::string& name, Value value) { written.emplace_back(name, std::move(value)); };
+  channel("x", [&](std::size_t i) { return samples.x[i]; });
+  channel("y", [&](std::size_t i) { return samples.y[i]; });
+  channel("z", [&](std::size_t i) { return samples.z[i]; });
   // Times the source recorded are written as they are; a regular cycle is the header's.
-  if (!samples.time.empty()) names.emplace_back("t", BiipType::F64), values.push_back(&samples.time);
-  if (samples.hasFeedback())
-    for (const auto& [name, v] : {std::pair{"fb_x", &samples.fbX}, {"fb_y", &samples.fbY}, {"fb_z", &samples.fbZ}})
-      names.emplace_back(name, BiipType::F64), values.push_back(v);
-  for (const auto& [name, v] : samples.extra) names.emplace_back(name, BiipType::F64), values.push_back(&v);
-  if (samples.hasFeed()) names.emplace_back("feed", BiipType::F64);  // the last channel
+  if (!samples.time.empty()) channel("t", [&](std::size_t i) { return samples.time[i]; });
+  if (samples.hasFeedback()) {
+    channel("fb_x", [&](std::size_t i) { return samples.feedback(i).x(); });
+    channel("fb_y", [&](std::size_t i) { return samples.feedback(i).y(); });
+    channel("fb_z", [&](std::size_t i) { return samples.feedback(i).z(); });
+  }
+  if (samples.hasFeed()) channel("feed", [&](std::size_t i) { return double(samples.feed[i]); });
+  for (const auto& [name, v] : samples.extra) channel(name, [&v = v](std::size_t i) { return v[i]; });
+
+  std::vector<std::pair<std::string, BiipType>> names = {{"line", BiipType::U32}};
+  for (const auto& [name, value] : written) names.emplace_back(name, BiipType::F64);
   const std::vector<BiipChannel> channels = BiipWriter::layout(names);
   const nlohmann::json meta = {{"source", samples.source}, {"units", "mm"}, {"writer", "isurface-cli"},
                                {"coordinates", "workpiece"}};
@@ -26,8 +35,7 @@ void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
   for (std::size_t i = 0; i < samples.size(); ++i) {
     std::fill(record.begin(), record.end(), 0);
     biipStore(record.data(), channels[0], i < samples.line.size() ? samples.line[i] : 0);
-    for (std::size_t c = 0; c < values.size(); ++c) biipStore(record.data(), channels[c + 1], (*values[c])[i]);
-    if (samples.hasFeed()) biipStore(record.data(), channels.back(), double(samples.feed[i]));
+    for (std::size_t c = 0; c < written.size(); ++c) biipStore(record.data(), channels[c + 1], written[c].second(i));
     writer.append(record.data());
   }
   writer.commit();

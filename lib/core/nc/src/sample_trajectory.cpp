@@ -16,7 +16,7 @@ void TrajectorySink::expect(std::size_t samples) {
   for (std::vector<double>* channel : {&t.x, &t.y, &t.z}) channel->reserve(samples);
   t.feed.reserve(samples);
   if (feedback_)
-    for (std::vector<double>* channel : {&t.fbX, &t.fbY, &t.fbZ}) channel->reserve(samples);
+    for (std::vector<float>* channel : {&t.fbOffsetX, &t.fbOffsetY, &t.fbOffsetZ}) channel->reserve(samples);
   t.line.reserve(samples);
   t.block.reserve(samples);
 }
@@ -34,9 +34,10 @@ void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
   }
   if (!feedback_) return;
   for (std::size_t k = 0; k < count; ++k) {
-    t.fbX.push_back(samples[k].fbX);
-    t.fbY.push_back(samples[k].fbY);
-    t.fbZ.push_back(samples[k].fbZ);
+    const SimSample& s = samples[k];
+    t.fbOffsetX.push_back(static_cast<float>(s.fbX - s.x));
+    t.fbOffsetY.push_back(static_cast<float>(s.fbY - s.y));
+    t.fbOffsetZ.push_back(static_cast<float>(s.fbZ - s.z));
   }
 }
 

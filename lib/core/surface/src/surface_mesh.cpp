@@ -13,19 +13,19 @@ namespace {
 
 // Positions of one kind (commanded or feedback) read in place from the sample arrays.
 struct PositionSource {
-  const double *x, *y, *z;
-  Vec3 at(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
+  const Trajectory& s;
+  bool feedback;
+  Vec3 at(std::size_t i) const { return feedback ? s.feedback(i) : s.commanded(i); }
   bool finiteAt(std::size_t i) const {
-    const double v = (x[i] - x[i]) + (y[i] - y[i]) + (z[i] - z[i]);
-    return v == 0;
+    const Vec3 p = at(i);
+    return (p - p).sum() == 0;  // NaN and infinities give NaN
   }
 };
 
 PositionSource positionSource(const Trajectory& s, bool feedback) {
-  if (!feedback) return {s.x.data(), s.y.data(), s.z.data()};
-  if (!s.hasFeedback())
+  if (feedback && !s.hasFeedback())
     throw InputError(Diagnostic{s.source, 0, 0, "no feedback channels (fb_x, fb_y, fb_z) to build the feedback surface on"});
-  return {s.fbX.data(), s.fbY.data(), s.fbZ.data()};
+  return {s, feedback};
 }
 
 // Two vertices closer than this are one point (mm).

@@ -20,7 +20,9 @@ struct Trajectory {
   std::vector<std::uint32_t> line;   // 1-based G-code line, 0 unknown (all 0 when absent)
   std::vector<std::uint32_t> block;  // move index, when the dump has one (else empty)
   std::vector<double> x, y, z;       // commanded position, mm
-  std::vector<double> fbX, fbY, fbZ; // feedback position, mm (empty when absent)
+  // Feedback position minus the commanded one, mm (empty when absent): a float keeps a servo's
+  // lag of a millimetre to a ten-thousandth of a micrometre, in half the room of a position.
+  std::vector<float> fbOffsetX, fbOffsetY, fbOffsetZ;
   std::vector<float> feed;           // programmed feed, mm/min (empty when absent; 7 digits suffice)
   // Any other numeric channel of the dump, kept to colour by.
   std::vector<std::pair<std::string, std::vector<double>>> extra;
@@ -30,13 +32,20 @@ struct Trajectory {
   double rapidFeed = 0;              // mm/min, the machine's rapid rate when the dump names it (0 unknown)
 
   std::size_t size() const { return x.size(); }
-  bool hasFeedback() const { return !fbX.empty(); }
+  bool hasFeedback() const { return !fbOffsetX.empty(); }
   bool hasFeed() const { return !feed.empty(); }
   double timeAt(std::size_t i) const { return time.empty() ? startTime + double(i) * cycle : time[i]; }
   // The `extra` channel of that name, nullptr when absent.
   const std::vector<double>* extraChannel(const std::string& name) const;
   Vec3 commanded(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
-  Vec3 feedback(std::size_t i) const { return Vec3(fbX[i], fbY[i], fbZ[i]); }
+  Vec3 feedbackOffset(std::size_t i) const { return Vec3(fbOffsetX[i], fbOffsetY[i], fbOffsetZ[i]); }
+  Vec3 feedback(std::size_t i) const { return commanded(i) + feedbackOffset(i); }
+  // Sets sample i's feedback from a feedback position (mm); the channels must be sized.
+  void setFeedback(std::size_t i, const Vec3& position) {
+    fbOffsetX[i] = static_cast<float>(position.x() - x[i]);
+    fbOffsetY[i] = static_cast<float>(position.y() - y[i]);
+    fbOffsetZ[i] = static_cast<float>(position.z() - z[i]);
+  }
 };
 
 // True when a gap between consecutive times departs from the cycle by more than a thousandth
