@@ -79,3 +79,14 @@ TEST(RenderErrors, BadOptionsExitWithTwoAndWriteNothing) {
     EXPECT_FALSE(fileExists(out));
   }
 }
+
+// Ranges the user gives are kept as given, however narrow: the top tenth of a percent, or a
+// few mm/min about the programmed feed.
+TEST(RenderOptions, NarrowRangesGivenAreKept) {
+  const std::string out = (scratchDir() / "narrow.png").string();
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  EXPECT_EQ(runCli("render " + program + " --percentiles 99.9:100 -o " + out).exitCode, 0);
+  const CommandResult fixed = runCli("render " + program + " --range 1999:2000 -o " + out);
+  ASSERT_EQ(fixed.exitCode, 0) << fixed.err;
+  EXPECT_NE(fixed.out.find("1999 .. 2000,"), std::string::npos) << fixed.out;
+}

@@ -91,6 +91,23 @@ TEST(passes, OneWayRasterWithFeedChannel) {
   }
 }
 
+// The feed channel holds floats: a rapid rate a float cannot hold is still told apart.
+TEST(passes, ARapidRateThatIsNotAFloatIsStillARapid) {
+  // Cut along +X, rapid back along -X at the cutting height to the next pass.
+  PathSampler path(Vec3(0, 0, 0));
+  path.withFeed();
+  const double rapid = 12345.678;  // mm/min
+  for (int k = 0; k < 6; ++k) {
+    path.lineTo(Vec3(30, 0.8 * k, 0), 2000, 2000);
+    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), rapid, rapid);
+  }
+  Trajectory s = path.take();
+  s.rapidFeed = rapid;
+  const PassSet set = splitPasses(s);
+  ASSERT_EQ(set.passes.size(), 6u);
+  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);  // never a rapid back
+}
+
 TEST(passes, OneWayRasterRapidRateGuessedFromFeeds) {
   const Trajectory s = oneWayRaster(6, true);  // rapidFeed unknown: 20000 is 10 times the cutting feed
   const PassSet set = splitPasses(s);

@@ -293,3 +293,19 @@ TEST(surface_mesh, ManySamplesMeshQuickly) {
 }
 
 }  // namespace
+
+// The spacing of the passes is measured across them, however thinned the mesh: the toolpath's
+// fading depends on it.
+TEST(surface_mesh, PassSpacingIsMeasuredAcrossThePasses) {
+  // 30 passes of 20 mm, 0.1 mm apart, at 600 mm/min: a sample every 0.01 mm along them.
+  const Trajectory raster = zigZagRaster(30, 20.0, 0.1, 600.0);
+  const PassSet passes = splitPasses(raster);
+  ASSERT_EQ(passes.passes.size(), 30u);
+  for (const std::size_t stride : {1, 50, 160}) {  // vertices 0.01, 0.5 and 1.6 mm apart
+    MeshOptions options;
+    options.stride = stride;
+    const SurfaceMesh mesh = buildSurfaceMesh(raster, passes, options);
+    EXPECT_NEAR(medianPassSpacing(meshPositions(raster, mesh), mesh), 0.1, 0.005) << "stride " << stride;
+  }
+  EXPECT_EQ(medianPassSpacing({}, SurfaceMesh{}), 0.0);
+}

@@ -134,7 +134,8 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   if (style.showToolpath && !data.toolpath.empty()) {
     p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);
     p.toolpathOpacity = p.toolpathActor->GetProperty()->GetOpacity();
-    p.passSpacing = medianPassSpacing(data.positions, *data.mesh);
+    // A toolpath coloured by the values shows them where the surface is hidden: never faded.
+    if (data.toolpathScalars.empty()) p.passSpacing = medianPassSpacing(data.positions, *data.mesh);
     p.renderer->AddActor(p.toolpathActor);
   }
 

@@ -63,7 +63,8 @@ ValueRange parseRange(const std::string& text) {
   if (a.empty() || *end != '\0') return fail();
   const double hi = std::strtod(b.c_str(), &end);
   if (b.empty() || *end != '\0' || !std::isfinite(lo) || !std::isfinite(hi) || lo > hi) return fail();
-  return widenNarrowRange({lo, hi});
+  // A range the user gives is kept as given; only a single value needs room for colours.
+  return lo == hi ? widenNarrowRange({lo, hi}) : ValueRange{lo, hi};
 }
 
 }  // namespace isurface

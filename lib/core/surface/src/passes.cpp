@@ -150,8 +150,10 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
     rapid = typical > 0 && highest >= kRapidFeedRatio * typical ? highest : 0;
   }
   std::vector<char> out(n, 0);
+  // The feeds are floats: the rapid rate is compared as one too (12345.678 is not a float).
+  const double rapidAsStored = static_cast<float>(rapid);
   if (rapid > 0)
-    for (std::size_t i = 0; i < n; ++i) out[i] = s.feed[i] >= rapid * (1 - kRoundingSlack);
+    for (std::size_t i = 0; i < n; ++i) out[i] = s.feed[i] >= rapidAsStored * (1 - kRoundingSlack);
   return out;
 }
 

@@ -306,7 +306,14 @@ double medianPassSpacing(const std::vector<Vec3>& positions, const SurfaceMesh& 
   for (std::size_t v = 0; v < n; v += step) {
     const std::uint32_t next = mesh.nextPassNeighbour[v];
     if (next == kNoVertex || next >= positions.size()) continue;
-    const double d = (positions[next] - positions[v]).norm();
+    // Across the pass only: on a thinned mesh the nearest vertex of the next pass may lie up
+    // to half a vertex spacing along it.
+    const std::size_t along = v + 1 < n && mesh.vertexPass[v + 1] == mesh.vertexPass[v] ? v + 1 : v - (v > 0);
+    if (along == v || mesh.vertexPass[along] != mesh.vertexPass[v]) continue;
+    const Vec3 direction = (positions[along] - positions[v]).normalized();
+    Vec3 across = positions[next] - positions[v];
+    across -= across.dot(direction) * direction;
+    const double d = across.norm();
     if (std::isfinite(d) && d > 0) spacing.push_back(d);
   }
   if (spacing.empty()) return 0;

@@ -35,8 +35,9 @@ std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);
 // Vertex positions of a mesh, commanded or feedback, mm.
 std::vector<Vec3> meshPositions(const Trajectory& samples, const SurfaceMesh& mesh, bool feedback = false);
 
-// The typical distance from a vertex to the nearest one of the next pass (the median over up to
-// 4,096 vertices spread over the mesh), mm; 0 when no two passes meet.
+// The typical distance between neighbouring passes, across them (the median over up to 4,096
+// vertices spread over the mesh, of the distance to the next pass's nearest vertex less its part
+// along the pass), mm; 0 when no two passes meet.
 double medianPassSpacing(const std::vector<Vec3>& positions, const SurfaceMesh& mesh);
 
 // Unit normals per vertex, area-weighted from the adjacent triangles (zero where none).
