@@ -20,7 +20,7 @@ TEST(BoundedRuns, ARunLongerThanTheBoundIsRefusedBeforeItsSamplesAreMade) {
   for (int i = 0; i < 5; ++i) dwells += "G4 P80000\n";
   const std::string program = writeScratch("dwells.nc", dwells + "M2\n");
   const std::string dump = (scratchDir() / "dwells.biip").string();
-  for (const std::string command : {"simulate " + program + " -o " + dump, "render " + program + " -o " + dump + ".png"}) {
+  for (const std::string& command : {"simulate " + program + " -o " + dump, "render " + program + " -o " + dump + ".png"}) {
     const auto r = runCli(command);
     EXPECT_EQ(r.exitCode, 2) << command << "\n" << r.err;
     EXPECT_NE(r.err.find("the run passes 100 h of machining"), std::string::npos) << r.err;

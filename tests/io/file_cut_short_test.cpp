@@ -33,7 +33,9 @@ class TruncatingSink : public MoveSink {
  public:
   TruncatingSink(std::string path, off_t keep) : path_(std::move(path)), keep_(keep) {}
   void consume(const Move*, std::size_t, std::uint64_t) override {
-    if (!done_) ASSERT_EQ(::truncate(path_.c_str(), keep_), 0);
+    if (!done_) {
+      ASSERT_EQ(::truncate(path_.c_str(), keep_), 0);
+    }
     done_ = true;
   }
 

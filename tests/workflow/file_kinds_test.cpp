@@ -67,9 +67,13 @@ TEST(fileKinds, ProgramsDumpsAndTracesAreToldApart) {
             FileKind::HalsamplerTrace);
   EXPECT_EQ(fileKind(written("log.txt", "t,x,y,z\n0,1,2,3\n0.001,1.1,2,3\n")), FileKind::CsvTrace);
   const std::string halsampler = realdataPath("linuxcnc_test.halsampler.txt");
-  if (fileExists(halsampler)) EXPECT_EQ(fileKind(halsampler), FileKind::HalsamplerTrace);
+  if (fileExists(halsampler)) {
+    EXPECT_EQ(fileKind(halsampler), FileKind::HalsamplerTrace);
+  }
   const std::string umich = realdataPath("umich_experiment_01.csv");
-  if (fileExists(umich)) EXPECT_EQ(fileKind(umich), FileKind::CsvTrace);
+  if (fileExists(umich)) {
+    EXPECT_EQ(fileKind(umich), FileKind::CsvTrace);
+  }
 }
 
 TEST(fileKinds, ATraceOpensAfterItsProgramAsItsSamples) {
