@@ -296,6 +296,53 @@ TEST(kinematics, StreamingSummaryMatchesTheArrays) {
   }
 }
 
+// A map derives only at its vertices' samples; every value must be the one of the whole
+// derivation, bit for bit: at the ends (one-sided stencils), beside a bad sample, in any order.
+TEST(kinematics, ValuesAtChosenSamplesAreThoseOfTheWholeArrays) {
+  for (bool withTime : {false, true}) {
+    for (std::size_t n : {1u, 2u, 3u, 4u, 5u, 9u, 1000u}) {
+      std::vector<double> x(n), y(n), z(n), t(n);
+      for (std::size_t i = 0; i < n; ++i) {
+        t[i] = 2 + i * 0.001 + (withTime ? 0.0004 * std::cos(5.0 * i) : 0.0);
+        x[i] = 15 * std::cos(2 * t[i]) + 0.002 * std::sin(37.0 * i);
+        y[i] = 3 * std::sin(11 * t[i]);
+        z[i] = -t[i] * t[i] * t[i];
+      }
+      if (n > 600) y[600] = kNaN;
+      std::vector<std::uint32_t> at;
+      for (std::size_t i = n; i-- > 0;)
+        if (i % 7 == 0 || i < 3 || i + 3 > n || (i >= 596 && i <= 604)) at.push_back(std::uint32_t(i));
+      at.push_back(at.front());  // a sample asked for twice
+      const double* tp = withTime ? t.data() : nullptr;
+      for (bool perAxis : {false, true}) {
+        const Kinematics all = deriveKinematics(x.data(), y.data(), z.data(), tp, n, 0.001, perAxis);
+        const Kinematics some =
+            deriveKinematicsAt(x.data(), y.data(), z.data(), tp, n, 0.001, at.data(), at.size(), perAxis);
+        ASSERT_EQ(some.speed.size(), at.size());
+        ASSERT_EQ(some.axisJerk[2].size(), perAxis ? at.size() : 0u);
+        // Compared as bits: NaN where the whole derivation has NaN, the same double elsewhere.
+        const auto same = [](double a, double b) { return (std::isnan(a) && std::isnan(b)) || a == b; };
+        for (std::size_t j = 0; j < at.size(); ++j) {
+          const std::size_t i = at[j];
+          EXPECT_TRUE(same(some.speed[j], all.speed[i])) << n << " " << i;
+          EXPECT_TRUE(same(some.accel[j], all.accel[i])) << n << " " << i;
+          EXPECT_TRUE(same(some.accelMagnitude[j], all.accelMagnitude[i])) << n << " " << i;
+          EXPECT_TRUE(same(some.jerk[j], all.jerk[i])) << n << " " << i;
+          if (!perAxis) continue;
+          for (int ax = 0; ax < 3; ++ax) {
+            EXPECT_TRUE(same(some.axisVel[ax][j], all.axisVel[ax][i])) << n << " " << i;
+            EXPECT_TRUE(same(some.axisAcc[ax][j], all.axisAcc[ax][i])) << n << " " << i;
+            EXPECT_TRUE(same(some.axisJerk[ax][j], all.axisJerk[ax][i])) << n << " " << i;
+          }
+        }
+        if (n > 600) {
+          EXPECT_TRUE(std::isnan(some.jerk[std::find(at.begin(), at.end(), 600u) - at.begin()]));
+        }
+      }
+    }
+  }
+}
+
 TEST(kinematics, PathOnlyLeavesAxisArraysEmpty) {
   const double x[] = {0, 1, 2, 3, 4}, y[] = {0, 0, 0, 0, 0};
   const Kinematics k = deriveKinematics(x, y, y, nullptr, 5, 0.5, false);

@@ -211,10 +211,29 @@ void forEachSample(const double* x, const double* y, const double* z, const doub
   }
 }
 
-}  // namespace
+// Calls f(j, derivatives) for sample at[j] of the arrays, j = 0..count.
+template <class F>
+void forSamplesAt(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                  double cycleSeconds, const std::uint32_t* at, std::size_t count, F&& f) {
+  const double* axes[3] = {x, y, z};
+  const auto P = [&](std::size_t k, int ax) { return axes[ax][k]; };
+  Derivatives d;
+  if (t == nullptr) {
+    const RegularGrid grid = RegularGrid::of(cycleSeconds);
+    for (std::size_t j = 0; j < count; ++j) {
+      grid.derive(at[j], n, P, d);
+      f(j, d);
+    }
+  } else {
+    const auto H = [t](std::size_t k) { return t[k + 1] - t[k]; };
+    for (std::size_t j = 0; j < count; ++j) {
+      deriveDivided(at[j], n, P, H, d);
+      f(j, d);
+    }
+  }
+}
 
-Kinematics deriveKinematics(const double* x, const double* y, const double* z, const double* t, std::size_t n,
-                            double cycleSeconds, bool perAxis) {
+Kinematics sizedKinematics(std::size_t n, bool perAxis) {
   Kinematics k;
   k.speed.resize(n);
   k.accel.resize(n);
@@ -227,20 +246,38 @@ Kinematics deriveKinematics(const double* x, const double* y, const double* z, c
       k.axisJerk[ax].resize(n);
     }
   }
-  forEachSample(x, y, z, t, n, cycleSeconds, [&](std::size_t i, const Derivatives& d) {
-    const PathValues p = pathValues(d);
-    k.speed[i] = p.speed;
-    k.accel[i] = p.accel;
-    k.accelMagnitude[i] = p.accelMagnitude;
-    k.jerk[i] = p.jerk;
-    if (perAxis) {
-      for (int ax = 0; ax < 3; ++ax) {
-        k.axisVel[ax][i] = d.v[ax];
-        k.axisAcc[ax][i] = d.a[ax];
-        k.axisJerk[ax][i] = d.j[ax];
-      }
+  return k;
+}
+
+void store(Kinematics& k, std::size_t i, const Derivatives& d, bool perAxis) {
+  const PathValues p = pathValues(d);
+  k.speed[i] = p.speed;
+  k.accel[i] = p.accel;
+  k.accelMagnitude[i] = p.accelMagnitude;
+  k.jerk[i] = p.jerk;
+  if (perAxis) {
+    for (int ax = 0; ax < 3; ++ax) {
+      k.axisVel[ax][i] = d.v[ax];
+      k.axisAcc[ax][i] = d.a[ax];
+      k.axisJerk[ax][i] = d.j[ax];
     }
-  });
+  }
+}
+
+}  // namespace
+
+Kinematics deriveKinematicsAt(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                              double cycleSeconds, const std::uint32_t* at, std::size_t count, bool perAxis) {
+  Kinematics k = sizedKinematics(count, perAxis);
+  forSamplesAt(x, y, z, t, n, cycleSeconds, at, count,
+               [&](std::size_t j, const Derivatives& d) { store(k, j, d, perAxis); });
+  return k;
+}
+
+Kinematics deriveKinematics(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                            double cycleSeconds, bool perAxis) {
+  Kinematics k = sizedKinematics(n, perAxis);
+  forEachSample(x, y, z, t, n, cycleSeconds, [&](std::size_t i, const Derivatives& d) { store(k, i, d, perAxis); });
   return k;
 }
 

@@ -128,24 +128,14 @@ std::vector<double> perVertex(Quantity q, const Trajectory& s, const SurfaceMesh
     for (std::size_t v = 0; v < vertices; ++v) out[v] = plainValue(q, s, at[v]);
     return out;
   }
-  if (!std::is_sorted(at.begin(), at.end())) {
-    const std::vector<double> all = sampleQuantity(q, s);
-    for (std::size_t v = 0; v < vertices; ++v) out[v] = all[at[v]];
-    return out;
-  }
-  // Vertices come in sample order: derive one chunk of samples after another, skipping the
-  // stretches no vertex uses (rapids, links, strides).
-  for (std::size_t v = 0; v < vertices;) {
-    const std::size_t first = at[v];
-    const std::size_t last = std::min(s.size(), first + kKinematicsChunk);
-    std::size_t w = v;
-    while (w < vertices && at[w] < last) ++w;
-    const std::size_t end = std::size_t(at[w - 1]) + 1;
-    std::size_t next = v;
-    deriveRange(s, q, first, end, [&](std::size_t i, const Kinematics& k, std::size_t local) {
-      while (next < w && at[next] == i) out[next++] = kinematicValue(q, k, local);
-    });
-    v = w;
+  // Each vertex's sample is derived from its own stencil, a chunk of vertices at a time (the
+  // map's vertices are a stride apart: deriving every sample between them was most of the work).
+  const double* t = s.irregularTime ? s.time.data() : nullptr;
+  for (std::size_t v = 0; v < vertices; v += kKinematicsChunk) {
+    const std::size_t count = std::min(kKinematicsChunk, vertices - v);
+    const Kinematics k = deriveKinematicsAt(s.x.data(), s.y.data(), s.z.data(), t, s.size(), s.cycle, at.data() + v,
+                                            count, isPerAxis(q));
+    for (std::size_t j = 0; j < count; ++j) out[v + j] = kinematicValue(q, k, j);
   }
   return out;
 }

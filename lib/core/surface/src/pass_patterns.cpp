@@ -73,19 +73,20 @@ std::vector<Pass> splitDirectionParallel(const Trajectory& s, const std::vector<
   mainAxis(s, runs, ux, uy);
   std::vector<Pass> out;
   for (const Pass& run : runs) {
-    if (fit != nullptr) fit->cuttingLength += pathLength(s, run.begin, run.end);
     // Heading along the axis of each step: +1 or -1 within 45 degrees of it, 0 across it (a
     // step-over). Vertical steps and standstill keep the heading they are in.
     int heading = 0;
     std::size_t start = run.begin;
     double xyPath = 0;
+    // mm: of the run, and of the pass since `start` up to the step before the current one, summed
+    // in the order pathLength() sums them (one walk over the samples instead of three).
+    double runLength = 0, passLength = 0;
     const auto close = [&](std::size_t end) {
       if (heading == 0) return;
       const Pass pass{start, std::max(end, start)};
-      double length = 0;
-      const std::size_t kept = out.size();
-      keepLongEnough(s, pass, options, out, &length);
-      if (fit == nullptr || out.size() == kept) return;
+      if (pass.end <= pass.begin + 1 || passLength < options.minimumPassLength) return;
+      out.push_back(pass);
+      if (fit == nullptr) return;
       // Fit: straight in XY and parallel to the axis.
       std::size_t a = pass.begin, b = pass.end - 1;
       while (a < b && !finiteAt(s, a)) ++a;
@@ -93,7 +94,7 @@ std::vector<Pass> splitDirectionParallel(const Trajectory& s, const std::vector<
       const double cx = s.x[b] - s.x[a], cy = s.y[b] - s.y[a];
       const double chord = std::sqrt(cx * cx + cy * cy);
       if (chord >= kStraightness * xyPath && std::fabs(cx * ux + cy * uy) >= parallelCos * chord) {
-        fit->fittingLength += length;
+        fit->fittingLength += passLength;
         ++fit->fittingPasses;
       }
     };
@@ -102,6 +103,8 @@ std::vector<Pass> splitDirectionParallel(const Trajectory& s, const std::vector<
       if (!step(s, i, dx, dy, dz)) continue;
       const double along = dx * ux + dy * uy, across = -dx * uy + dy * ux;
       const double xy = std::sqrt(dx * dx + dy * dy);
+      const double length = std::sqrt(dx * dx + dy * dy + dz * dz);
+      const bool finiteLength = length == length && length - length == 0;
       int now = heading;
       if (xy > kLengthEpsilon) now = std::fabs(along) >= std::fabs(across) ? (along > 0 ? 1 : -1) : 0;
       if (now != heading) {
@@ -110,10 +113,16 @@ std::vector<Pass> splitDirectionParallel(const Trajectory& s, const std::vector<
         start = i;
         if (!out.empty() && out.back().end > start) start = out.back().end;
         xyPath = 0;
+        passLength = 0;
       }
       xyPath += xy;
+      if (finiteLength) {
+        runLength += length;
+        if (start <= i) passLength += length;
+      }
     }
     close(run.end);
+    if (fit != nullptr) fit->cuttingLength += runLength;
   }
   return out;
 }

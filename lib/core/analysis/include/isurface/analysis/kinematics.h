@@ -19,6 +19,7 @@
 // With fewer than 2 samples the velocity is 0, fewer than 3 the acceleration, fewer than 4 the jerk.
 #include <array>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 namespace isurface {
@@ -37,6 +38,12 @@ struct Kinematics {
 // perAxis = false leaves axisVel/axisAcc/axisJerk empty (saves 9 arrays of n doubles).
 Kinematics deriveKinematics(const double* x, const double* y, const double* z, const double* t, std::size_t n,
                             double cycleSeconds, bool perAxis = true);
+
+// The same values at the samples at[0..count) only (in any order), from the whole arrays:
+// out.speed[j] is sample at[j]'s. Each sample reads its own stencil, so a map of a few hundred
+// thousand vertices over millions of samples derives no more than its vertices.
+Kinematics deriveKinematicsAt(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                              double cycleSeconds, const std::uint32_t* at, std::size_t count, bool perAxis = true);
 
 struct KinematicsMaxima {
   double speed = 0;  // mm/s, max |v| (path) or |v_axis|
