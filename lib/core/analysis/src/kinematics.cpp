@@ -189,48 +189,34 @@ KinematicsSummary finished(KinematicsSummary s) {
   return s;
 }
 
-// Calls f(i, derivatives) for every sample of arrays x, y, z (and t).
-template <class F>
-void forEachSample(const double* x, const double* y, const double* z, const double* t, std::size_t n,
-                   double cycleSeconds, F&& f) {
+// Calls f(j, derivatives of sample sampleOf(j)) for j = 0..count, from the whole arrays x, y, z
+// (and t) of n samples.
+template <class SampleOf, class F>
+void forSamples(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                double cycleSeconds, std::size_t count, SampleOf&& sampleOf, F&& f) {
   const double* axes[3] = {x, y, z};
   const auto P = [&](std::size_t k, int ax) { return axes[ax][k]; };
   Derivatives d;
   if (t == nullptr) {
     const RegularGrid grid = RegularGrid::of(cycleSeconds);
-    for (std::size_t i = 0; i < n; ++i) {
-      grid.derive(i, n, P, d);
-      f(i, d);
+    for (std::size_t j = 0; j < count; ++j) {
+      grid.derive(sampleOf(j), n, P, d);
+      f(j, d);
     }
   } else {
     const auto H = [t](std::size_t k) { return t[k + 1] - t[k]; };
-    for (std::size_t i = 0; i < n; ++i) {
-      deriveDivided(i, n, P, H, d);
-      f(i, d);
+    for (std::size_t j = 0; j < count; ++j) {
+      deriveDivided(sampleOf(j), n, P, H, d);
+      f(j, d);
     }
   }
 }
 
-// Calls f(j, derivatives) for sample at[j] of the arrays, j = 0..count.
+// Calls f(i, derivatives) for every sample.
 template <class F>
-void forSamplesAt(const double* x, const double* y, const double* z, const double* t, std::size_t n,
-                  double cycleSeconds, const std::uint32_t* at, std::size_t count, F&& f) {
-  const double* axes[3] = {x, y, z};
-  const auto P = [&](std::size_t k, int ax) { return axes[ax][k]; };
-  Derivatives d;
-  if (t == nullptr) {
-    const RegularGrid grid = RegularGrid::of(cycleSeconds);
-    for (std::size_t j = 0; j < count; ++j) {
-      grid.derive(at[j], n, P, d);
-      f(j, d);
-    }
-  } else {
-    const auto H = [t](std::size_t k) { return t[k + 1] - t[k]; };
-    for (std::size_t j = 0; j < count; ++j) {
-      deriveDivided(at[j], n, P, H, d);
-      f(j, d);
-    }
-  }
+void forEachSample(const double* x, const double* y, const double* z, const double* t, std::size_t n,
+                   double cycleSeconds, F&& f) {
+  forSamples(x, y, z, t, n, cycleSeconds, n, [](std::size_t i) { return i; }, f);
 }
 
 Kinematics sizedKinematics(std::size_t n, bool perAxis) {
@@ -269,8 +255,8 @@ void store(Kinematics& k, std::size_t i, const Derivatives& d, bool perAxis) {
 Kinematics deriveKinematicsAt(const double* x, const double* y, const double* z, const double* t, std::size_t n,
                               double cycleSeconds, const std::uint32_t* at, std::size_t count, bool perAxis) {
   Kinematics k = sizedKinematics(count, perAxis);
-  forSamplesAt(x, y, z, t, n, cycleSeconds, at, count,
-               [&](std::size_t j, const Derivatives& d) { store(k, j, d, perAxis); });
+  forSamples(x, y, z, t, n, cycleSeconds, count, [at](std::size_t j) { return std::size_t(at[j]); },
+             [&](std::size_t j, const Derivatives& d) { store(k, j, d, perAxis); });
   return k;
 }
 
