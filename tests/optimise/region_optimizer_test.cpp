@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/optimise/polyline_distance.h"
 #include "isurface/optimise/region_optimizer.h"
 #include "test_support.h"
 

@@ -13,6 +13,7 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/servo_response.h"
+#include "isurface/optimise/polyline_distance.h"
 #include "isurface/workflow/run_inputs.h"
 
 namespace isurface {

@@ -9,6 +9,7 @@
 
 #include <fmt/format.h>
 
+#include "isurface/optimise/polyline_distance.h"
 #include "isurface/fitting/akima_spline.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/tolerances.h"
@@ -404,34 +405,6 @@ LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passSet, 
   const LineRange from = lineRangeOf(passes[first > 0 ? first - 1 : first]);
   const LineRange to = lineRangeOf(passes[last + 1 < passes.size() ? last + 1 : last]);
   return {std::min(lines.first, from.first), std::max(lines.last, to.last)};
-}
-
-double polylineDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b) {
-  auto nearest = [](const Vec3& p, const std::vector<Vec3>& to, std::size_t lo, std::size_t hi, std::size_t& at) {
-    double best = INFINITY;
-    for (std::size_t k = lo; k + 1 < hi; ++k) {
-      const Vec3 d = to[k + 1] - to[k];
-      const double l2 = d.squaredNorm();
-      const double t = l2 > 0 ? std::clamp((p - to[k]).dot(d) / l2, 0.0, 1.0) : 0.0;
-      const double dist = (to[k] + t * d - p).norm();
-      if (dist < best) best = dist, at = k;
-    }
-    return to.size() == 1 ? (to[0] - p).norm() : best;
-  };
-  auto oneWay = [&](const std::vector<Vec3>& from, const std::vector<Vec3>& to) {
-    double worst = 0;
-    std::size_t near = 0;  // both polylines run the same way: search around the last match first
-    for (const Vec3& p : from) {
-      std::size_t at = near;
-      double best = nearest(p, to, near > 50 ? near - 50 : 0, std::min(to.size(), near + 500), at);
-      if (best > 1e-3) best = nearest(p, to, 0, to.size(), at);  // lost the way: look everywhere
-      near = at;
-      worst = std::max(worst, best);
-    }
-    return worst;
-  };
-  if (a.empty() || b.empty()) return 0;
-  return std::max(oneWay(a, b), oneWay(b, a));
 }
 
 }  // namespace isurface

@@ -70,8 +70,4 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
 // unchanged neighbour) inside the region. Lines outside every pass are returned unchanged.
 LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passes, LineRange lines);
 
-// The largest distance from any point of `a`'s polyline vertices to `b`'s polyline, both ways
-// (a Hausdorff distance over vertices), mm.
-double polylineDistance(const std::vector<Vec3>& a, const std::vector<Vec3>& b);
-
 }  // namespace isurface
