@@ -6,9 +6,17 @@
 # it prints the wall time, the peak resident set size, whether the candidate was kept, the
 # machining time and the whole program's figures before and after (from the report).
 # It exits 1 when a run fails or cameo.nc exceeds its bound.
+# With --every-mode it runs instead the never-worse property test (tests/cli/
+# region_optimizer_cli_test.cpp) on cameo.nc and stellabee1.ngc in every mode and objective,
+# the part CI leaves out (about 14 minutes of CPU).
 # Usage: bench/optimize_realdata.sh [BUILD_DIR [PROGRAM...]]   (default: build, cameo.nc)
+#        bench/optimize_realdata.sh --every-mode [BUILD_DIR]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+if [ "${1:-}" = --every-mode ]; then
+  exec "${2:-build}/bin/cli_tests" --gtest_also_run_disabled_tests \
+    --gtest_filter='regionOptimizer.*LongRealProgram:regionOptimizer.NoModeWritesAWorseCameo:regionOptimizer.NoModeWritesAWorseStellabee'
+fi
 build=${1:-build}
 shift || true
 cli="$build/bin/isurface-cli"
