@@ -40,9 +40,18 @@ class SegmentGrid {
  public:
   explicit SegmentGrid(const std::vector<Vec3>& to) : to_(to) {
     std::vector<double> lengths;
-    for (std::size_t k = 0; k + 1 < to.size(); ++k) lengths.push_back((to[k + 1] - to[k]).norm());
+    double total = 0;  // mm
+    for (std::size_t k = 0; k + 1 < to.size(); ++k) {
+      const double length = (to[k + 1] - to[k]).norm();
+      if (!std::isfinite(length)) continue;
+      lengths.push_back(length);
+      total += length;
+    }
     std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
-    cell_ = std::max(lengths.empty() ? 1.0 : lengths[lengths.size() / 2], kSmallestCell);
+    // A cell as long as a typical segment, but never so small that a long move among short
+    // ones is cut into more pieces than the path has points a few times over.
+    cell_ = std::max({lengths.empty() ? 1.0 : lengths[lengths.size() / 2], kSmallestCell,
+                      total / double(kPiecesPerPoint * to.size())});
     for (std::size_t k = 0; k + 1 < to.size(); ++k) enter(k);
     std::sort(entries_.begin(), entries_.end());
     entries_.erase(std::unique(entries_.begin(), entries_.end()), entries_.end());
@@ -76,8 +85,10 @@ class SegmentGrid {
  private:
   static constexpr double kSmallestCell = 1e-3;        // mm
   static constexpr double kMostCellsLookedAt = 4096;
+  static constexpr std::size_t kPiecesPerPoint = 4;
 
-  long long index(double v) const { return static_cast<long long>(std::floor(v / cell_)); }
+  // Clamped so that no coordinate, however far out, overflows the conversion.
+  long long index(double v) const { return static_cast<long long>(std::clamp(std::floor(v / cell_), -1e18, 1e18)); }
   static std::uint64_t key(long long x, long long y, long long z) {
     // 21 bits an axis (wrapping: two cells far apart may share a key, which costs a distance
     // computed for nothing, never a segment missed).
