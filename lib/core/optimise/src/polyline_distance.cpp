@@ -10,13 +10,6 @@ namespace isurface {
 
 namespace {
 
-double segmentDistance(const Vec3& p, const Vec3& a, const Vec3& b) {
-  const Vec3 d = b - a;
-  const double l2 = d.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(d) / l2, 0.0, 1.0) : 0.0;
-  return (a + t * d - p).norm();
-}
-
 struct Nearest {
   double distance = INFINITY;  // mm
   std::size_t segment = 0;     // from point `segment` to `segment + 1`
@@ -26,7 +19,7 @@ struct Nearest {
 Nearest nearestAmong(const Vec3& p, const std::vector<Vec3>& to, std::size_t lo, std::size_t hi) {
   Nearest best;
   for (std::size_t k = lo; k + 1 < hi; ++k) {
-    const double d = segmentDistance(p, to[k], to[k + 1]);
+    const double d = distanceToSegment(p, to[k], to[k + 1]);
     if (d < best.distance) best = {d, k};
   }
   return best;
@@ -75,7 +68,7 @@ class SegmentGrid {
           const std::uint64_t k = key(x, y, z);
           auto it = std::lower_bound(entries_.begin(), entries_.end(), std::make_pair(k, std::uint32_t{0}));
           for (; it != entries_.end() && it->first == k; ++it) {
-            const double d = segmentDistance(p, to_[it->second], to_[it->second + 1]);
+            const double d = distanceToSegment(p, to_[it->second], to_[it->second + 1]);
             if (d < best.distance) best = {d, it->second};
           }
         }
