@@ -1,7 +1,6 @@
 // The cutter-location surface: strips between neighbouring passes, gaps, loops, orientation.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -282,14 +281,13 @@ TEST(surface_mesh, TransitionSurfaceHasNoHoles) {
   EXPECT_LE(longestCrossEdge(s, m), 2.0);
 }
 
-TEST(surface_mesh, ManySamplesMeshQuickly) {
+// Its speed is measured by bench/surface_bench.cpp, not here: a timed test fails on a slow hour
+// of a shared machine, not on a slow mesher.
+TEST(surface_mesh, ManySamplesMeshWithoutAGap) {
   // 2 million samples: a zig-zag of 200 passes of 10,000 samples.
   const Grid g = planeGrid(200, 10000, 0.01, 0.5, true);
-  const auto start = std::chrono::steady_clock::now();
   const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes);
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_EQ(m.triangles.size(), 199u * (2 * 10000 - 2));
-  EXPECT_LT(seconds, 5.0);
 }
 
 }  // namespace
