@@ -86,8 +86,10 @@ int runAnalyze(const AnalyzeOptions& o) {
     if (worst) {
       // The worst line of the most severe region that re-fitting can improve glows.
       const std::uint32_t line = samples.line[worst->worstSample];
-      for (std::size_t i = 0; i < samples.size(); ++i)
-        if (samples.line[i] == line) map.data.highlight.push_back(samples.commanded(i));
+      samples.line.forEachRun([&](std::uint32_t l, std::size_t begin, std::size_t end) {
+        if (l == line)
+          for (std::size_t i = begin; i < end; ++i) map.data.highlight.push_back(samples.commanded(i));
+      });
     }
     vis::QualityScene scene(map.data, map.style);
     vis::renderSceneToPng(scene, 1600, 1000, o.png);

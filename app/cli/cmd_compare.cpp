@@ -71,7 +71,7 @@ Trajectory loadRun(const std::string& path, const Program* program, bool linuxcn
     LineMapping mapping = mapSamplesToLines(run, *program, linuxcncLines ? linuxcncLineMappingOptions() : LineMappingOptions{});
     std::printf("%s: no line channel; mapped to the program's lines, %.1f%% of samples within %g mm\n", path.c_str(),
                 100.0 * mapping.report.fractionWithin, mapping.report.tolerance);
-    run.line = std::move(mapping.line);
+    run.line = mapping.line;
     run.hasLine = true;
   }
   return run;

@@ -53,12 +53,15 @@ int runImport(const ImportOptions& o) {
     if (trace.hasLine) {
       // The recorded lines are kept; how far the mapping agrees tells how trustworthy it is.
       std::size_t compared = 0, agree = 0;
-      for (std::size_t i = 0; i < trace.size(); ++i)
-        if (trace.line[i] != 0) ++compared, agree += trace.line[i] == mapping.line[i];
+      trace.line.forEachRun([&](std::uint32_t line, std::size_t begin, std::size_t end) {
+        if (line == 0) return;
+        compared += end - begin;
+        for (std::size_t i = begin; i < end; ++i) agree += line == mapping.line[i];
+      });
       std::printf("recorded lines kept; the mapping agrees on %.1f%% of %zu samples with a line\n",
                   compared ? 100.0 * double(agree) / double(compared) : 0.0, compared);
     } else {
-      trace.line = std::move(mapping.line);
+      trace.line = RunChannel<std::uint32_t>(mapping.line);
       trace.hasLine = true;
     }
   }

@@ -128,7 +128,8 @@ TEST(runComparison, linesOnlyOneRunHasAreReportedAndSplitRanges) {
   const Trajectory a = simulateText(zigzag(1200), "a.nc");
   // B lost line 5 and has samples of a line 40 that A never reached.
   Trajectory b = filtered(a, [&](std::size_t i) { return a.line[i] != 5; });
-  for (std::size_t i = b.size() - 10; i < b.size(); ++i) b.line[i] = 40;
+  b.line.resize(b.size() - 10);
+  b.line.append(40, 10);
   const RunComparison c = compareRuns(a, b);
   ASSERT_EQ(c.onlyInA.size(), 1u);
   EXPECT_EQ(c.onlyInA.front().line, 5u);
@@ -183,7 +184,9 @@ TEST(runComparison, runsWithoutCommonLinesOrWithoutLinesAreRefused) {
   const Trajectory a = simulateText(zigzag(1200), "a.nc");
   Trajectory b = a;
   b.source = "b.biip";
-  for (std::uint32_t& line : b.line) line = line ? line + 1000 : 0;
+  std::vector<std::uint32_t> lines = b.line.toVector();
+  for (std::uint32_t& line : lines) line = line ? line + 1000 : 0;
+  b.line = lines;
   try {
     compareRuns(a, b);
     FAIL() << "no common lines accepted";
@@ -194,7 +197,7 @@ TEST(runComparison, runsWithoutCommonLinesOrWithoutLinesAreRefused) {
   Trajectory noLines = a;
   noLines.source = "trace.biip";
   noLines.hasLine = false;
-  std::fill(noLines.line.begin(), noLines.line.end(), 0);
+  noLines.line.assign(noLines.size(), 0);
   EXPECT_THROW(compareRuns(a, noLines), InputError);
   EXPECT_THROW(compareRuns(noLines, a), InputError);
 }

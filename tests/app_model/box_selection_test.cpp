@@ -88,7 +88,7 @@ TEST(boxSelection, EmptyRectangleOrNoSurfaceSelectsNothing) {
   EXPECT_FALSE(selectInRectangle(r.samples, PassSet{}, topView(), ScreenRectangle{0, 0, 200, 100}));
   // Samples without a line, or indices past the samples, are passed over.
   Raster unknown = raster();
-  std::fill(unknown.samples.line.begin(), unknown.samples.line.end(), 0u);
+  unknown.samples.line.assign(unknown.samples.size(), 0u);
   EXPECT_FALSE(selectInRectangle(unknown.samples, unknown.surface, topView(), ScreenRectangle{0, 0, 200, 100}));
   const PassSet beyondTheSamples{PathPattern::NoBoundary, {Pass{999999, 1000000}}};
   EXPECT_FALSE(selectInRectangle(r.samples, beyondTheSamples, topView(), ScreenRectangle{0, 0, 200, 100}));

@@ -110,7 +110,7 @@ TEST(selection, SelectLineWithoutTrajectorySelectsTheLineAlone) {
 TEST(selection, SelectLineWithoutLineChannelFindsNothing) {
   Trajectory t = smallTrajectory();
   t.hasLine = false;
-  std::fill(t.line.begin(), t.line.end(), 0u);
+  t.line.assign(t.size(), 0u);
   SelectionModel model;
   model.setTrajectory(&t);
   EXPECT_FALSE(model.selectLine(0));

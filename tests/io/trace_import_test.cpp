@@ -36,7 +36,7 @@ TEST(traceImport, halsamplerSmallFileWithCustomMap) {
   const Trajectory t = importHalsampler(path, o);
   ASSERT_EQ(t.size(), 3u);
   EXPECT_TRUE(t.hasLine);
-  EXPECT_EQ(t.line, (std::vector<std::uint32_t>{7, 8, 0}));
+  EXPECT_EQ(t.line.toVector(), (std::vector<std::uint32_t>{7, 8, 0}));
   EXPECT_DOUBLE_EQ(t.x[2], 1.7);
   EXPECT_DOUBLE_EQ(t.timeAt(2), 0.004);
   EXPECT_TRUE(t.extra.empty());

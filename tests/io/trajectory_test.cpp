@@ -104,7 +104,7 @@ TEST(trajectory, MinimalDumpAndPartialFeedback) {
   EXPECT_TRUE(t.block.empty());
   EXPECT_DOUBLE_EQ(t.rapidFeed, 0);
   ASSERT_EQ(t.line.size(), 10u);
-  for (const std::uint32_t l : t.line) EXPECT_EQ(l, 0u);
+  for (const std::uint32_t l : t.line.toVector()) EXPECT_EQ(l, 0u);
   ASSERT_NE(t.extraChannel("fb_x"), nullptr);
   EXPECT_DOUBLE_EQ((*t.extraChannel("fb_x"))[3], 5.0);
 }

@@ -172,7 +172,9 @@ TEST(surface_mesh, StandstillAddsNoDegenerateTriangles) {
   // Repeat a sample of the first pass three times (the machine standing still).
   Trajectory& s = g.samples;
   for (auto* channel : {&s.x, &s.y, &s.z, &s.time}) channel->insert(channel->begin() + 4, 2, (*channel)[4]);
-  s.line.insert(s.line.begin(), 2, 0);
+  std::vector<std::uint32_t> lines = s.line.toVector();
+  lines.insert(lines.begin(), 2, 0);
+  s.line = lines;
   g.passes.passes[0].end += 2;
   g.passes.passes[1].begin += 2;
   g.passes.passes[1].end += 2;

@@ -20,17 +20,19 @@ std::optional<BoxSelection> selectInRectangle(const Trajectory& samples, const P
   BoxSelection found;
   found.lines = LineRange{UINT32_MAX, 0};
   const std::size_t n = std::min(samples.size(), samples.line.size());
+  RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   for (const Pass& pass : surface.passes) {
     for (std::size_t i = pass.begin; i < std::min(pass.end, n); ++i) {
-      if (samples.line[i] == 0) continue;
+      const std::uint32_t line = lineOf[i];
+      if (line == 0) continue;
       const Vec3 p = samples.commanded(i);
       if (!p.allFinite()) continue;
       const auto at = projection(p);
       if (!at || at->first < left || at->first > right || at->second < top || at->second > bottom) continue;
       found.lower = found.samples ? found.lower.cwiseMin(p) : p;
       found.upper = found.samples ? found.upper.cwiseMax(p) : p;
-      found.lines.first = std::min(found.lines.first, samples.line[i]);
-      found.lines.last = std::max(found.lines.last, samples.line[i]);
+      found.lines.first = std::min(found.lines.first, line);
+      found.lines.last = std::max(found.lines.last, line);
       ++found.samples;
     }
   }

@@ -52,9 +52,8 @@ std::optional<std::size_t> SelectionModel::firstSampleOfLineCached(std::uint32_t
     // Only where the line changes can a line begin; consecutive samples mostly share one, so
     // the index holds about one entry per G-code line, not per sample.
     firstSampleByLine_.clear();
-    const std::vector<std::uint32_t>& lines = samples.line;
-    for (std::size_t i = 0; i < lines.size(); ++i)
-      if (i == 0 || lines[i] != lines[i - 1]) firstSampleByLine_.emplace_back(lines[i], i);
+    const RunChannel<std::uint32_t>& lines = samples.line;
+    for (std::size_t r = 0; r < lines.runCount(); ++r) firstSampleByLine_.emplace_back(lines.runValue(r), lines.runBegin(r));
     // Stable by line then sample: the first entry of each line is its earliest sample.
     std::sort(firstSampleByLine_.begin(), firstSampleByLine_.end());
     const auto sameLine = [](const auto& a, const auto& b) { return a.first == b.first; };

@@ -229,8 +229,11 @@ void Inspector::State::syncHighlight() {
   std::vector<Vec3> line, sample;
   const Trajectory& t = *doc->samples;
   if (sel.line) {
-    for (std::size_t i = 0; i < t.size(); ++i)
-      if (t.line[i] == *sel.line && t.commanded(i).allFinite()) line.push_back(t.commanded(i));
+    t.line.forEachRun([&](std::uint32_t l, std::size_t begin, std::size_t end) {
+      if (l != *sel.line) return;
+      for (std::size_t i = begin; i < end; ++i)
+        if (t.commanded(i).allFinite()) line.push_back(t.commanded(i));
+    });
   }
   if (sel.sample && *sel.sample < t.size()) sample.push_back(t.commanded(*sel.sample));
   doc->scene->setHighlight(line, sample);

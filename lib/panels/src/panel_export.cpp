@@ -76,15 +76,16 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
   // The curves' values are read a run of consecutive samples at a time.
   std::vector<std::vector<float>> curveValues(doc.curves.size());
   std::size_t runFirst = 0, runLast = 0;
+  RunChannel<std::uint32_t>::Cursor lineAt = t.line.cursor(), lineAhead = t.line.cursor();
   for (std::size_t k = 0; k < t.size(); ++k) {
-    if (t.line[k] < first || t.line[k] > last) continue;
+    if (lineAt[k] < first || lineAt[k] > last) continue;
     if (k >= runLast) {
       runFirst = k;
       runLast = k;
-      while (runLast < t.size() && runLast - runFirst < kCsvRun && t.line[runLast] >= first && t.line[runLast] <= last) ++runLast;
+      while (runLast < t.size() && runLast - runFirst < kCsvRun && lineAhead[runLast] >= first && lineAhead[runLast] <= last) ++runLast;
       for (std::size_t c = 0; c < doc.curves.size(); ++c) curveValues[c] = doc.curves[c].values.values(runFirst, runLast);
     }
-    out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.timeAt(k), t.line[k], t.x[k], t.y[k], t.z[k]);
+    out += fmt::format("{},{:.6f},{},{:.6f},{:.6f},{:.6f}", k, t.timeAt(k), lineAt[k], t.x[k], t.y[k], t.z[k]);
     if (feedback) {
       const Vec3 f = t.feedback(k);
       out += fmt::format(",{:.6f},{:.6f},{:.6f}", f.x(), f.y(), f.z());

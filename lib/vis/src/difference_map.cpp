@@ -38,8 +38,9 @@ QualityMapRequest regionDifferenceMapRequest(const RunComparison& comparison, co
                                              LineRange region) {
   const std::vector<float>& all = comparison.sampleValues(ComparisonQuantity::Speed);
   std::vector<float> inRegion;
-  for (std::size_t i = 0; i < all.size() && i < before.size(); ++i)
-    if (before.line[i] >= region.first && before.line[i] <= region.last) inRegion.push_back(all[i]);
+  before.line.forEachRun(0, all.size(), [&](std::uint32_t line, std::size_t begin, std::size_t end) {
+    if (line >= region.first && line <= region.last) inRegion.insert(inRegion.end(), all.begin() + begin, all.begin() + end);
+  });
   QualityMapRequest request =
       differenceMapRequest(comparison, ComparisonQuantity::Speed, differenceRange(inRegion, ComparisonQuantity::Speed));
   request.valuesLabel = "Speed after-before";  // one word a line in the legend: this keeps the sign readable

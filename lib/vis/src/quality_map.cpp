@@ -172,11 +172,13 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
     map.data.toolpath = programPolylines(*program);
   }
   if (request.highlightLine) {
-    for (std::size_t i = 0; i < samples.size(); ++i) {
-      if (samples.line[i] != *request.highlightLine) continue;
-      const Vec3 p = request.feedbackSurface ? samples.feedback(i) : samples.commanded(i);
-      if (p.allFinite()) map.data.highlight.push_back(p);
-    }
+    samples.line.forEachRun([&](std::uint32_t line, std::size_t begin, std::size_t end) {
+      if (line != *request.highlightLine) return;
+      for (std::size_t i = begin; i < end; ++i) {
+        const Vec3 p = request.feedbackSurface ? samples.feedback(i) : samples.commanded(i);
+        if (p.allFinite()) map.data.highlight.push_back(p);
+      }
+    });
   }
 
   MapStyle& style = map.style;

@@ -80,11 +80,13 @@ ChosenRegion surfaceInside(const SurfaceRun& run, const Vec3& lower, const Vec3&
   region.lines = {std::numeric_limits<std::uint32_t>::max(), 0};
   region.lower = Vec3::Constant(std::numeric_limits<double>::infinity());
   region.upper = -region.lower;
+  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
   for (const std::uint32_t i : run.mesh->vertexSample) {
-    if (t.line[i] == 0 || t.x[i] < lower.x() || t.x[i] > upper.x() || t.y[i] < lower.y() || t.y[i] > upper.y()) continue;
+    const std::uint32_t line = lineOf[i];
+    if (line == 0 || t.x[i] < lower.x() || t.x[i] > upper.x() || t.y[i] < lower.y() || t.y[i] > upper.y()) continue;
     const Vec3 p(t.x[i], t.y[i], t.z[i]);
-    region.lines.first = std::min(region.lines.first, t.line[i]);
-    region.lines.last = std::max(region.lines.last, t.line[i]);
+    region.lines.first = std::min(region.lines.first, line);
+    region.lines.last = std::max(region.lines.last, line);
     region.lower = region.lower.cwiseMin(p);
     region.upper = region.upper.cwiseMax(p);
     ++region.vertices;
@@ -116,13 +118,13 @@ ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source
 std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
   const Trajectory& t = *run.samples;
   for (const Pass& pass : run.passes.passes) {
-    const auto begin = t.line.begin() + static_cast<std::ptrdiff_t>(pass.begin);
-    const auto end = t.line.begin() + static_cast<std::ptrdiff_t>(pass.end);
-    if (std::find(begin, end, line) == end) continue;
+    bool found = false;
     LineRange lines{~std::uint32_t(0), 0};
-    for (auto it = begin; it != end; ++it)
-      if (*it != 0) lines.first = std::min(lines.first, *it), lines.last = std::max(lines.last, *it);
-    return lines;
+    t.line.forEachRun(pass.begin, pass.end, [&](std::uint32_t l, std::size_t, std::size_t) {
+      found = found || l == line;
+      if (l != 0) lines.first = std::min(lines.first, l), lines.last = std::max(lines.last, l);
+    });
+    if (found) return lines;
   }
   return std::nullopt;
 }
@@ -238,8 +240,9 @@ std::vector<double> deviationCeilings(const RegionOptimisation& r, double target
   const Trajectory& t = *r.after.samples;
   const std::vector<float> deviation = vertexQuantity(Quantity::Deviation, t, *r.after.mesh);
   std::vector<double> worst;  // um per new line
+  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
   for (std::size_t v = 0; v < deviation.size(); ++v) {
-    const std::uint32_t line = t.line[r.after.mesh->vertexSample[v]];
+    const std::uint32_t line = lineOf[r.after.mesh->vertexSample[v]];
     if (line == 0 || !std::isfinite(deviation[v])) continue;
     if (line >= worst.size()) worst.resize(line + 1, 0.0);
     worst[line] = std::max(worst[line], double(std::fabs(deviation[v])));

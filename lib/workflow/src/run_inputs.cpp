@@ -64,7 +64,8 @@ std::optional<std::string> sourceMismatch(const BiipReader& dump, const Program&
 
 std::optional<std::string> pathMismatch(const Trajectory& samples, const Program& program) {
   if (!samples.hasLine || samples.size() == 0) return std::nullopt;
-  const std::uint32_t lastLine = *std::max_element(samples.line.begin(), samples.line.end());
+  std::uint32_t lastLine = 0;
+  samples.line.forEachRun([&](std::uint32_t line, std::size_t, std::size_t) { lastLine = std::max(lastLine, line); });
   if (program.lineCount > 0 && lastLine > program.lineCount)
     return "its samples name line " + std::to_string(lastLine) + ", past the program's last line " +
            std::to_string(program.lineCount);

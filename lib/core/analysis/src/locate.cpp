@@ -26,9 +26,11 @@ SampleMotion motionInWindow(const double* x, const double* y, const double* z, c
 }
 
 std::optional<std::size_t> firstSampleOfLine(const Trajectory& samples, std::uint32_t line) {
-  const auto it = std::find(samples.line.begin(), samples.line.end(), line);
-  if (it == samples.line.end() || (line == 0 && !samples.hasLine)) return std::nullopt;
-  return static_cast<std::size_t>(it - samples.line.begin());
+  if (line == 0 && !samples.hasLine) return std::nullopt;
+  const RunChannel<std::uint32_t>& lines = samples.line;
+  for (std::size_t r = 0; r < lines.runCount(); ++r)
+    if (lines.runValue(r) == line) return lines.runBegin(r);
+  return std::nullopt;
 }
 
 std::optional<std::size_t> nearestSample(const Trajectory& samples, const Vec3& point) {

@@ -36,8 +36,8 @@ class MovingMean {
   std::vector<std::size_t> count_;
 };
 
-bool inside(const Trajectory& s, std::size_t i, const FigureWindow& w) {
-  return w.lines.contains(s.line[i]) && s.x[i] >= w.lower.x() && s.x[i] <= w.upper.x() && s.y[i] >= w.lower.y() &&
+bool inside(const Trajectory& s, std::size_t i, std::uint32_t line, const FigureWindow& w) {
+  return w.lines.contains(line) && s.x[i] >= w.lower.x() && s.x[i] <= w.upper.x() && s.y[i] >= w.lower.y() &&
          s.y[i] <= w.upper.y();
 }
 
@@ -67,9 +67,10 @@ QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMes
   std::vector<double> jerks, inconsistencies, deviations;
   double sumSquares = 0, inconsistencySum = 0;
   std::size_t inconsistencyCount = 0;
+  RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
     const std::size_t i = mesh.vertexSample[v];
-    if (!inside(samples, i, window) || !std::isfinite(speed[i])) continue;
+    if (!inside(samples, i, lineOf[i], window) || !std::isfinite(speed[i])) continue;
     ++f.samples;
     const double d = speed[i] - mean.at(i);
     sumSquares += d * d;

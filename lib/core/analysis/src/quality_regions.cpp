@@ -75,6 +75,7 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
   const std::vector<Vec3> positions = meshPositions(samples, mesh);
   std::vector<double> worstInPart;
   const std::vector<char> nearEnd = nearPassEnds(positions, mesh, thresholds.passEndLength);
+  RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   std::vector<char> allNearEnds;
   for (std::size_t v = 0; v < n; ++v) {
     if (worst[v] <= 1) continue;
@@ -84,7 +85,7 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
       regionOf[root] = static_cast<std::int64_t>(parts.size());
       QualityRegion r;
       r.lower = r.upper = positions[v];
-      r.firstLine = r.lastLine = samples.line[mesh.vertexSample[v]];
+      r.firstLine = r.lastLine = lineOf[mesh.vertexSample[v]];
       parts.push_back(r);
       worstInPart.push_back(0);
       allNearEnds.push_back(1);
@@ -92,7 +93,7 @@ QualityReport findQualityRegions(const Trajectory& samples, const SurfaceMesh& m
     const std::size_t index = static_cast<std::size_t>(regionOf[root]);
     regionOf[v] = regionOf[root];
     QualityRegion& r = parts[index];
-    const std::uint32_t line = samples.line[mesh.vertexSample[v]];
+    const std::uint32_t line = lineOf[mesh.vertexSample[v]];
     if (line != 0) {
       r.firstLine = r.firstLine == 0 ? line : std::min(r.firstLine, line);
       r.lastLine = std::max(r.lastLine, line);

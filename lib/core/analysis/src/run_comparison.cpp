@@ -55,25 +55,30 @@ LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys
     if (line != lastLine) lastLine = line, lastSlot = index.slot(line);
     return lastSlot;
   };
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (const std::uint32_t line = keyOf(t.line[i]); line != 0 && (index.lines.empty() || index.lines.back() != line))
+  t.line.forEachRun([&](std::uint32_t value, std::size_t, std::size_t) {
+    if (const std::uint32_t line = keyOf(value); line != 0 && (index.lines.empty() || index.lines.back() != line))
       index.lines.push_back(line);
+  });
   std::sort(index.lines.begin(), index.lines.end());
   index.lines.erase(std::unique(index.lines.begin(), index.lines.end()), index.lines.end());
   index.offsets.assign(index.lines.size() + 1, 0);
   bool started = false;
-  for (std::size_t i = 0; i < t.size(); ++i) {
-    const std::uint32_t line = keyOf(t.line[i]);
-    if (line == 0) continue;
-    if (index.offsets[slotOf(line) + 1]++ == 0) index.order.push_back(line);
-    if (!started) index.firstTime = t.timeAt(i), started = true;
-    index.lastTime = t.timeAt(i);
-  }
+  t.line.forEachRun([&](std::uint32_t value, std::size_t begin, std::size_t end) {
+    const std::uint32_t line = keyOf(value);
+    if (line == 0) return;
+    std::size_t& count = index.offsets[slotOf(line) + 1];
+    if (count == 0) index.order.push_back(line);
+    count += end - begin;
+    if (!started) index.firstTime = t.timeAt(begin), started = true;
+    index.lastTime = t.timeAt(end - 1);
+  });
   for (std::size_t k = 1; k < index.offsets.size(); ++k) index.offsets[k] += index.offsets[k - 1];
   std::vector<std::size_t> fill(index.offsets.begin(), index.offsets.end() - 1);
   index.samples.resize(index.offsets.back());
-  for (std::size_t i = 0; i < t.size(); ++i)
-    if (const std::uint32_t line = keyOf(t.line[i]); line != 0) index.samples[fill[slotOf(line)]++] = i;
+  t.line.forEachRun([&](std::uint32_t value, std::size_t begin, std::size_t end) {
+    if (const std::uint32_t line = keyOf(value); line != 0)
+      for (std::size_t i = begin; i < end; ++i) index.samples[fill[slotOf(line)]++] = i;
+  });
   return index;
 }
 
@@ -211,7 +216,7 @@ class Aligner {
 
 void requireLines(const Trajectory& t) {
   bool any = false;
-  for (std::uint32_t line : t.line) any = any || line != 0;
+  for (std::size_t r = 0; r < t.line.runCount(); ++r) any = any || t.line.runValue(r) != 0;
   if (!t.hasLine || !any)
     throw InputError(Diagnostic{t.source, 0, 0,
                                 "no G-code line channel to align by (import the trace with --gcode to map its samples to lines)"});

@@ -169,14 +169,13 @@ class TrajectoryBuilder {
       t.time = std::move(time_);
       t.irregularTime = timeIsIrregular(t.time.data(), t.time.size(), t.cycle);
     }
-    t.feed.assign(feedValues_.begin(), feedValues_.end());
+    for (const double f : feedValues_) t.feed.push_back(static_cast<float>(f));
     t.hasLine = !lineValues_.empty();
-    t.line.assign(rows_, 0);
-    for (std::size_t i = 0; i < lineValues_.size(); ++i) {
-      const double v = lineValues_[i];
+    for (const double v : lineValues_) {
       // Controllers log line numbers as floats; anything not a positive count is "no line".
-      t.line[i] = std::isfinite(v) && v >= 0.5 ? std::uint32_t(std::min(std::llround(v), 0xffffffffLL)) : 0u;
+      t.line.push_back(std::isfinite(v) && v >= 0.5 ? std::uint32_t(std::min(std::llround(v), 0xffffffffLL)) : 0u);
     }
+    t.line.resize(rows_, 0);
     return std::move(t_);
   }
 

@@ -81,7 +81,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
     feedbackChunk.resize(kChunkRecords);
   }
   const BiipChannelView feed = reader.channel("feed");
-  if (feed.valid()) out.feed.resize(n);
+  std::vector<float> feedChunk(feed.valid() ? kChunkRecords : 0);
   for (const BiipChannel& c : header.channels) {
     if (!channels.extra || isKnownChannel(c.name, feedbackComplete)) continue;
     out.extra.emplace_back(c.name, std::vector<double>());
@@ -89,15 +89,17 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   // Resized only now: `extra` must not grow after pointers into it are taken.
   for (auto& [name, values] : out.extra) add(name, values);
 
-  out.line.assign(n, 0);
-  if (useBlock) out.block.resize(n);
+  if (!line.valid()) out.line.assign(n, 0);
   if (!t.valid()) out.startTime = header.t0Seconds;
 
   std::size_t nextReport = kProgressRecords;
   for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
     const std::size_t count = std::min(kChunkRecords, n - begin);
     for (const Copy& c : copies) c.view.copyTo(c.to->data() + begin, begin, count);
-    if (feed.valid()) feed.copyTo(out.feed.data() + begin, begin, count);
+    if (feed.valid()) {
+      feed.copyTo(feedChunk.data(), begin, count);
+      for (std::size_t k = 0; k < count; ++k) out.feed.push_back(feedChunk[k]);
+    }
     if (useFeedback) {
       const std::vector<double>* commanded[3] = {&out.x, &out.y, &out.z};
       std::vector<float>* offset[3] = {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ};
@@ -108,9 +110,9 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
       }
     }
     if (line.valid())
-      for (std::size_t i = begin; i < begin + count; ++i) out.line[i] = clampToU32(line.integer(i));
+      for (std::size_t i = begin; i < begin + count; ++i) out.line.push_back(clampToU32(line.integer(i)));
     if (useBlock)
-      for (std::size_t i = begin; i < begin + count; ++i) out.block[i] = clampToU32(block.integer(i));
+      for (std::size_t i = begin; i < begin + count; ++i) out.block.push_back(clampToU32(block.integer(i)));
     reader.releaseRecords(begin, begin + count);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));
@@ -118,6 +120,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
     }
   }
   reader.checkIntact();
+  out.shrinkRunChannels();
   if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
   if (progress) progress(1.0);
   return out;

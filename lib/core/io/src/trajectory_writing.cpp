@@ -22,7 +22,7 @@ void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
     channel("fb_y", [&](std::size_t i) { return samples.feedback(i).y(); });
     channel("fb_z", [&](std::size_t i) { return samples.feedback(i).z(); });
   }
-  if (samples.hasFeed()) channel("feed", [&](std::size_t i) { return double(samples.feed[i]); });
+  if (samples.hasFeed()) channel("feed", [feed = samples.feed.cursor()](std::size_t i) mutable { return double(feed[i]); });
   for (const auto& [name, v] : samples.extra) channel(name, [&v = v](std::size_t i) { return v[i]; });
 
   std::vector<std::pair<std::string, BiipType>> names = {{"line", BiipType::U32}};
@@ -32,9 +32,10 @@ void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
                                {"coordinates", "workpiece"}};
   BiipWriter writer(path, channels, samples.cycle > 0 ? samples.cycle : 0.001, meta.dump(), samples.startTime);
   std::vector<unsigned char> record(writer.recordBytes());
+  RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   for (std::size_t i = 0; i < samples.size(); ++i) {
     std::fill(record.begin(), record.end(), 0);
-    biipStore(record.data(), channels[0], i < samples.line.size() ? samples.line[i] : 0);
+    biipStore(record.data(), channels[0], i < samples.line.size() ? lineOf[i] : 0);
     for (std::size_t c = 0; c < written.size(); ++c) biipStore(record.data(), channels[c + 1], written[c].second(i));
     writer.append(record.data());
   }

@@ -14,11 +14,8 @@ TrajectorySink::TrajectorySink(double cycle, std::string source, bool feedback) 
 void TrajectorySink::expect(std::size_t samples) {
   Trajectory& t = trajectory_;
   for (std::vector<double>* channel : {&t.x, &t.y, &t.z}) channel->reserve(samples);
-  t.feed.reserve(samples);
   if (feedback_)
     for (std::vector<float>* channel : {&t.fbOffsetX, &t.fbOffsetY, &t.fbOffsetZ}) channel->reserve(samples);
-  t.line.reserve(samples);
-  t.block.reserve(samples);
 }
 
 void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
@@ -39,6 +36,12 @@ void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
     t.fbOffsetY.push_back(static_cast<float>(s.fbY - s.y));
     t.fbOffsetZ.push_back(static_cast<float>(s.fbZ - s.z));
   }
+}
+
+Trajectory TrajectorySink::take() {
+  // The run channels grew by doubling: up to half of each is spare room.
+  trajectory_.shrinkRunChannels();
+  return std::move(trajectory_);
 }
 
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source) {

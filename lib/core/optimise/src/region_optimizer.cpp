@@ -391,8 +391,9 @@ LineRange widenToWholePasses(const Trajectory& samples, const PassSet& passSet, 
   const std::vector<Pass>& passes = passSet.passes;
   auto lineRangeOf = [&](const Pass& p) {
     LineRange r{UINT32_MAX, 0};
-    for (std::size_t i = p.begin; i < p.end; ++i)
-      if (samples.line[i] != 0) r.first = std::min(r.first, samples.line[i]), r.last = std::max(r.last, samples.line[i]);
+    samples.line.forEachRun(p.begin, p.end, [&](std::uint32_t line, std::size_t, std::size_t) {
+      if (line != 0) r.first = std::min(r.first, line), r.last = std::max(r.last, line);
+    });
     return r;
   };
   std::size_t first = passes.size(), last = 0;

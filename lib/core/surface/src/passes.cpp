@@ -37,12 +37,14 @@ constexpr double kRapidSpeedRatio = 2.0;   // without feeds: faster than this ma
 
 enum class PieceKind : std::uint8_t { Feed, Rapid, Still, Unknown };
 
+// One a move: 48 bytes, 2 million of them for a 28-hour raster.
 struct Piece {
   std::size_t begin = 0, end = 0;  // samples
+  double dz = 0;                   // mm, end minus start
+  // Unit horizontal directions (may be zero), only compared with each other: floats suffice.
+  Eigen::Vector2f startHeading = Eigen::Vector2f::Zero(), endHeading = Eigen::Vector2f::Zero();
   PieceKind kind = PieceKind::Feed;
   bool vertical = false;
-  double dz = 0;                   // mm, end minus start
-  Vec3 startHeading = Vec3::Zero(), endHeading = Vec3::Zero();  // unit horizontal directions (may be zero)
   bool cutting = true;
 };
 
@@ -51,55 +53,61 @@ bool finite(const Trajectory& s, std::size_t i) {
   return v == 0;
 }
 
-Vec3 horizontal(const Vec3& v) {
-  const Vec3 h(v.x(), v.y(), 0);
-  const double n = h.norm();
-  return n > kLengthEpsilon ? Vec3(h / n) : Vec3(Vec3::Zero());
+Eigen::Vector2f horizontal(const Vec3& v) {
+  const double n = std::hypot(v.x(), v.y());
+  return n > kLengthEpsilon ? Eigen::Vector2f(float(v.x() / n), float(v.y() / n)) : Eigen::Vector2f::Zero();
 }
 
 // --- pieces from the program --------------------------------------------------------------
 
-// The move index of each sample: the block channel when it matches the program, else the
-// first move of the sample's line.
-std::vector<std::uint32_t> moveOfSamples(const Trajectory& s, const Program& program) {
+// Calls f(move, begin, end) for each run of samples of one move (kNoMove: none): the block
+// channel's when it matches the program, else the first move of the samples' line. Walks the
+// channels' runs, never a copy per sample (400 MB on a 100 M-sample run).
+template <typename F>
+void forEachMoveRun(const Trajectory& s, const Program& program, F&& f) {
   const std::size_t n = s.size();
   const std::size_t moves = program.moves.size();
   bool blockUsable = s.block.size() == n && n > 0;
   if (blockUsable) {
     // A dump of another program has blocks that are out of range or sit on other lines.
     const std::size_t step = std::max<std::size_t>(1, n / 4096);
+    RunChannel<std::uint32_t>::Cursor block = s.block.cursor(), line = s.line.cursor();
     for (std::size_t i = 0; i < n && blockUsable; i += step) {
-      const std::uint32_t b = s.block[i];
-      if (b >= moves || (s.line[i] != 0 && program.moves[b].line != s.line[i])) blockUsable = false;
+      const std::uint32_t b = block[i];
+      if (b >= moves || (line[i] != 0 && program.moves[b].line != line[i])) blockUsable = false;
     }
   }
-  std::vector<std::uint32_t> out(n, kNoMove);
-  if (blockUsable) {
-    for (std::size_t i = 0; i < n; ++i) out[i] = s.block[i] < moves ? s.block[i] : kNoMove;
-    return out;
+  std::vector<std::uint32_t> firstMove;
+  if (!blockUsable) {
+    std::uint32_t maxLine = 0;
+    for (const Move& m : program.moves) maxLine = std::max(maxLine, m.line);
+    firstMove.assign(std::size_t(maxLine) + 1, kNoMove);
+    for (std::size_t k = moves; k-- > 0;) firstMove[program.moves[k].line] = static_cast<std::uint32_t>(k);
   }
-  std::uint32_t maxLine = 0;
-  for (const Move& m : program.moves) maxLine = std::max(maxLine, m.line);
-  std::vector<std::uint32_t> firstMove(std::size_t(maxLine) + 1, kNoMove);
-  for (std::size_t k = moves; k-- > 0;) firstMove[program.moves[k].line] = static_cast<std::uint32_t>(k);
-  for (std::size_t i = 0; i < n; ++i) {
-    const std::uint32_t l = s.line[i];
-    if (l != 0 && l <= maxLine) out[i] = firstMove[l];
-  }
-  return out;
+  const auto moveOf = [&](std::uint32_t value) {
+    if (blockUsable) return value < moves ? value : kNoMove;
+    return value != 0 && value < firstMove.size() ? firstMove[value] : kNoMove;
+  };
+  std::uint32_t current = kNoMove;
+  std::size_t from = 0;
+  (blockUsable ? s.block : s.line).forEachRun(0, n, [&](std::uint32_t value, std::size_t begin, std::size_t) {
+    const std::uint32_t move = moveOf(value);
+    if (begin > 0 && move == current) return;
+    if (begin > 0) f(current, from, begin);
+    current = move;
+    from = begin;
+  });
+  if (n > 0) f(current, from, n);
 }
 
 std::vector<Piece> piecesFromProgram(const Trajectory& s, const Program& program) {
-  const std::vector<std::uint32_t> moveOf = moveOfSamples(s, program);
   std::vector<Piece> pieces;
-  const std::size_t n = s.size();
-  for (std::size_t begin = 0; begin < n;) {
-    std::size_t end = begin + 1;
-    while (end < n && moveOf[end] == moveOf[begin]) ++end;
+  // At most a piece a run of the channel the moves are read from: no doubling of 100 MB.
+  pieces.reserve(std::max(s.line.runCount(), s.block.runCount()) + 1);
+  forEachMoveRun(s, program, [&](std::uint32_t k, std::size_t begin, std::size_t end) {
     Piece p;
     p.begin = begin;
     p.end = end;
-    const std::uint32_t k = moveOf[begin];
     if (k == kNoMove) {
       p.kind = PieceKind::Unknown;
     } else {
@@ -117,8 +125,7 @@ std::vector<Piece> piecesFromProgram(const Trajectory& s, const Program& program
       }
     }
     pieces.push_back(p);
-    begin = end;
-  }
+  });
   return pieces;
 }
 
@@ -141,8 +148,9 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
     double highest = 0;
     std::vector<double> seen;
     const std::size_t step = std::max<std::size_t>(1, n / kTypicalSamples);
+    RunChannel<float>::Cursor feed = s.feed.cursor();
     for (std::size_t i = 0; i < n; ++i) {
-      const double f = s.feed[i];
+      const double f = feed[i];
       if (f > highest) highest = f;
       if (i % step == 0 && f > 0) seen.push_back(f);
     }
@@ -153,7 +161,10 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
   // The feeds are floats: the rapid rate is compared as one too (12345.678 is not a float).
   const double rapidAsStored = static_cast<float>(rapid);
   if (rapid > 0)
-    for (std::size_t i = 0; i < n; ++i) out[i] = s.feed[i] >= rapidAsStored * (1 - kRoundingSlack);
+    s.feed.forEachRun(0, n, [&](float f, std::size_t begin, std::size_t end) {
+      std::fill(out.begin() + static_cast<std::ptrdiff_t>(begin), out.begin() + static_cast<std::ptrdiff_t>(end),
+                char(f >= rapidAsStored * (1 - kRoundingSlack)));
+    });
   return out;
 }
 
@@ -196,7 +207,7 @@ std::vector<Piece> piecesFromSamples(const Trajectory& s) {
   const std::vector<char> rapid = s.hasFeed() ? rapidFromFeed(s) : rapidFromSpeed(s);
   bool useLines = false;
   if (s.hasLine)
-    for (std::size_t i = 0; i < n && !useLines; ++i) useLines = s.line[i] != 0;
+    s.line.forEachRun(0, n, [&](std::uint32_t line, std::size_t, std::size_t) { useLines = useLines || line != 0; });
   std::vector<char> vertical(n, 0);
   if (!useLines) {
     char state = 0;
@@ -211,10 +222,11 @@ std::vector<Piece> piecesFromSamples(const Trajectory& s) {
     if (n > 0) vertical[n - 1] = n > 1 ? vertical[n - 2] : 0;
   }
   std::vector<Piece> pieces;
+  RunChannel<std::uint32_t>::Cursor lineOf = s.line.cursor();
   for (std::size_t begin = 0; begin < n;) {
     std::size_t end = begin + 1;
-    while (end < n && rapid[end] == rapid[begin] && vertical[end] == vertical[begin] &&
-           (!useLines || s.line[end] == s.line[begin]))
+    const std::uint32_t line = useLines ? lineOf[begin] : 0;
+    while (end < n && rapid[end] == rapid[begin] && vertical[end] == vertical[begin] && (!useLines || lineOf[end] == line))
       ++end;
     Piece p;
     p.begin = begin;

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "isurface/base/geometry.h"
+#include "isurface/base/run_channel.h"
 
 namespace isurface {
 
@@ -17,13 +18,13 @@ struct Trajectory {
   // s, per sample, only where the source recorded times (a dump's `t` channel, a trace's time
   // column); empty when sample i is at startTime + i * cycle, which saves 8 bytes a sample.
   std::vector<double> time;
-  std::vector<std::uint32_t> line;   // 1-based G-code line, 0 unknown (all 0 when absent)
-  std::vector<std::uint32_t> block;  // move index, when the dump has one (else empty)
+  RunChannel<std::uint32_t> line;    // 1-based G-code line, 0 unknown (all 0 when absent)
+  RunChannel<std::uint32_t> block;   // move index, when the dump has one (else empty)
   std::vector<double> x, y, z;       // commanded position, mm
   // Feedback position minus the commanded one, mm (empty when absent): a float keeps a servo's
   // lag of a millimetre to a ten-thousandth of a micrometre, in half the room of a position.
   std::vector<float> fbOffsetX, fbOffsetY, fbOffsetZ;
-  std::vector<float> feed;           // programmed feed, mm/min (empty when absent; 7 digits suffice)
+  RunChannel<float> feed;            // programmed feed, mm/min (empty when absent; 7 digits suffice)
   // Any other numeric channel of the dump, kept to colour by.
   std::vector<std::pair<std::string, std::vector<double>>> extra;
   bool hasLine = false;              // the dump had a `line` channel
@@ -40,6 +41,12 @@ struct Trajectory {
   Vec3 commanded(std::size_t i) const { return Vec3(x[i], y[i], z[i]); }
   Vec3 feedbackOffset(std::size_t i) const { return Vec3(fbOffsetX[i], fbOffsetY[i], fbOffsetZ[i]); }
   Vec3 feedback(std::size_t i) const { return commanded(i) + feedbackOffset(i); }
+  // Gives back the spare room the run channels kept as they grew.
+  void shrinkRunChannels() {
+    line.shrink_to_fit();
+    block.shrink_to_fit();
+    feed.shrink_to_fit();
+  }
   // Sets sample i's feedback from a feedback position (mm); the channels must be sized.
   void setFeedback(std::size_t i, const Vec3& position) {
     fbOffsetX[i] = static_cast<float>(position.x() - x[i]);

@@ -18,7 +18,7 @@ class TrajectorySink : public SampleSink {
   void expect(std::size_t samples) override;
   void consume(const SimSample* samples, std::size_t count) override;
   bool wantsFeedback() const override { return feedback_; }
-  Trajectory take() { return std::move(trajectory_); }
+  Trajectory take();
 
  private:
   Trajectory trajectory_;
