@@ -4,8 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include "isurface/base/available_memory.h"
 #include "isurface/io/biip.h"
 
 namespace isurface {
@@ -59,6 +61,15 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
   out.hasLine = line.valid();
 
+  {
+    const bool feedbackKept = feedbackComplete && channels.feedback;
+    std::size_t extras = 0;
+    for (const BiipChannel& c : header.channels) extras += channels.extra && !isKnownChannel(c.name, feedbackComplete);
+    // Positions 24, feedback offsets 12, times and extra channels 8 each: the line, move index
+    // and feed, kept as runs, cost about nothing beside them.
+    const std::uint64_t perSample = 24 + (feedbackKept ? 12 : 0) + (t.valid() ? 8 : 0) + 8 * extras;
+    requireMemory(reader.path(), fmt::format("its {} samples", n), std::uint64_t(n) * perSample, availableMemory());
+  }
   // Destination of each floating channel copied in chunks.
   struct Copy {
     BiipChannelView view;
