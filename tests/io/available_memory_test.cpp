@@ -19,11 +19,19 @@ TEST(availableMemory, MemoryAndSwapFreeAreAddedUp) {
       "HugePages_Total:       0\n";
   EXPECT_EQ(availableMemoryIn(meminfo), std::optional<std::uint64_t>((12000000ull + 1500000ull) * 1024));
   EXPECT_EQ(availableMemoryIn("MemTotal: 5 kB\n"), std::nullopt);
+  EXPECT_EQ(availableMemoryIn("SwapFree: 0 kB\n"), std::nullopt);  // swap alone says nothing of the memory
   EXPECT_EQ(availableMemoryIn(""), std::nullopt);
   // This machine's own figure is there and is not nothing.
   const std::optional<std::uint64_t> here = availableMemory();
   ASSERT_TRUE(here.has_value());
   EXPECT_GT(*here, 0u);
+}
+
+TEST(availableMemory, AContainersLimitBinds) {
+  EXPECT_EQ(cgroupRoomIn("8589934592\n", "1073741824\n"), std::optional<std::uint64_t>(7516192768ull));
+  EXPECT_EQ(cgroupRoomIn("1000\n", "2000\n"), std::optional<std::uint64_t>(0));
+  EXPECT_EQ(cgroupRoomIn("max\n", "1073741824\n"), std::nullopt);
+  EXPECT_EQ(cgroupRoomIn("", ""), std::nullopt);
 }
 
 TEST(availableMemory, TooLittleIsRefusedNamingTheFileAndTheSizes) {

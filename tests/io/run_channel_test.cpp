@@ -95,5 +95,46 @@ TEST(RunChannel, FeedsKeepTheirBitsNotANumberIncluded) {
   EXPECT_EQ(feed[6], 1200.5f);
 }
 
+TEST(RunChannel, AValueNewEverySampleIsKeptAsAPlainArray) {
+  // A trace's measured feed: as runs it would cost 12 bytes a sample, three times the array.
+  RunChannel<float> feed;
+  std::vector<float> values;
+  for (int i = 0; i < 20000; ++i) values.push_back(600.0f + float(i % 97) * 0.5f + (i % 5 == 0 ? 0.0f : 0.25f));
+  for (std::size_t i = 0; i < values.size(); ++i) feed.push_back(values[i]);
+  EXPECT_TRUE(feed.dense());
+  EXPECT_LE(feed.bytes(), values.size() * sizeof(float) * 2);
+  EXPECT_EQ(feed.toVector(), values);
+  RunChannel<float>::Cursor at = feed.cursor();
+  for (std::size_t i = 0; i < values.size(); i += 7) ASSERT_EQ(at[i], values[i]) << i;
+  for (std::size_t i = 0; i < values.size(); i += 13) ASSERT_EQ(feed[i], values[i]) << i;
+  std::size_t covered = 0;
+  feed.forEachRun(100, 200, [&](float v, std::size_t from, std::size_t to) {
+    ASSERT_EQ(from, 100 + covered);
+    ASSERT_EQ(v, values[from]);
+    covered += to - from;
+  });
+  EXPECT_EQ(covered, 100u);
+  feed.resize(10);
+  feed.append(5.0f, 3);
+  std::vector<float> expected(values.begin(), values.begin() + 10);
+  expected.insert(expected.end(), 3, 5.0f);
+  EXPECT_EQ(feed.toVector(), expected);
+  // A programmed feed, new once a move, stays runs.
+  RunChannel<float> programmed;
+  for (int i = 0; i < 400000; ++i) programmed.push_back(float(600 + (i / 50) % 40));
+  EXPECT_FALSE(programmed.dense());
+  EXPECT_LT(programmed.bytes(), 400000u);  // a plain array: 1.6 MB
+}
+
+TEST(RunChannel, AnEmptyChannelReadsNothingAndDoesNotCrash) {
+  const RunChannel<std::uint32_t> empty;
+  EXPECT_EQ(empty[0], 0u);
+  RunChannel<std::uint32_t>::Cursor at = empty.cursor();
+  EXPECT_EQ(at[5], 0u);
+  int runs = 0;
+  empty.forEachRun([&](std::uint32_t, std::size_t, std::size_t) { ++runs; });
+  EXPECT_EQ(runs, 0);
+}
+
 }  // namespace
 }  // namespace isurface

@@ -3,6 +3,7 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
 #include <fstream>
 #include <sstream>
 
@@ -14,24 +15,47 @@ std::optional<std::uint64_t> availableMemoryIn(const std::string& meminfo) {
   std::istringstream in(meminfo);
   std::string key, unit;
   std::uint64_t value = 0, total = 0;
-  bool found = false;
+  bool memory = false;
   // Lines read "MemAvailable:   12345678 kB".
   while (in >> key >> value) {
     std::getline(in, unit);
     if (key == "MemAvailable:" || key == "SwapFree:") {
       total += value * (unit.find("kB") != std::string::npos ? 1024 : 1);
-      found = true;
+      memory = memory || key == "MemAvailable:";
     }
   }
-  return found ? std::optional<std::uint64_t>(total) : std::nullopt;
+  // Free swap alone (a kernel that does not report MemAvailable) says nothing of the memory.
+  return memory ? std::optional<std::uint64_t>(total) : std::nullopt;
 }
 
-std::optional<std::uint64_t> availableMemory() {
-  std::ifstream in("/proc/meminfo");
+std::optional<std::uint64_t> cgroupRoomIn(const std::string& limit, const std::string& usage) {
+  std::uint64_t max = 0, current = 0;
+  if (!(std::istringstream(limit) >> max) || !(std::istringstream(usage) >> current)) return std::nullopt;  // "max": none
+  return max > current ? max - current : 0;
+}
+
+namespace {
+
+std::optional<std::string> readText(const char* path) {
+  std::ifstream in(path);
   if (!in) return std::nullopt;
   std::ostringstream text;
   text << in.rdbuf();
-  return availableMemoryIn(text.str());
+  return text.str();
+}
+
+}  // namespace
+
+std::optional<std::uint64_t> availableMemory() {
+  const std::optional<std::string> meminfo = readText("/proc/meminfo");
+  std::optional<std::uint64_t> available = meminfo ? availableMemoryIn(*meminfo) : std::nullopt;
+  // A container's limit (cgroup v2) binds before the machine's memory does.
+  const std::optional<std::string> limit = readText("/sys/fs/cgroup/memory.max");
+  const std::optional<std::string> usage = readText("/sys/fs/cgroup/memory.current");
+  if (limit && usage)
+    if (const std::optional<std::uint64_t> room = cgroupRoomIn(*limit, *usage))
+      available = available ? std::min(*available, *room) : *room;
+  return available;
 }
 
 void requireMemory(const std::string& file, const std::string& what, std::uint64_t bytes,

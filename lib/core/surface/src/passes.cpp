@@ -90,13 +90,16 @@ void forEachMoveRun(const Trajectory& s, const Program& program, F&& f) {
   };
   std::uint32_t current = kNoMove;
   std::size_t from = 0;
-  (blockUsable ? s.block : s.line).forEachRun(0, n, [&](std::uint32_t value, std::size_t begin, std::size_t) {
-    const std::uint32_t move = moveOf(value);
+  const RunChannel<std::uint32_t>& channel = blockUsable ? s.block : s.line;
+  const auto take = [&](std::uint32_t move, std::size_t begin) {
     if (begin > 0 && move == current) return;
     if (begin > 0) f(current, from, begin);
     current = move;
     from = begin;
-  });
+  };
+  channel.forEachRun(0, n, [&](std::uint32_t value, std::size_t begin, std::size_t) { take(moveOf(value), begin); });
+  // Samples past the end of a shorter line channel have no move.
+  if (channel.size() < n) take(kNoMove, channel.size());
   if (n > 0) f(current, from, n);
 }
 

@@ -8,10 +8,14 @@
 
 namespace isurface {
 
-// MemAvailable plus SwapFree of a /proc/meminfo text, bytes; nullopt when it names neither.
+// MemAvailable plus SwapFree of a /proc/meminfo text, bytes; nullopt without MemAvailable.
 std::optional<std::uint64_t> availableMemoryIn(const std::string& meminfo);
 
-// The same for this machine now; nullopt where /proc/meminfo cannot be read.
+// Room left under a cgroup v2 limit, bytes, from memory.max and memory.current; nullopt when
+// there is no limit ("max") or a text is not a number.
+std::optional<std::uint64_t> cgroupRoomIn(const std::string& limit, const std::string& usage);
+
+// The same for this process now, the smaller of the two; nullopt when neither can be read.
 std::optional<std::uint64_t> availableMemory();
 
 // Throws InputError naming `file` when `bytes` (what `what` needs in memory) exceed `available`.
