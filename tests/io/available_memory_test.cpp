@@ -32,6 +32,36 @@ TEST(availableMemory, AContainersLimitBinds) {
   EXPECT_EQ(cgroupRoomIn("1000\n", "2000\n"), std::optional<std::uint64_t>(0));
   EXPECT_EQ(cgroupRoomIn("max\n", "1073741824\n"), std::nullopt);
   EXPECT_EQ(cgroupRoomIn("", ""), std::nullopt);
+  // Page cache the kernel would give back is room: 8 GB limit, 5 GB used of which 3 GB files.
+  EXPECT_EQ(cgroupRoomIn("8000000000\n", "5000000000\n",
+                         "inactive_file 1\nactive_file 1\ntotal_inactive_file 1000000000\ntotal_active_file 2000000000\n"),
+            std::optional<std::uint64_t>(6'000'000'000ull));
+  EXPECT_EQ(cgroupRoomIn("8000000000\n", "5000000000\n", "anon 1\ninactive_file 1000000000\nactive_file 2000000000\n"),
+            std::optional<std::uint64_t>(6'000'000'000ull));
+  EXPECT_EQ(cgroupRoomIn("8000000000\n", "1000\n", "inactive_file 3000000000\n"),
+            std::optional<std::uint64_t>(8'000'000'000ull));
+}
+
+TEST(availableMemory, TheProcesssOwnGroupsLimitIsFoundInV1AndV2) {
+  // cgroup v1, as on a machine whose controllers are mounted apart.
+  const std::vector<CgroupMemoryFiles> v1 =
+      cgroupMemoryFiles("9:name=systemd:/\n4:memory:/process_api/a32\n3:cpuset:/\n0::/\n");
+  ASSERT_EQ(v1.size(), 3u);
+  EXPECT_EQ(v1[0].limit, "/sys/fs/cgroup/memory/process_api/a32/memory.limit_in_bytes");
+  EXPECT_EQ(v1[0].usage, "/sys/fs/cgroup/memory/process_api/a32/memory.usage_in_bytes");
+  EXPECT_EQ(v1[0].stat, "/sys/fs/cgroup/memory/process_api/a32/memory.stat");
+  EXPECT_EQ(v1[1].limit, "/sys/fs/cgroup/memory.max");  // the v2 line's group is the root
+  EXPECT_EQ(v1[2].limit, "/sys/fs/cgroup/memory.max");
+  // cgroup v2 alone, and a v1 line naming several controllers.
+  const std::vector<CgroupMemoryFiles> v2 = cgroupMemoryFiles("0::/user.slice/app.scope\n");
+  ASSERT_EQ(v2.size(), 2u);
+  EXPECT_EQ(v2[0].limit, "/sys/fs/cgroup/user.slice/app.scope/memory.max");
+  EXPECT_EQ(v2[0].usage, "/sys/fs/cgroup/user.slice/app.scope/memory.current");
+  EXPECT_EQ(cgroupMemoryFiles("5:cpu,memory:/box\n")[0].limit, "/sys/fs/cgroup/memory/box/memory.limit_in_bytes");
+  EXPECT_EQ(cgroupMemoryFiles("5:memoryless:/box\n").size(), 1u) << "not the memory controller";
+  EXPECT_EQ(cgroupMemoryFiles("garbage").size(), 1u);
+  // v1's "no limit" is a huge number: the machine's memory binds.
+  EXPECT_GT(*cgroupRoomIn("9223372036854771712\n", "1618874368\n"), 1ull << 62);
 }
 
 TEST(availableMemory, TooLittleIsRefusedNamingTheFileAndTheSizes) {

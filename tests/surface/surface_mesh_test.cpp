@@ -154,6 +154,22 @@ TEST(surface_mesh, PassesOfDifferentLengthsOnlyMeetWhereTheyOverlap) {
     for (const std::uint32_t v : t) EXPECT_GE(s.x[m.vertexSample[v]], 3.0);
 }
 
+TEST(surface_mesh, AThinnedMeshWhoseStepsAreLongerThanTheGapStillJoinsItsPasses) {
+  // Passes 0.3 mm apart, a vertex every 4 mm along them (a long raster thinned for a small
+  // view); the passes of the two zig-zag directions are thinned from opposite ends, so their
+  // vertices do not line up across.
+  Grid g = planeGrid(10, 1003, 0.05, 0.3, true);
+  MeshOptions thinned;
+  thinned.stride = 80;
+  const SurfaceMesh m = buildSurfaceMesh(g.samples, g.passes, thinned);
+  double area = 0;
+  for (const auto& t : m.triangles) area += 0.5 * triangleNormal(g.samples, m, t).norm();
+  EXPECT_NEAR(area, 50.1 * 2.7, 0.5) << "the whole 50.1 x 2.7 mm plane";
+  // Patches 3 mm apart stay apart however long the steps.
+  Grid apart = planeGrid(4, 1003, 0.05, 3.0, true);
+  EXPECT_TRUE(buildSurfaceMesh(apart.samples, apart.passes, thinned).triangles.empty());
+}
+
 TEST(surface_mesh, NonFiniteSamplesAreNeverVertices) {
   Grid g = planeGrid(3, 21, 0.5, 0.5, true);
   g.samples.x[5] = std::numeric_limits<double>::quiet_NaN();

@@ -50,6 +50,13 @@ std::string machineCaption(const Machine& machine, bool known) {
   return known ? "machine: " + machine.name : std::string("machine: not named by the dump");
 }
 
+std::string mapCaption(const Document& doc) {
+  std::string caption = machineCaption(doc.machine, doc.machineKnown);
+  if (doc.samples && doc.samples->thinning > 1)
+    caption += ", 1 sample in " + std::to_string(doc.samples->thinning) + " of the dump";
+  return caption;
+}
+
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
                                        const vis::QualityMapRequest& request, const Machine& machine,
                                        bool unitsOfProgram, app_model::JobControl& control) {
@@ -61,12 +68,15 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   OpenRunRequest open;
   open.files = {programPath, dumpPath};
   open.machine = machine;
+  open.channels.feedback = needsFeedback(request);
+  open.thinToFit = true;  // a dump larger than the memory is seen whole, thinned, with a word
   OpenedRun run = openRun(open, [&control](double f) { control.progress(0.5 * f); });
   doc->program = std::move(run.program);
   doc->samples = std::move(run.samples);
   doc->machine = run.machine;
   doc->machineKnown = run.machineKnown;
   doc->warnings = std::move(run.warnings);
+  doc->feedbackSupply = std::move(run.feedbackSupply);
   if (!doc->samples || doc->samples->size() == 0) return doc;
   control.progress(0.55);
   // The curves' pyramids need only the samples: built on a second thread beside the map.
@@ -77,7 +87,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
     return made;
   });
   vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
-  fitted.caption = machineCaption(doc->machine, doc->machineKnown);
+  fitted.caption = mapCaption(*doc);
   if (unitsOfProgram) fitted.inch = doc->program && doc->program->inch;
   // Samples with no surface to map (a drilling program, a trace cut short) still open: their
   // curves and rows are there, and the reason stands beside the file's own warnings.

@@ -81,9 +81,10 @@ void Inspector::State::startRecolour() {
     status = "the new colouring comes once the report being made is written";
     return;
   }
+  if (needsFeedback(mapRequest()) && loadFeedbackFirst([this] { startRecolour(); })) return;
   vis::QualityMapRequest request = mapRequest();
   request.pickable = true;
-  request.caption = machineCaption(doc->machine, doc->machineKnown);
+  request.caption = mapCaption(*doc);
   auto result = std::make_shared<JobResult>();
   pending = result;
   std::shared_ptr<const Trajectory> samples = doc->samples;
@@ -141,6 +142,10 @@ void Inspector::State::takeJobResult() {
     return;
   }
   if (!result) return;
+  if (result->feedback) {
+    attachLoadedFeedback(*result);
+    return;
+  }
   if (!result->reportPath.empty()) {
     save(result->reportPath, std::move(result->report), "report");
     return;

@@ -52,6 +52,10 @@ std::string Inspector::describe() const {
                         {"dump", doc->dumpPath},
                         {"samples", doc->samples ? doc->samples->size() : 0},
                         {"machine", doc->machineKnown ? doc->machine.name : ""}};
+    // "loaded", "on request" (in the dump or the servo's to replay, not yet loaded) or "none".
+    d["feedback"] = doc->samples && doc->samples->hasFeedback() ? "loaded"
+                    : doc->feedbackAvailable()                   ? "on request"
+                                                                 : "none";
     if (doc->samples && doc->samples->size() > 1)
       d["duration_s"] = doc->samples->timeAt(doc->samples->size() - 1) - doc->samples->timeAt(0);
     documents.push_back(d);
@@ -85,6 +89,7 @@ std::string Inspector::describe() const {
   if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
     map = {{"quantity", doc->map.style.quantityLabel},
            {"unit", doc->map.style.unit},
+           {"range", {doc->map.style.range.lo, doc->map.style.range.hi}},
            {"colour_map", doc->map.style.colorMap},
            {"caption", doc->map.style.caption},
            {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"},

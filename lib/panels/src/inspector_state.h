@@ -7,6 +7,7 @@
 #include <map>
 #include <memory>
 #include <deque>
+#include <functional>
 #include <optional>
 #include <string>
 #include <utility>
@@ -61,6 +62,9 @@ struct Document {
   bool machineKnown = true;   // false: a dump that names no machine (the default stands in)
   std::vector<std::string> warnings;
   bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
+  // The servo's positions are loaded when first needed (12 bytes a sample): from here.
+  FeedbackSupply feedbackSupply;
+  bool feedbackAvailable() const { return samples && (samples->hasFeedback() || feedbackSupply.available()); }
 };
 
 struct ViewSettings {
@@ -115,6 +119,10 @@ struct JobResult {
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
   vis::QualityMap map;
   std::string reportPath, report;            // or a report to save (File > Export)
+  // or the feedback of a document's samples, and what was waiting for it
+  std::optional<FeedbackOffsets> feedback;
+  std::shared_ptr<const Trajectory> feedbackFor;
+  std::function<void()> afterFeedback;
 };
 
 // The label of the report's job begins so.
@@ -223,6 +231,12 @@ struct Inspector::State {
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
   void startRecolour();
+  // When the active document's feedback is not loaded but can be: starts loading it, runs
+  // `then` once it is in (if that document is still the active one) and returns true. False
+  // when there is nothing to load: the caller goes on at once.
+  bool loadFeedbackFirst(std::function<void()> then);
+  // The loaded feedback joins its document's samples (on the UI thread, no job running).
+  void attachLoadedFeedback(JobResult& result);
   // Simulates the active document's program again with `machine` (a dump it came with is left).
   void simulateAgain();
   // Opens the machine window with the machine in use; an open one keeps its edits.
@@ -318,5 +332,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
                                        bool unitsOfProgram, app_model::JobControl& control);
 // The first line of a map's caption: the machine its samples were made with.
 std::string machineCaption(const Machine& machine, bool known);
+// The first line of a document's map captions: its machine, and its thinning if it is thinned.
+std::string mapCaption(const Document& doc);
 
 }  // namespace isurface::panels

@@ -247,7 +247,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   // say the tool went (a dump with feedback). The programmed path is the toolpath below.
   {
     const Document* doc = s.activeDocument();
-    const bool feedback = doc && doc->samples && doc->samples->hasFeedback();
+    const bool feedback = doc && doc->feedbackAvailable();
     // The map of such a file was made on the commanded surface (see loadDocument).
     if (!feedback) s.settings.feedbackSurface = false;
     int surface = s.settings.feedbackSurface ? 1 : 0;

@@ -97,6 +97,20 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
   return out;
 }
 
+// The map's figures (kind 1) or the samples of lines first..last (kind 2), written to `path`.
+void exportNumbers(Inspector::State& s, int kind, const std::string& path, int first, int last) {
+  const Document* doc = s.activeDocument();
+  if (!doc || !doc->samples) return;
+  if (kind == 1) {
+    if (doc->scene) s.save(path, figuresJson(*doc), "map figures");
+    return;
+  }
+  std::size_t rows = 0;
+  std::string csv = samplesCsv(*doc, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last), rows);
+  if (rows == 0) s.status = fmt::format("lines {}-{} produced no samples: nothing exported", first, last);
+  else s.save(path, std::move(csv), fmt::format("{} samples", rows));
+}
+
 }  // namespace
 
 void drawExportDialog(Inspector::State& s) {
@@ -140,6 +154,9 @@ void drawExportDialog(Inspector::State& s) {
   std::string problem;
   if (!doc || !doc->samples) problem = "nothing to export: open a program or a dump first";
   else if (s.exportKind != 2 && !doc->scene) problem = "no map to export: " + doc->name + " has no surface";
+  else if ((s.exportKind == 1 || s.exportKind == 2) && doc->samples->thinning > 1)
+    problem = fmt::format("{} is shown thinned (1 sample in {}): its figures and samples need every sample",
+                          doc->name, doc->samples->thinning);
   else if (s.exportKind == 0 && (s.exportWidth < 64 || s.exportHeight < 64 || s.exportWidth > 8192 || s.exportHeight > 8192))
     problem = "the size must be 64 to 8192 pixels each way";
   else if (s.exportKind == 2 && (s.exportFirst < 1 || s.exportLast < s.exportFirst))
@@ -159,13 +176,11 @@ void drawExportDialog(Inspector::State& s) {
       else s.save(s.exportPath, vis::pngOfRgb(rgb.data(), s.exportWidth, s.exportHeight), "view image");
     } else if (s.exportKind == 3) {
       s.startReport(s.exportPath, s.exportRegions);
-    } else if (s.exportKind == 1) {
-      s.save(s.exportPath, figuresJson(*doc), "map figures");
     } else {
-      std::size_t rows = 0;
-      std::string csv = samplesCsv(*doc, static_cast<std::uint32_t>(s.exportFirst), static_cast<std::uint32_t>(s.exportLast), rows);
-      if (rows == 0) s.status = fmt::format("lines {}-{} produced no samples: nothing exported", s.exportFirst, s.exportLast);
-      else s.save(s.exportPath, std::move(csv), fmt::format("{} samples", rows));
+      // The figures' predicted deviation and the samples' feedback columns need the feedback.
+      auto numbers = [&s, kind = s.exportKind, path = std::string(s.exportPath), first = s.exportFirst,
+                      last = s.exportLast] { exportNumbers(s, kind, path, first, last); };
+      if (!s.loadFeedbackFirst(numbers)) numbers();
     }
     ImGui::CloseCurrentPopup();
   }

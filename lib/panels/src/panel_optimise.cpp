@@ -41,7 +41,26 @@ std::string whyNotOptimisable(const Document* doc) {
   if (!doc->program || doc->programPath.empty())
     return "Optimise needs the G-code program of " + doc->name + ": open the program and this dump together";
   if (!doc->samples || !doc->map.mesh) return "Optimise needs a surface: " + doc->name + " has no cutting passes";
+  if (doc->samples->thinning > 1)
+    return "Optimise needs every sample: " + doc->name + " is shown thinned (1 sample in " +
+           std::to_string(doc->samples->thinning) + ")";
   return "";
+}
+
+// As `optimize --auto`: whole passes around the worst region, its figures taken inside its box.
+void chooseWorstRegion(Inspector::State& s) {
+  const Document* doc = s.activeDocument();
+  if (!doc || !doc->samples || !doc->map.mesh) return;
+  try {
+    const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
+    const ChosenRegion worst = worstRegion(run, doc->name);
+    s.optimiseFirst = static_cast<int>(worst.lines.first);
+    s.optimiseLast = static_cast<int>(worst.lines.last);
+    s.optimiseBox = app_model::BoxSelection{worst.lines, worst.lower, worst.upper, worst.vertices};
+    s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
+  } catch (const InputError& e) {
+    s.status = e.what();
+  }
 }
 
 }  // namespace
@@ -54,6 +73,9 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
     return;
   }
   if (refusedDuringReport("optimise")) return;
+  // "Before" is the document's own run, judged on its predicted deviation too.
+  if (doc->machineKnown && loadFeedbackFirst([this, first, last, measuredBox] { startOptimise(first, last, measuredBox); }))
+    return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
@@ -137,17 +159,8 @@ void drawOptimiseDialog(Inspector::State& s) {
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
   }
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
-    try {
-      // As `optimize --auto`: whole passes around the region, its figures taken inside its box.
-      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
-      const ChosenRegion worst = worstRegion(run, doc->name);
-      s.optimiseFirst = static_cast<int>(worst.lines.first);
-      s.optimiseLast = static_cast<int>(worst.lines.last);
-      s.optimiseBox = app_model::BoxSelection{worst.lines, worst.lower, worst.upper, worst.vertices};
-      s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
-    } catch (const InputError& e) {
-      s.status = e.what();
-    }
+    // The regions are judged on the predicted deviation too, as `optimize --auto` judges them.
+    if (!s.loadFeedbackFirst([&s] { chooseWorstRegion(s); })) chooseWorstRegion(s);
   }
   ImGui::SameLine();
   if (ImGui::Button("Whole program") && doc && doc->samples && doc->map.mesh) {

@@ -59,7 +59,14 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
     status = "open a program or a dump first, then compare it with another run";
     return;
   }
+  if (doc->samples->thinning > 1) {
+    status = "comparing needs every sample: " + doc->name + " is shown thinned (1 sample in " +
+             std::to_string(doc->samples->thinning) + ")";
+    return;
+  }
   if (refusedDuringReport("compare")) return;
+  // The two runs' feedback are compared too, when both have it.
+  if (loadFeedbackFirst([this, dumpPath] { startRunComparison(dumpPath); })) return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();

@@ -101,6 +101,13 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   }
   const Trajectory& t = *doc->samples;
   const bool feedback = t.hasFeedback();
+  if (t.thinning > 1)
+    ImGui::TextDisabled("1 sample in %zu of the dump: sample i here is its record %zu x i", t.thinning, t.thinning);
+  if (!feedback && doc->feedbackAvailable()) {
+    // Loaded when first asked for (12 bytes a sample): here, or by what shows it.
+    if (ImGui::SmallButton("Load the feedback positions (fb X Y Z)")) s.loadFeedbackFirst({});
+    noteControl(s, "data.feedback");
+  }
   const int columns = feedback ? 12 : 9;
   const app_model::Selection& sel = s.selection.current();
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |

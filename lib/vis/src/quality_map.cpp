@@ -114,9 +114,14 @@ std::vector<std::vector<Vec3>> programPolylines(const Program& program) {
   return lines;
 }
 
+bool needsFeedback(const QualityMapRequest& request) {
+  return request.feedbackSurface ||
+         (request.channel.empty() && !request.sampleValues && quantityInfo(request.quantity).needsFeedback);
+}
+
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request) {
   const QuantityInfo& info = quantityInfo(request.quantity);
-  if (((request.channel.empty() && !request.sampleValues && info.needsFeedback) || request.feedbackSurface) && !samples.hasFeedback())
+  if (needsFeedback(request) && !samples.hasFeedback())
     throw InputError(Diagnostic{samples.source, 0, 0,
                                 std::string("no feedback channels (fb_x fb_y fb_z): cannot show ") +
                                     (request.feedbackSurface ? "the feedback surface" : info.label)});

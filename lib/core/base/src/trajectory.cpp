@@ -2,6 +2,8 @@
 #include "isurface/base/trajectory.h"
 
 #include <cmath>
+#include <stdexcept>
+#include <utility>
 
 namespace isurface {
 
@@ -9,6 +11,15 @@ const std::vector<double>* Trajectory::extraChannel(const std::string& name) con
   for (const auto& [channelName, values] : extra)
     if (channelName == name) return &values;
   return nullptr;
+}
+
+void Trajectory::attachFeedback(FeedbackOffsets&& offsets) {
+  if (offsets.x.size() != size() || offsets.y.size() != size() || offsets.z.size() != size())
+    throw std::invalid_argument("feedback offsets for " + std::to_string(offsets.size()) + " samples given to " +
+                                std::to_string(size()) + " samples");
+  fbOffsetX = std::move(offsets.x);
+  fbOffsetY = std::move(offsets.y);
+  fbOffsetZ = std::move(offsets.z);
 }
 
 bool timeIsIrregular(const double* time, std::size_t n, double cycle) {

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "isurface/base/available_memory.h"
+#include "isurface/base/diagnostic.h"
 #include "isurface/io/biip.h"
 
 namespace isurface {
@@ -31,6 +32,20 @@ std::uint32_t clampToU32(std::uint64_t v) {
   return static_cast<std::uint32_t>(std::min<std::uint64_t>(v, std::numeric_limits<std::uint32_t>::max()));
 }
 
+// Records [begin, begin + count) of the feedback channels as offsets from the commanded
+// positions already loaded (float: see Trajectory).
+void copyFeedbackOffsets(const BiipChannelView (&feedback)[3], const Trajectory& commanded, std::size_t begin,
+                         std::size_t count, std::vector<double>& chunk, FeedbackOffsets& out) {
+  const std::vector<double>* axes[3] = {&commanded.x, &commanded.y, &commanded.z};
+  std::vector<float>* offsets[3] = {&out.x, &out.y, &out.z};
+  for (int axis = 0; axis < 3; ++axis) {
+    feedback[axis].copyTo(chunk.data(), begin, count);
+    const double* position = axes[axis]->data() + begin;
+    float* offset = offsets[axis]->data() + begin;
+    for (std::size_t k = 0; k < count; ++k) offset[k] = static_cast<float>(chunk[k] - position[k]);
+  }
+}
+
 }  // namespace
 
 double rapidFeedFromMetadata(const std::string& metadataJson) {
@@ -45,31 +60,42 @@ double rapidFeedFromMetadata(const std::string& metadataJson) {
   return std::isfinite(value) && value > 0 ? value : 0;
 }
 
+std::uint64_t bytesPerSample(const BiipReader& reader, const TrajectoryChannels& channels) {
+  const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
+  std::size_t extras = 0;
+  for (const BiipChannel& c : reader.header().channels) extras += channels.extra && !isKnownChannel(c.name, feedbackComplete);
+  // Positions 24, feedback offsets 12, times and extra channels 8 each: the line, move index
+  // and feed, kept as runs, cost about nothing beside them.
+  return 24 + (feedbackComplete && channels.feedback ? 12 : 0) + (reader.hasChannel("t") ? 8 : 0) + 8 * extras;
+}
+
+std::size_t thinningToFit(std::uint64_t records, std::uint64_t bytesPerSample, std::uint64_t budget) {
+  const std::uint64_t fitting = std::max<std::uint64_t>(1, budget / std::max<std::uint64_t>(1, bytesPerSample));
+  if (records <= fitting) return 1;
+  return static_cast<std::size_t>((records + fitting - 1) / fitting);
+}
+
 Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress,
                           const TrajectoryChannels& channels) {
   const BiipHeader& header = reader.header();
-  const std::size_t n = reader.recordCount();
+  const std::size_t records = reader.recordCount();
+  const std::size_t thinning = std::max<std::size_t>(1, channels.thinning);
+  const std::size_t n = (records + thinning - 1) / thinning;
+  const auto view = [&reader, thinning](const char* name) { return reader.channel(name).every(thinning); };
   Trajectory out;
   out.source = reader.path();
-  out.cycle = header.cycleSeconds;
+  out.cycle = header.cycleSeconds * double(thinning);
+  out.thinning = thinning;
   out.rapidFeed = rapidFeedFromMetadata(header.metadataJson);
 
-  const BiipChannelView t = reader.channel("t");
-  const BiipChannelView line = reader.channel("line");
-  const BiipChannelView block = reader.channel("block");
+  const BiipChannelView t = view("t");
+  const BiipChannelView line = view("line");
+  const BiipChannelView block = view("block");
   const bool useBlock = block.valid() && channels.block;
   const bool feedbackComplete = reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z");
   out.hasLine = line.valid();
-
-  {
-    const bool feedbackKept = feedbackComplete && channels.feedback;
-    std::size_t extras = 0;
-    for (const BiipChannel& c : header.channels) extras += channels.extra && !isKnownChannel(c.name, feedbackComplete);
-    // Positions 24, feedback offsets 12, times and extra channels 8 each: the line, move index
-    // and feed, kept as runs, cost about nothing beside them.
-    const std::uint64_t perSample = 24 + (feedbackKept ? 12 : 0) + (t.valid() ? 8 : 0) + 8 * extras;
-    requireMemory(reader.path(), fmt::format("its {} samples", n), std::uint64_t(n) * perSample, availableMemory());
-  }
+  requireMemory(reader.path(), fmt::format("its {} samples", n), std::uint64_t(n) * bytesPerSample(reader, channels),
+                availableMemory());
   // Destination of each floating channel copied in chunks.
   struct Copy {
     BiipChannelView view;
@@ -78,20 +104,21 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   std::vector<Copy> copies;
   const auto add = [&](const std::string& name, std::vector<double>& to) {
     to.resize(n);
-    copies.push_back({reader.channel(name), &to});
+    copies.push_back({view(name.c_str()), &to});
   };
   add("x", out.x);
   add("y", out.y);
   add("z", out.z);
   if (t.valid()) add("t", out.time);
   const bool useFeedback = feedbackComplete && channels.feedback;
-  const BiipChannelView feedback[3] = {reader.channel("fb_x"), reader.channel("fb_y"), reader.channel("fb_z")};
+  const BiipChannelView feedback[3] = {view("fb_x"), view("fb_y"), view("fb_z")};
   std::vector<double> feedbackChunk;
+  FeedbackOffsets offsets;
   if (useFeedback) {
-    for (std::vector<float>* offset : {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ}) offset->resize(n);
+    for (std::vector<float>* offset : {&offsets.x, &offsets.y, &offsets.z}) offset->resize(n);
     feedbackChunk.resize(kChunkRecords);
   }
-  const BiipChannelView feed = reader.channel("feed");
+  const BiipChannelView feed = view("feed");
   std::vector<float> feedChunk(feed.valid() ? kChunkRecords : 0);
   for (const BiipChannel& c : header.channels) {
     if (!channels.extra || isKnownChannel(c.name, feedbackComplete)) continue;
@@ -111,30 +138,55 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
       feed.copyTo(feedChunk.data(), begin, count);
       for (std::size_t k = 0; k < count; ++k) out.feed.push_back(feedChunk[k]);
     }
-    if (useFeedback) {
-      const std::vector<double>* commanded[3] = {&out.x, &out.y, &out.z};
-      std::vector<float>* offset[3] = {&out.fbOffsetX, &out.fbOffsetY, &out.fbOffsetZ};
-      for (int axis = 0; axis < 3; ++axis) {
-        feedback[axis].copyTo(feedbackChunk.data(), begin, count);
-        for (std::size_t k = 0; k < count; ++k)
-          (*offset[axis])[begin + k] = static_cast<float>(feedbackChunk[k] - (*commanded[axis])[begin + k]);
-      }
-    }
+    if (useFeedback) copyFeedbackOffsets(feedback, out, begin, count, feedbackChunk, offsets);
     if (line.valid())
       for (std::size_t i = begin; i < begin + count; ++i) out.line.push_back(clampToU32(line.integer(i)));
     if (useBlock)
       for (std::size_t i = begin; i < begin + count; ++i) out.block.push_back(clampToU32(block.integer(i)));
-    reader.releaseRecords(begin, begin + count);
+    reader.releaseRecords(begin * thinning, (begin + count) * thinning);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));
       nextReport += kProgressRecords;
     }
   }
   reader.checkIntact();
+  if (useFeedback) out.attachFeedback(std::move(offsets));
   out.shrinkRunChannels();
   if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
   if (progress) progress(1.0);
   return out;
+}
+
+FeedbackOffsets loadFeedbackOffsets(const BiipReader& reader, const Trajectory& samples,
+                                    const TrajectoryProgress& progress) {
+  const std::size_t thinning = std::max<std::size_t>(1, samples.thinning);
+  const std::size_t n = (reader.recordCount() + thinning - 1) / thinning;
+  if (!(reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z")))
+    throw InputError(Diagnostic{reader.path(), 0, 0, "has no feedback channels (fb_x fb_y fb_z)"});
+  if (n != samples.size())
+    throw InputError(Diagnostic{reader.path(), 0, 0,
+                                fmt::format("holds {} records, not the {} samples loaded from it", reader.recordCount(),
+                                            samples.size())});
+  requireMemory(reader.path(), fmt::format("the feedback of its {} samples", n), std::uint64_t(n) * 12,
+                availableMemory());
+  const BiipChannelView feedback[3] = {reader.channel("fb_x").every(thinning), reader.channel("fb_y").every(thinning),
+                                       reader.channel("fb_z").every(thinning)};
+  FeedbackOffsets offsets;
+  for (std::vector<float>* offset : {&offsets.x, &offsets.y, &offsets.z}) offset->resize(n);
+  std::vector<double> chunk(kChunkRecords);
+  std::size_t nextReport = kProgressRecords;
+  for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
+    const std::size_t count = std::min(kChunkRecords, n - begin);
+    copyFeedbackOffsets(feedback, samples, begin, count, chunk, offsets);
+    reader.releaseRecords(begin * thinning, (begin + count) * thinning);
+    if (progress && begin + count >= nextReport) {
+      progress(double(begin + count) / double(n));
+      nextReport += kProgressRecords;
+    }
+  }
+  reader.checkIntact();
+  if (progress) progress(1.0);
+  return offsets;
 }
 
 }  // namespace isurface

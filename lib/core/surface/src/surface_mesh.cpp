@@ -106,6 +106,18 @@ class StripBuilder {
   std::size_t nearest(std::uint32_t first, std::size_t count, const Vec3& to, double* distance2 = nullptr) const;
   bool closedPass(std::uint32_t first, std::size_t count, std::uint32_t otherFirst, std::size_t otherCount) const;
   void match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out);
+  // Whether triangle t = {a, next on one pass, b} (its cross-pass edges `across` and `other`
+  // long, squared) joins passes within the gap limit: both edges within it, or, where the step
+  // along the pass is itself longer than the limit, the other pass's vertex within it of that
+  // step. The edges alone would leave a thinned mesh without triangles, its steps (4 mm on a
+  // 100 M-sample raster's map in the window) being longer than the passes lie apart.
+  bool passesMeet(const std::array<std::uint32_t, 3>& t, double across, double other) const {
+    if (across <= gap2_ && other <= gap2_) return true;
+    const bool stepOnA = mesh_.vertexPass[t[0]] == mesh_.vertexPass[t[1]];
+    const std::uint32_t from = stepOnA ? t[0] : t[2], to = t[1], facing = stepOnA ? t[2] : t[0];
+    if (d2(from, to) <= gap2_) return false;
+    return distanceToSegment(pos(facing), pos(from), pos(to)) <= gapLimit_;
+  }
 
   const PositionSource& p_;
   const SurfaceMesh& mesh_;
@@ -202,7 +214,7 @@ int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) 
       ++j;
     }
     match(va, vb, other, out);
-    if (across <= gap2_ && other <= gap2_) {
+    if (passesMeet(t, across, other)) {
       const Vec3 p0 = pos(t[0]), p1 = pos(t[1]), p2 = pos(t[2]);
       const Vec3 n = (p1 - p0).cross(p2 - p0);
       const double area2 = n.squaredNorm();

@@ -55,6 +55,9 @@ struct QualityMapRequest {
   bool inch = false;
 };
 
+// True when a map of this request reads the servo's positions (fb_x fb_y fb_z).
+bool needsFeedback(const QualityMapRequest& request);
+
 // Held by pointer so that `data` keeps pointing at them when the map is moved; shared so that
 // picking and region optimisation use the surface the map shows.
 struct QualityMap {

@@ -63,7 +63,23 @@ struct OpenRunRequest {
   std::optional<Machine> machine;
   TrajectoryChannels channels;  // kept of a dump, or of a simulation (its feedback)
   bool force = false;  // join a dump to a program that does not look like its own
+  // A dump whose samples need more than the free memory is thinned to fit in half of it (one
+  // record in k, with a warning saying so) instead of being refused.
+  bool thinToFit = false;
 };
+
+// Where the servo's positions of samples opened without them come from, when a view asks for
+// them: the dump's fb_x fb_y fb_z, or the servo of the machine that simulated the run.
+struct FeedbackSupply {
+  std::string dump;                // a dump with feedback channels, read again
+  std::optional<Machine> servo;    // a simulated run: its machine's servo replayed
+  bool available() const { return !dump.empty() || servo.has_value(); }
+};
+
+// The feedback of `samples` (opened without it) from `supply`; InputError when the supply
+// has none or the memory is short. The progress callback may throw to cancel.
+FeedbackOffsets loadFeedback(const Trajectory& samples, const FeedbackSupply& supply,
+                             const ProgressCallback& progress = {});
 
 // A program and its samples: read from the dump, or simulated with the machine.
 struct OpenedRun {
@@ -73,6 +89,8 @@ struct OpenedRun {
   Machine machine;        // what made the samples: the dump's own, else the simulation's
   bool machineKnown = true;  // false: a dump that names no machine (a trace); `machine` is the default
   std::vector<std::string> warnings;
+  // Samples opened without the feedback they could have (request.channels.feedback false).
+  FeedbackSupply feedbackSupply;
 };
 
 // Throws InputError for a bad file, and DumpMismatchError for a dump that does not belong to

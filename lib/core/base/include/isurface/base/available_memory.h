@@ -5,17 +5,30 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace isurface {
 
 // MemAvailable plus SwapFree of a /proc/meminfo text, bytes; nullopt without MemAvailable.
 std::optional<std::uint64_t> availableMemoryIn(const std::string& meminfo);
 
-// Room left under a cgroup v2 limit, bytes, from memory.max and memory.current; nullopt when
-// there is no limit ("max") or a text is not a number.
-std::optional<std::uint64_t> cgroupRoomIn(const std::string& limit, const std::string& usage);
+// Room left under a cgroup's limit, bytes, from its limit and usage (v2 memory.max and
+// memory.current, v1 memory.limit_in_bytes and memory.usage_in_bytes), the inactive page cache
+// its memory.stat names counted as room; nullopt when there is no limit ("max") or a text is
+// not a number.
+std::optional<std::uint64_t> cgroupRoomIn(const std::string& limit, const std::string& usage,
+                                          const std::string& stat = "");
 
-// The same for this process now, the smaller of the two; nullopt when neither can be read.
+// A memory limit's file and the usage's file of a cgroup.
+struct CgroupMemoryFiles {
+  std::string limit, usage, stat;
+};
+
+// Where the limits on this process's memory are, from the text of /proc/self/cgroup: its own
+// group's (v2 memory.max, or v1 memory.limit_in_bytes), then the mount's root (v2).
+std::vector<CgroupMemoryFiles> cgroupMemoryFiles(const std::string& procSelfCgroup);
+
+// The same for this process now, the smallest of them all; nullopt when none can be read.
 std::optional<std::uint64_t> availableMemory();
 
 // Throws InputError naming `file` when `bytes` (what `what` needs in memory) exceed `available`.

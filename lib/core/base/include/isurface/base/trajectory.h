@@ -11,6 +11,13 @@
 
 namespace isurface {
 
+// The servo's positions of a run as offsets from its commanded ones (mm), loaded apart from
+// the samples when a view first needs them (see Trajectory::attachFeedback).
+struct FeedbackOffsets {
+  std::vector<float> x, y, z;
+  std::size_t size() const { return x.size(); }
+};
+
 struct Trajectory {
   std::string source;                // file the samples came from
   double cycle = 0.001;              // s, nominal sample period
@@ -31,6 +38,9 @@ struct Trajectory {
   // The time channel departs from a regular cycle: derivatives then use divided differences.
   bool irregularTime = false;
   double rapidFeed = 0;              // mm/min, the machine's rapid rate when the dump names it (0 unknown)
+  // Sample i is record i * thinning of the source: a dump larger than the memory, seen whole at
+  // a coarser cycle (`cycle` is then thinning times the dump's own).
+  std::size_t thinning = 1;
 
   std::size_t size() const { return x.size(); }
   bool hasFeedback() const { return !fbOffsetX.empty(); }
@@ -47,6 +57,9 @@ struct Trajectory {
     block.shrink_to_fit();
     feed.shrink_to_fit();
   }
+  // Gives samples loaded without feedback the offsets loaded later (one per sample; else
+  // std::invalid_argument). Whoever calls it makes sure no other thread reads the feedback.
+  void attachFeedback(FeedbackOffsets&& offsets);
   // Sets sample i's feedback from a feedback position (mm); the channels must be sized.
   void setFeedback(std::size_t i, const Vec3& position) {
     fbOffsetX[i] = static_cast<float>(position.x() - x[i]);

@@ -63,6 +63,11 @@ class BiipChannelView {
   std::size_t size() const { return count_; }
   BiipType type() const { return type_; }
   std::size_t stride() const { return stride_; }  // bytes between consecutive values
+  // Every k-th value (k >= 1) from the first: value i of the result is value i * k of this.
+  BiipChannelView every(std::size_t k) const {
+    if (!valid() || k <= 1) return *this;
+    return BiipChannelView(first_, stride_ * k, type_, (count_ + k - 1) / k);
+  }
   double operator[](std::size_t i) const {
     const unsigned char* p = first_ + i * stride_;
     if (type_ == BiipType::F64) {

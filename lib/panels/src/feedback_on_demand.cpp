@@ -1,0 +1,42 @@
+// The servo's positions of a document, loaded the first time something needs them: a colouring
+// by following error or deviation, the feedback surface, the data bar's feedback columns, an
+// export, a comparison or an optimisation judged on the predicted deviation. Until then they
+// cost nothing (1.2 GB of a 100 million-sample run).
+#include <fmt/format.h>
+
+#include "inspector_state.h"
+
+namespace isurface::panels {
+
+bool Inspector::State::loadFeedbackFirst(std::function<void()> then) {
+  Document* doc = activeDocument();
+  if (!doc || !doc->samples || doc->samples->hasFeedback() || !doc->feedbackSupply.available()) return false;
+  if (refusedDuringReport("load the feedback")) return true;
+  auto result = std::make_shared<JobResult>();
+  result->feedbackFor = doc->samples;
+  result->afterFeedback = std::move(then);
+  pending = result;
+  const std::string label = "loading the feedback of " + doc->name;
+  job.start(label, [result, supply = doc->feedbackSupply](app_model::JobControl& control) {
+    result->feedback = loadFeedback(*result->feedbackFor, supply, [&control](double f) { control.progress(f); });
+  });
+  status = label;
+  return true;
+}
+
+void Inspector::State::attachLoadedFeedback(JobResult& result) {
+  for (std::size_t k = 0; k < documents.size(); ++k) {
+    Document& doc = *documents[k];
+    if (doc.samples != result.feedbackFor) continue;
+    // Nothing else reads this document's feedback now: the one job has ended, and what the
+    // other threads (curves, the close-up) read does not include it before it is here.
+    const_cast<Trajectory&>(*doc.samples).attachFeedback(std::move(*result.feedback));
+    doc.feedbackSupply = {};
+    status = fmt::format("{}: feedback loaded ({} samples)", doc.name, doc.samples->size());
+    if (k == active && result.afterFeedback) result.afterFeedback();
+    return;
+  }
+  status = "the feedback was loaded for a document since closed";
+}
+
+}  // namespace isurface::panels
