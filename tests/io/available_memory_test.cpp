@@ -46,20 +46,21 @@ TEST(availableMemory, TheProcesssOwnGroupsLimitIsFoundInV1AndV2) {
   // cgroup v1, as on a machine whose controllers are mounted apart.
   const std::vector<CgroupMemoryFiles> v1 =
       cgroupMemoryFiles("9:name=systemd:/\n4:memory:/process_api/a32\n3:cpuset:/\n0::/\n");
-  ASSERT_EQ(v1.size(), 3u);
+  ASSERT_EQ(v1.size(), 4u);
   EXPECT_EQ(v1[0].limit, "/sys/fs/cgroup/memory/process_api/a32/memory.limit_in_bytes");
   EXPECT_EQ(v1[0].usage, "/sys/fs/cgroup/memory/process_api/a32/memory.usage_in_bytes");
   EXPECT_EQ(v1[0].stat, "/sys/fs/cgroup/memory/process_api/a32/memory.stat");
   EXPECT_EQ(v1[1].limit, "/sys/fs/cgroup/memory.max");  // the v2 line's group is the root
   EXPECT_EQ(v1[2].limit, "/sys/fs/cgroup/memory.max");
+  EXPECT_EQ(v1[3].limit, "/sys/fs/cgroup/memory/memory.limit_in_bytes");  // a container's own v1 root
   // cgroup v2 alone, and a v1 line naming several controllers.
   const std::vector<CgroupMemoryFiles> v2 = cgroupMemoryFiles("0::/user.slice/app.scope\n");
-  ASSERT_EQ(v2.size(), 2u);
+  ASSERT_EQ(v2.size(), 3u);
   EXPECT_EQ(v2[0].limit, "/sys/fs/cgroup/user.slice/app.scope/memory.max");
   EXPECT_EQ(v2[0].usage, "/sys/fs/cgroup/user.slice/app.scope/memory.current");
   EXPECT_EQ(cgroupMemoryFiles("5:cpu,memory:/box\n")[0].limit, "/sys/fs/cgroup/memory/box/memory.limit_in_bytes");
-  EXPECT_EQ(cgroupMemoryFiles("5:memoryless:/box\n").size(), 1u) << "not the memory controller";
-  EXPECT_EQ(cgroupMemoryFiles("garbage").size(), 1u);
+  EXPECT_EQ(cgroupMemoryFiles("5:memoryless:/box\n").size(), 2u) << "not the memory controller";
+  EXPECT_EQ(cgroupMemoryFiles("garbage").size(), 2u);
   // v1's "no limit" is a huge number: the machine's memory binds.
   EXPECT_GT(*cgroupRoomIn("9223372036854771712\n", "1618874368\n"), 1ull << 62);
 }

@@ -168,6 +168,21 @@ TEST(surface_mesh, AThinnedMeshWhoseStepsAreLongerThanTheGapStillJoinsItsPasses)
   // Patches 3 mm apart stay apart however long the steps.
   Grid apart = planeGrid(4, 1003, 0.05, 3.0, true);
   EXPECT_TRUE(buildSurfaceMesh(apart.samples, apart.passes, thinned).triangles.empty());
+  // A hole of samples left out of geometry (x 20 to 40 mm of the first pass) stays a hole, at
+  // the full resolution as thinned.
+  Grid holed = planeGrid(2, 1001, 0.05, 0.3, false);
+  for (std::size_t i = 0; i < 1001; ++i)
+    if (holed.samples.x[i] > 20.0 && holed.samples.x[i] < 40.0) holed.samples.x[i] = std::nan("");
+  for (const std::size_t stride : {1u, 80u}) {
+    MeshOptions options;
+    options.stride = stride;
+    const SurfaceMesh m = buildSurfaceMesh(holed.samples, holed.passes, options);
+    for (const auto& t : m.triangles) {
+      double low = 1e9, high = -1e9;
+      for (const std::uint32_t v : t) low = std::min(low, holed.samples.x[m.vertexSample[v]]), high = std::max(high, holed.samples.x[m.vertexSample[v]]);
+      EXPECT_FALSE(low < 21.0 && high > 39.0) << "a triangle over the hole, stride " << stride;
+    }
+  }
 }
 
 TEST(surface_mesh, NonFiniteSamplesAreNeverVertices) {

@@ -39,6 +39,11 @@ TEST(feedbackOnDemand, ASimulatedRunsServoReplayedIsTheSimulationsOwn) {
   for (const Machine& machine : {defaultMachine(), slowMachine()}) {
     Machine stiff = machine;
     for (AxisLimits& a : stiff.axes) a.positionGain *= 2.5;  // another servo: another answer
+    {
+      const RunFiles files{sourcePath("samples/transition-surface.nc"), ""};
+      const OpenedRun soft = opened(files, machine, true), hard = opened(files, stiff, true);
+      EXPECT_NE(soft.samples->fbOffsetX, hard.samples->fbOffsetX);
+    }
     for (const Machine& m : {machine, stiff}) {
       const RunFiles files{sourcePath("samples/transition-surface.nc"), ""};
       const OpenedRun without = opened(files, m, false);
@@ -56,7 +61,8 @@ TEST(feedbackOnDemand, ADumpsFeedbackReadAgainIsWhatOpeningItWithFeedbackGives) 
   const OpenedRun without = opened(files, defaultMachine(), false);
   const OpenedRun with = opened(files, defaultMachine(), true);
   EXPECT_FALSE(without.samples->hasFeedback());
-  EXPECT_EQ(without.feedbackSupply.dump, transitionDump());
+  ASSERT_TRUE(without.feedbackSupply.dump);
+  EXPECT_EQ(without.feedbackSupply.dump->path(), transitionDump());
   EXPECT_FALSE(without.feedbackSupply.servo.has_value()) << "a dump's feedback is the dump's, not a simulation's";
   FeedbackOffsets later = loadFeedback(*without.samples, without.feedbackSupply);
   expectSameFeedback(later, *with.samples);
@@ -83,7 +89,7 @@ TEST(feedbackOnDemand, ADumpWithoutFeedbackHasNoneToLoad) {
     EXPECT_NE(std::string(e.what()).find("no feedback"), std::string::npos) << e.what();
   }
   FeedbackSupply wrongFile;
-  wrongFile.dump = path;
+  wrongFile.dump = std::make_shared<const BiipReader>(path);
   EXPECT_THROW(loadFeedback(*run.samples, wrongFile), InputError);
 }
 

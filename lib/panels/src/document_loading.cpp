@@ -34,12 +34,12 @@ Curve channelCurve(const std::string& name, std::shared_ptr<const Trajectory> sa
 // feedback) gives way to speed, with a word, rather than blocking the file.
 vis::QualityMapRequest fitRequest(vis::QualityMapRequest request, const Trajectory& samples,
                                   std::vector<std::string>& warnings) {
+  if (!request.channel.empty() && !samples.extraChannel(request.channel)) request.channel.clear();
   if (request.channel.empty() && quantityInfo(request.quantity).needsFeedback && !samples.hasFeedback()) {
     warnings.push_back(std::string("coloured by speed: ") + quantityInfo(request.quantity).label +
                        " needs feedback, which this file has none of");
     request.quantity = Quantity::Speed;
   }
-  if (!request.channel.empty() && !samples.extraChannel(request.channel)) request.channel.clear();
   if (request.feedbackSurface && !samples.hasFeedback()) request.feedbackSurface = false;
   return request;
 }
@@ -68,7 +68,8 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   OpenRunRequest open;
   open.files = {programPath, dumpPath};
   open.machine = machine;
-  open.channels.feedback = needsFeedback(request);
+  // The quantity too when a channel is chosen: the channel gives way to it on a file without it.
+  open.channels.feedback = needsFeedback(request) || quantityInfo(request.quantity).needsFeedback;
   open.thinToFit = true;  // a dump larger than the memory is seen whole, thinned, with a word
   OpenedRun run = openRun(open, [&control](double f) { control.progress(0.5 * f); });
   doc->program = std::move(run.program);
@@ -77,6 +78,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   doc->machineKnown = run.machineKnown;
   doc->warnings = std::move(run.warnings);
   doc->feedbackSupply = std::move(run.feedbackSupply);
+  doc->thinnedDump = std::move(run.thinnedDump);
   if (!doc->samples || doc->samples->size() == 0) return doc;
   control.progress(0.55);
   // The curves' pyramids need only the samples: built on a second thread beside the map.

@@ -12,6 +12,10 @@ bool Inspector::State::loadFeedbackFirst(std::function<void()> then) {
   Document* doc = activeDocument();
   if (!doc || !doc->samples || doc->samples->hasFeedback() || !doc->feedbackSupply.available()) return false;
   if (refusedDuringReport("load the feedback")) return true;
+  if (job.running()) {  // starting a job would cancel it
+    status = "wait until " + job.label() + " ends (or cancel it) to load the feedback";
+    return true;
+  }
   auto result = std::make_shared<JobResult>();
   result->feedbackFor = doc->samples;
   result->afterFeedback = std::move(then);
@@ -28,8 +32,10 @@ void Inspector::State::attachLoadedFeedback(JobResult& result) {
   for (std::size_t k = 0; k < documents.size(); ++k) {
     Document& doc = *documents[k];
     if (doc.samples != result.feedbackFor) continue;
-    // Nothing else reads this document's feedback now: the one job has ended, and what the
-    // other threads (curves, the close-up) read does not include it before it is here.
+    // Nothing else reads this document's feedback now: the one job has ended, and a close-up
+    // being built (a map that shows no feedback) is waited for. The samples were made
+    // non-const (openRun), so writing them through this pointer is defined.
+    if (refinement.building.valid()) refinement.building.wait();
     const_cast<Trajectory&>(*doc.samples).attachFeedback(std::move(*result.feedback));
     doc.feedbackSupply = {};
     status = fmt::format("{}: feedback loaded ({} samples)", doc.name, doc.samples->size());

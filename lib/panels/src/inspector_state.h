@@ -64,6 +64,7 @@ struct Document {
   bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
   // The servo's positions are loaded when first needed (12 bytes a sample): from here.
   FeedbackSupply feedbackSupply;
+  std::shared_ptr<const BiipReader> thinnedDump;  // a thinned run's dump, for its close-ups
   bool feedbackAvailable() const { return samples && (samples->hasFeedback() || feedbackSupply.available()); }
 };
 
@@ -332,6 +333,13 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
                                        bool unitsOfProgram, app_model::JobControl& control);
 // The first line of a map's caption: the machine its samples were made with.
 std::string machineCaption(const Machine& machine, bool known);
+// "sample i", and for thinned samples the dump's record it is: "sample i (record i*k)".
+inline std::string sampleName(const Trajectory& samples, std::size_t i) {
+  std::string name = "sample " + std::to_string(i);
+  if (samples.thinning > 1) name += " (record " + std::to_string(i * samples.thinning) + ")";
+  return name;
+}
+
 // The first line of a document's map captions: its machine, and its thinning if it is thinned.
 std::string mapCaption(const Document& doc);
 

@@ -112,7 +112,7 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
   if (!s.hoverSample || *s.hoverSample >= doc->samples->size()) return;
   const std::size_t k = *s.hoverSample;
   ImGui::BeginTooltip();
-  ImGui::Text("line %u   sample %zu", doc->samples->line[k], k);
+  ImGui::Text("line %u   %s", doc->samples->line[k], sampleName(*doc->samples, k).c_str());
   const DisplayUnits u = s.units();
   const char* unitOf[3] = {u.feedUnit(), u.accelerationUnit(), u.jerkUnit()};
   for (std::size_t c = 0; c < doc->curves.size() && c < 3; ++c)
@@ -158,8 +158,8 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       char text[320];
       const DisplayUnits u = s.units();
       const int d = u.lengthDecimals();
-      std::snprintf(text, sizeof text, "sample %zu   line %u   t %.3f s\nX %.*f  Y %.*f  Z %.*f %s\n"
-                    "v %.1f %s   a %.1f %s   j %.0f %s", k, t.line[k], t.timeAt(k), d, u.length(t.x[k]), d,
+      std::snprintf(text, sizeof text, "%s   line %u   t %.3f s\nX %.*f  Y %.*f  Z %.*f %s\n"
+                    "v %.1f %s   a %.1f %s   j %.0f %s", sampleName(t, k).c_str(), t.line[k], t.timeAt(k), d, u.length(t.x[k]), d,
                     u.length(t.y[k]), d, u.length(t.z[k]), u.lengthUnit(), u.length(doc->curves[0].values.value(k)),
                     u.feedUnit(), u.length(doc->curves[1].values.value(k)), u.accelerationUnit(),
                     u.length(doc->curves[2].values.value(k)), u.jerkUnit());

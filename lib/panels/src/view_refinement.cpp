@@ -5,7 +5,10 @@
 #include <limits>
 
 #include "inspector_state.h"
+#include "isurface/base/available_memory.h"
+#include "isurface/io/biip.h"
 #include "isurface/surface/surface_mesh.h"
+#include "isurface/workflow/record_stretches.h"
 #include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
@@ -103,12 +106,60 @@ void takeFinishedBuild(Inspector::State& s) {
   s.view.invalidate();
 }
 
+// A thinned document's close-up is made from its dump's records in sight, as many as half the
+// free memory holds (every j-th, j below the document's own thinning k), so that its speeds,
+// accelerations and jerks are the machine's own rather than the thinned samples' means. Its
+// vertices then name the document's samples nearest them, which the selection and the G-code
+// pane know. Nothing when no finer close-up fits.
+std::optional<vis::DetailSurface> detailFromDump(const BiipReader& reader, const Trajectory& thinned,
+                                                 const PassSet& passes, const vis::QualityMapRequest& request,
+                                                 const Footprint& f) {
+  const std::size_t k = thinned.thinning;
+  const PassSet inBox = vis::passesInBox(thinned, passes, f.lower, f.upper, request.feedbackSurface);
+  std::vector<RecordStretch> stretches;
+  std::uint64_t records = 0;
+  for (const Pass& pass : inBox.passes) {
+    stretches.push_back({pass.begin * k, (pass.end - 1 - pass.begin) * k + 1});
+    records += stretches.back().count;
+  }
+  if (stretches.empty()) return std::nullopt;
+  TrajectoryChannels channels;
+  channels.block = false;
+  channels.feedback = vis::needsFeedback(request);
+  channels.extra = !request.channel.empty();
+  const std::optional<std::uint64_t> free = availableMemory();
+  channels.thinning = free ? thinningToFit(records, bytesPerSample(reader, channels), *free / 2) : 1;
+  if (channels.thinning >= k) return std::nullopt;
+  PassSet fine;
+  fine.pattern = passes.pattern;
+  const Trajectory samples = loadRecordStretches(reader, stretches, channels, fine);
+  std::optional<vis::DetailSurface> detail = vis::buildDetailSurface(samples, fine, request, f.lower, f.upper);
+  if (!detail) return std::nullopt;
+  // The stride the view compares with is in the dump's records, as decide() counts them.
+  detail->stride *= channels.thinning;
+  auto mesh = std::make_shared<SurfaceMesh>(*detail->mesh);
+  std::vector<std::size_t> recordOf(samples.size());
+  for (std::size_t p = 0; p < stretches.size() && p < fine.passes.size(); ++p)
+    // Pass p of `fine` starts at stretch p's first record; its samples are j records apart.
+    for (std::size_t i = fine.passes[p].begin; i < fine.passes[p].end; ++i)
+      recordOf[i] = stretches[p].first + (i - fine.passes[p].begin) * channels.thinning;
+  for (std::uint32_t& v : mesh->vertexSample)
+    v = static_cast<std::uint32_t>(std::min(thinned.size() - 1, (recordOf[v] + k / 2) / k));
+  detail->mesh = std::move(mesh);
+  return detail;
+}
+
+// Whether a document's close-ups come from its dump's records rather than its samples.
+bool refinedFromDump(const Document& doc) { return doc.samples->thinning > 1 && doc.thinnedDump; }
+
 void startBuild(Inspector::State& s, const Document& doc, const Footprint& f) {
   vis::QualityMapRequest request = doc.map.request;
   request.maxVertices = s.refinement.vertexBudget;
   request.pickable = false;
   request.coarseVertices = 0;
-  s.refinement.building = std::async(std::launch::async, [samples = doc.samples, passes = doc.map.passes, request, f] {
+  std::shared_ptr<const BiipReader> dump = refinedFromDump(doc) ? doc.thinnedDump : nullptr;
+  s.refinement.building = std::async(std::launch::async, [samples = doc.samples, passes = doc.map.passes, request, f, dump] {
+    if (dump) return detailFromDump(*dump, *samples, passes, request, f);
     return vis::buildDetailSurface(*samples, passes, request, f.lower, f.upper);
   });
 }
@@ -121,9 +172,12 @@ void decide(Inspector::State& s, const Document& doc) {
   const std::optional<Footprint> inSight = footprint(doc.map, s.view);
   if (r.shown && !covers(*r.shown, inSight)) dropDetail(s);
   if (!inSight) return;
-  const std::size_t stride = r.shown ? r.shown->stride : strideWithin(doc.map.passes, doc.map.request.maxVertices);
+  // In the dump's records when the close-up comes from them (its stride is counted so too).
+  const std::size_t unit = refinedFromDump(doc) ? doc.samples->thinning : 1;
+  const std::size_t mapStride = strideWithin(doc.map.passes, doc.map.request.maxVertices) * unit;
+  const std::size_t stride = r.shown ? r.shown->stride : mapStride;
   if (inSight->vertices > 0) {
-    const std::size_t samplesInSight = inSight->vertices * strideWithin(doc.map.passes, doc.map.request.maxVertices);
+    const std::size_t samplesInSight = inSight->vertices * mapStride;
     const std::size_t budget = std::max<std::size_t>(r.vertexBudget, 1);
     if ((samplesInSight + budget - 1) / budget * kFinerAtLeast > stride) return;  // about as fine already
   } else if (stride == 1) {

@@ -161,18 +161,18 @@ Trajectory simulateRun(const Program& program, const Machine& machine, const Pro
 
 namespace {
 
-// 1 when the dump's samples fit in the free memory; else the thinning that fits them in half of
-// it (the map, the curves and the close-up need the rest), and a warning saying what it costs.
+// 1 when the dump's samples fit in half the free memory (the map, the curves and the close-up
+// need the rest); else the thinning that fits them there, and a warning saying what it costs.
 std::size_t thinningForMemory(const BiipReader& reader, const TrajectoryChannels& channels,
                               std::vector<std::string>& warnings) {
   const std::uint64_t records = reader.recordCount(), perSample = bytesPerSample(reader, channels);
   const std::optional<std::uint64_t> known = availableMemory();
-  if (!known || records * perSample <= *known) return 1;  // not known: loaded whole, as before
+  if (!known || records * perSample <= *known / 2) return 1;  // not known: loaded whole, as before
   const std::uint64_t free = *known;
   const std::size_t k = thinningToFit(records, perSample, free / 2);
   const double ms = 1000.0 * reader.header().cycleSeconds * double(k);
   warnings.push_back(fmt::format(
-      "{}: its {} samples need {:.1f} GB of memory and this machine has {:.1f} GB free: shown thinned, 1 sample in "
+      "{}: its {} samples need {:.1f} GB of memory, more than half the {:.1f} GB this machine has free: shown thinned, 1 sample in "
       "{} ({} samples, one every {:g} ms); speeds are means over {:g} ms, accelerations and jerks are smoother than "
       "the machine's, and a move shorter than {:g} ms may have no sample",
       reader.path(), records, double(records * perSample) / 1e9, double(free) / 1e9, k, (records + k - 1) / k, ms, ms,
@@ -188,20 +188,23 @@ void readSamples(const OpenRunRequest& request, const ProgressCallback& progress
     throw InputError(Diagnostic{path, 0, 0, "is a G-code program, not a Biip dump or a trace"});
   std::optional<std::string> mismatch;
   if (isTrace(kind)) {
-    auto samples = std::make_shared<const Trajectory>(readTrace(path, kind));
+    auto samples = std::make_shared<Trajectory>(readTrace(path, kind));
     if (run.program && !request.force) mismatch = pathMismatch(*samples, *run.program);
     run.machineKnown = false;
     run.samples = std::move(samples);
   } else {
-    const BiipReader reader(path);
+    const auto opened = std::make_shared<const BiipReader>(path);
+    const BiipReader& reader = *opened;
     for (const std::string& w : reader.warnings()) run.warnings.push_back(path + ": " + w);
     TrajectoryChannels channels = request.channels;
     channels.block = run.program != nullptr;  // a move index means nothing without the program's moves
     if (request.thinToFit) channels.thinning = thinningForMemory(reader, channels, run.warnings);
-    auto samples = std::make_shared<const Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), channels));
+    // Not const: feedback loaded later joins it (Trajectory::attachFeedback).
+    auto samples = std::make_shared<Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), channels));
     if (run.program && !request.force) mismatch = dumpMismatch(reader, *samples, *run.program);
     if (!samples->hasFeedback() && reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z"))
-      run.feedbackSupply.dump = path;
+      run.feedbackSupply.dump = opened;
+    if (samples->thinning > 1) run.thinnedDump = opened;
     const std::optional<Machine> own = machineOfDump(reader);
     run.machineKnown = own.has_value();
     if (own) run.machine = *own;
@@ -214,8 +217,8 @@ void readSamples(const OpenRunRequest& request, const ProgressCallback& progress
 }  // namespace
 
 FeedbackOffsets loadFeedback(const Trajectory& samples, const FeedbackSupply& supply, const ProgressCallback& progress) {
-  if (!supply.dump.empty()) return loadFeedbackOffsets(BiipReader(supply.dump), samples, progress);
-  if (supply.servo) return servoFeedback(samples, *supply.servo, progress);
+  if (supply.dump) return loadFeedbackOffsets(*supply.dump, samples, progress);
+  if (supply.servo) return servoFeedback(samples, *supply.servo, supply.servoStart, progress);
   throw InputError(Diagnostic{samples.source, 0, 0, "has no feedback positions (fb_x fb_y fb_z) to load"});
 }
 
@@ -234,9 +237,12 @@ OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progres
   if (hasDump) {
     readSamples(request, progress, run);
   } else if (run.program) {
-    run.samples = std::make_shared<const Trajectory>(
+    run.samples = std::make_shared<Trajectory>(
         simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0), request.channels.feedback));
-    if (!request.channels.feedback) run.feedbackSupply.servo = run.machine;
+    if (!request.channels.feedback) {
+      run.feedbackSupply.servo = run.machine;
+      run.feedbackSupply.servoStart = run.program->start;
+    }
   }
   if (progress) progress(1.0);
   return run;

@@ -66,8 +66,10 @@ std::vector<CgroupMemoryFiles> cgroupMemoryFiles(const std::string& procSelfCgro
       files.push_back({dir + "/memory.limit_in_bytes", dir + "/memory.usage_in_bytes", dir + "/memory.stat"});
     }
   }
-  // Inside a container the process's own group may be the mount's root.
+  // Inside a container the process's own group may be the mount's root (v2, then v1).
   files.push_back({"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory.current", "/sys/fs/cgroup/memory.stat"});
+  files.push_back({"/sys/fs/cgroup/memory/memory.limit_in_bytes", "/sys/fs/cgroup/memory/memory.usage_in_bytes",
+                   "/sys/fs/cgroup/memory/memory.stat"});
   return files;
 }
 

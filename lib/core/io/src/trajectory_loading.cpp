@@ -78,10 +78,13 @@ std::size_t thinningToFit(std::uint64_t records, std::uint64_t bytesPerSample, s
 Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& progress,
                           const TrajectoryChannels& channels) {
   const BiipHeader& header = reader.header();
-  const std::size_t records = reader.recordCount();
+  const std::size_t first = std::min(channels.firstRecord, reader.recordCount());
+  const std::size_t records = std::min(channels.records, reader.recordCount() - first);
   const std::size_t thinning = std::max<std::size_t>(1, channels.thinning);
   const std::size_t n = (records + thinning - 1) / thinning;
-  const auto view = [&reader, thinning](const char* name) { return reader.channel(name).every(thinning); };
+  const auto view = [&reader, first, records, thinning](const char* name) {
+    return reader.channel(name).part(first, records).every(thinning);
+  };
   Trajectory out;
   out.source = reader.path();
   out.cycle = header.cycleSeconds * double(thinning);
@@ -128,7 +131,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   for (auto& [name, values] : out.extra) add(name, values);
 
   if (!line.valid()) out.line.assign(n, 0);
-  if (!t.valid()) out.startTime = header.t0Seconds;
+  if (!t.valid()) out.startTime = header.t0Seconds + double(first) * header.cycleSeconds;
 
   std::size_t nextReport = kProgressRecords;
   for (std::size_t begin = 0; begin < n; begin += kChunkRecords) {
@@ -143,7 +146,7 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
       for (std::size_t i = begin; i < begin + count; ++i) out.line.push_back(clampToU32(line.integer(i)));
     if (useBlock)
       for (std::size_t i = begin; i < begin + count; ++i) out.block.push_back(clampToU32(block.integer(i)));
-    reader.releaseRecords(begin * thinning, (begin + count) * thinning);
+    reader.releaseRecords(first + begin * thinning, first + (begin + count) * thinning);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));
       nextReport += kProgressRecords;

@@ -9,7 +9,8 @@
 
 namespace isurface {
 
-FeedbackOffsets servoFeedback(const Trajectory& commanded, const Machine& machine, const ProgressCallback& progress) {
+FeedbackOffsets servoFeedback(const Trajectory& commanded, const Machine& machine, const Vec3& start,
+                              const ProgressCallback& progress) {
   const std::size_t n = commanded.size();
   requireMemory(commanded.source, "the servo's positions of " + std::to_string(n) + " samples", std::uint64_t(n) * 12,
                 availableMemory());
@@ -23,7 +24,7 @@ FeedbackOffsets servoFeedback(const Trajectory& commanded, const Machine& machin
     const std::vector<double>& position = *axes[axis];
     std::vector<float>& offset = *offsets[axis];
     offset.resize(n);
-    AxisServo servo(machine.axes[static_cast<std::size_t>(axis)], machine.cycle, position[0]);
+    AxisServo servo(machine.axes[static_cast<std::size_t>(axis)], machine.cycle, start[axis]);
     for (std::size_t begin = 0; begin < n; begin += kStep) {
       const std::size_t end = std::min(n, begin + kStep);
       for (std::size_t i = begin; i < end; ++i) offset[i] = static_cast<float>(servo.step(position[i]) - position[i]);

@@ -90,9 +90,9 @@ struct PassWalk {
 
 class StripBuilder {
  public:
-  StripBuilder(const PositionSource& p, const SurfaceMesh& mesh, double gapLimit, PathPattern pattern,
-               std::vector<float>& bestNext, std::vector<float>& bestPrevious)
-      : p_(p), mesh_(mesh), gap2_(gapLimit * gapLimit), gapLimit_(gapLimit), pattern_(pattern),
+  StripBuilder(const PositionSource& p, const SurfaceMesh& mesh, double gapLimit, std::size_t stride,
+               PathPattern pattern, std::vector<float>& bestNext, std::vector<float>& bestPrevious)
+      : p_(p), mesh_(mesh), gap2_(gapLimit * gapLimit), gapLimit_(gapLimit), stride_(stride), pattern_(pattern),
         bestNext_(bestNext), bestPrevious_(bestPrevious) {}
 
   // Triangles between pass k (A) and pass k + 1 (B), appended to `out`. Returns how pass k
@@ -108,20 +108,24 @@ class StripBuilder {
   void match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out);
   // Whether triangle t = {a, next on one pass, b} (its cross-pass edges `across` and `other`
   // long, squared) joins passes within the gap limit: both edges within it, or, where the step
-  // along the pass is itself longer than the limit, the other pass's vertex within it of that
+  // along the pass is itself longer than the limit but skips no more samples than the stride
+  // (not a hole of samples left out of geometry), the other pass's vertex within it of that
   // step. The edges alone would leave a thinned mesh without triangles, its steps (4 mm on a
   // 100 M-sample raster's map in the window) being longer than the passes lie apart.
   bool passesMeet(const std::array<std::uint32_t, 3>& t, double across, double other) const {
     if (across <= gap2_ && other <= gap2_) return true;
     const bool stepOnA = mesh_.vertexPass[t[0]] == mesh_.vertexPass[t[1]];
     const std::uint32_t from = stepOnA ? t[0] : t[2], to = t[1], facing = stepOnA ? t[2] : t[0];
-    if (d2(from, to) <= gap2_) return false;
+    const std::uint32_t sampleFrom = mesh_.vertexSample[from], sampleTo = mesh_.vertexSample[to];
+    const std::size_t skipped = sampleFrom > sampleTo ? sampleFrom - sampleTo : sampleTo - sampleFrom;
+    if (d2(from, to) <= gap2_ || skipped > stride_) return false;
     return distanceToSegment(pos(facing), pos(from), pos(to)) <= gapLimit_;
   }
 
   const PositionSource& p_;
   const SurfaceMesh& mesh_;
   double gap2_, gapLimit_;
+  std::size_t stride_;  // samples between neighbouring vertices of a pass
   PathPattern pattern_;
   std::vector<float>& bestNext_;
   std::vector<float>& bestPrevious_;
@@ -274,7 +278,8 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   mesh.triangles.reserve(2 * vertices);
   std::vector<float> bestNext(vertices, std::numeric_limits<float>::infinity());
   std::vector<float> bestPrevious(vertices, std::numeric_limits<float>::infinity());
-  StripBuilder strips(p, mesh, options.gapLimit, passes.pattern, bestNext, bestPrevious);
+  StripBuilder strips(p, mesh, options.gapLimit, std::max<std::size_t>(1, options.stride), passes.pattern, bestNext,
+                      bestPrevious);
   int direction = 0;
   for (std::size_t k = 0; k + 1 < passes.passes.size(); ++k) direction = strips.build(k, direction, mesh);
   return mesh;

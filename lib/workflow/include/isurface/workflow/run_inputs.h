@@ -71,9 +71,10 @@ struct OpenRunRequest {
 // Where the servo's positions of samples opened without them come from, when a view asks for
 // them: the dump's fb_x fb_y fb_z, or the servo of the machine that simulated the run.
 struct FeedbackSupply {
-  std::string dump;                // a dump with feedback channels, read again
-  std::optional<Machine> servo;    // a simulated run: its machine's servo replayed
-  bool available() const { return !dump.empty() || servo.has_value(); }
+  std::shared_ptr<const BiipReader> dump;  // a dump with feedback channels, kept open to read again
+  std::optional<Machine> servo;            // a simulated run: its machine's servo replayed
+  Vec3 servoStart = Vec3::Zero();          // from where the simulation started it (the program's start), mm
+  bool available() const { return dump || servo; }
 };
 
 // The feedback of `samples` (opened without it) from `supply`; InputError when the supply
@@ -91,6 +92,9 @@ struct OpenedRun {
   std::vector<std::string> warnings;
   // Samples opened without the feedback they could have (request.channels.feedback false).
   FeedbackSupply feedbackSupply;
+  // The dump thinned samples came from (Trajectory::thinning > 1), kept open: a close-up reads
+  // its records where the camera looks without checking the whole file again.
+  std::shared_ptr<const BiipReader> thinnedDump;
 };
 
 // Throws InputError for a bad file, and DumpMismatchError for a dump that does not belong to

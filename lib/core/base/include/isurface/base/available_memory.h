@@ -13,9 +13,10 @@ namespace isurface {
 std::optional<std::uint64_t> availableMemoryIn(const std::string& meminfo);
 
 // Room left under a cgroup's limit, bytes, from its limit and usage (v2 memory.max and
-// memory.current, v1 memory.limit_in_bytes and memory.usage_in_bytes), the inactive page cache
-// its memory.stat names counted as room; nullopt when there is no limit ("max") or a text is
-// not a number.
+// memory.current, v1 memory.limit_in_bytes and memory.usage_in_bytes), the page cache of files
+// its memory.stat names (active and inactive: the kernel reclaims both before it refuses
+// memory, as MemAvailable counts them) counted as room; nullopt when there is no limit ("max")
+// or a text is not a number.
 std::optional<std::uint64_t> cgroupRoomIn(const std::string& limit, const std::string& usage,
                                           const std::string& stat = "");
 
@@ -25,7 +26,8 @@ struct CgroupMemoryFiles {
 };
 
 // Where the limits on this process's memory are, from the text of /proc/self/cgroup: its own
-// group's (v2 memory.max, or v1 memory.limit_in_bytes), then the mount's root (v2).
+// group's (v2 memory.max, or v1 memory.limit_in_bytes), then the mount's root (v2, then v1).
+// Limits of the groups above its own are not read.
 std::vector<CgroupMemoryFiles> cgroupMemoryFiles(const std::string& procSelfCgroup);
 
 // The same for this process now, the smallest of them all; nullopt when none can be read.

@@ -2,6 +2,7 @@
 // Biip.dat: the binary interpolation dump (format in docs/biip-format.md, version 1).
 // The reader maps the file; channels are read in place through strided views.
 #include <cstddef>
+#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <memory>
@@ -67,6 +68,12 @@ class BiipChannelView {
   BiipChannelView every(std::size_t k) const {
     if (!valid() || k <= 1) return *this;
     return BiipChannelView(first_, stride_ * k, type_, (count_ + k - 1) / k);
+  }
+  // Values [begin, begin + count) (clipped to the view): value i of the result is begin + i.
+  BiipChannelView part(std::size_t begin, std::size_t count) const {
+    if (!valid()) return *this;
+    begin = std::min(begin, count_);
+    return BiipChannelView(first_ + begin * stride_, stride_, type_, std::min(count, count_ - begin));
   }
   double operator[](std::size_t i) const {
     const unsigned char* p = first_ + i * stride_;

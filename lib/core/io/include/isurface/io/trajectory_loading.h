@@ -2,6 +2,7 @@
 // A Biip dump's samples copied into a Trajectory (one array per channel).
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <string>
 
 #include "isurface/base/trajectory.h"
@@ -20,6 +21,10 @@ struct TrajectoryChannels {
   bool extra = true;     // every other channel of the dump: 8 bytes a sample each
   // Every thinning-th record only (1: all of them), for a dump larger than the memory.
   std::size_t thinning = 1;
+  // Only the records [firstRecord, firstRecord + records) (clipped to the dump): a close-up of
+  // a thinned dump where the camera looks. Sample 0 is then record firstRecord.
+  std::size_t firstRecord = 0;
+  std::size_t records = std::numeric_limits<std::size_t>::max();
 };
 
 // Bytes a sample of this dump takes in memory once loaded with `channels`.

@@ -8,7 +8,9 @@
 namespace isurface {
 
 // Offsets of the encoder positions from the commanded ones (mm), as the simulation with
-// `machine` gives them; the servo starts at rest on the first sample.
-FeedbackOffsets servoFeedback(const Trajectory& commanded, const Machine& machine, const ProgressCallback& progress = {});
+// `machine` gives them; the servo starts at rest at `start` (the program's start, where the
+// simulation started it: the first sample may differ from it in the last bit).
+FeedbackOffsets servoFeedback(const Trajectory& commanded, const Machine& machine, const Vec3& start,
+                              const ProgressCallback& progress = {});
 
 }  // namespace isurface
