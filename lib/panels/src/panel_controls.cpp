@@ -352,6 +352,9 @@ void drawLocateWindow(Inspector::State& s) {
     const std::size_t lines = doc && doc->text ? doc->text->count() : 0;
     // The fields take what is typed as it is typed (a click on Go then goes there); Enter goes too.
     const int enter = ImGui::GetKeyIndex(ImGuiKey_Enter);
+    if (doc && doc->samples && doc->samples->thinning > 1)
+      ImGui::TextDisabled("1 sample in %zu of the dump: sample i is its record %zu x i", doc->samples->thinning,
+                          doc->samples->thinning);
     ImGui::InputInt("sample", &s.locateSample, 1, 100);
     bool goSample = ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter);
     noteControl(s, "locate.sample");
