@@ -271,6 +271,11 @@ void QualityScene::setDetailSurface(const DetailSurface* detail) {
     poly->GetPointData()->SetActiveScalars("value");
     p.detailActor = makeSurfaceActor(poly, p.table, p.style, p.style.passWires);
     p.renderer->AddActor(p.detailActor);
+    // The toolpath blends over what is drawn before it (makeToolpathActor): it stays last.
+    if (p.toolpathActor) {
+      p.renderer->RemoveActor(p.toolpathActor);
+      p.renderer->AddActor(p.toolpathActor);
+    }
   }
   useCoarseSurface(p.coarse);
 }

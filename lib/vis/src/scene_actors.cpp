@@ -112,6 +112,10 @@ vtkSmartPointer<vtkActor> makeToolpathActor(const std::vector<std::vector<Vec3>>
   actor->SetMapper(mapper);
   actor->GetProperty()->SetColor(0.15, 0.15, 0.2);
   actor->GetProperty()->SetOpacity(coloured ? 1.0 : 0.35);
+  // Drawn after the surfaces in the opaque pass, blended over them all the same: as translucent
+  // geometry it made VTK build its order-independent transparency's whole-window buffers for
+  // every picture, a tenth of a second under llvmpipe.
+  actor->ForceOpaqueOn();
   actor->GetProperty()->SetLineWidth(coloured ? 2.0f : 1.0f);
   actor->GetProperty()->LightingOff();
   return actor;

@@ -15,6 +15,7 @@
 #include "isurface/gcode/path_segment.h"
 #include "isurface/io/biip.h"
 #include "isurface/nc/sample_trajectory.h"
+#include "isurface/nc/threaded_sink.h"
 #include "isurface/nc/servo_feedback.h"
 #include "isurface/nc/simulator.h"
 
@@ -154,9 +155,13 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
 
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress,
                        bool feedback) {
-  TrajectorySink sink(machine.cycle, program.source, feedback);
-  simulate(program, machine, sink, progress);
-  return sink.take();
+  TrajectorySink trajectory(machine.cycle, program.source, feedback);
+  {
+    ThreadedSink sink(trajectory);
+    simulate(program, machine, sink, progress);
+    sink.drain();
+  }
+  return trajectory.take();
 }
 
 namespace {

@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 
 #include "isurface/io/biip.h"
+#include "isurface/nc/threaded_sink.h"
 #include "isurface/base/units.h"
 
 namespace isurface {
@@ -50,8 +51,10 @@ std::string simulationMetadata(const std::string& source, const Machine& machine
 SimulationReport simulateToBiip(const Program& program, const Machine& machine, const std::string& path,
                                 const ProgressCallback& progress) {
   BiipWriter writer(path, simulationChannels(), machine.cycle, simulationMetadata(program.source, machine));
-  BiipSink sink(writer);
+  BiipSink records(writer);
+  ThreadedSink sink(records);
   const SimulationReport report = simulate(program, machine, sink, progress);
+  sink.drain();
   writer.commit();
   return report;
 }
@@ -59,12 +62,14 @@ SimulationReport simulateToBiip(const Program& program, const Machine& machine, 
 StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const Machine& machine,
                                            const std::string& biipPath, const InterpreterOptions& options) {
   BiipWriter writer(biipPath, simulationChannels(), machine.cycle, simulationMetadata(gcodePath, machine));
-  BiipSink sink(writer);
+  BiipSink records(writer);
+  ThreadedSink sink(records);
   StreamingSimulation simulation(machine, options.startPosition, gcodePath, sink);
   StreamedSimulation result;
   result.interpretation = interpretGcodeFileStream(gcodePath, simulation, options);
   if (!result.interpretation.ok()) return result;  // the writer removes its temporary file
   result.report = simulation.finish();
+  sink.drain();
   result.largestWindow = simulation.planner().largestHeld();
   result.forcedCommits = simulation.planner().forcedCommits();
   writer.commit();

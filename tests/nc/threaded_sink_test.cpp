@@ -1,0 +1,123 @@
+// The sink that stores samples on a thread of its own: what reaches the inner sink, in what
+// order, and what happens when the inner sink fails or the run is abandoned.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <stdexcept>
+#include <thread>
+#include <vector>
+
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/nc/sample_trajectory.h"
+#include "isurface/nc/simulator.h"
+#include "isurface/nc/threaded_sink.h"
+#include "isurface/machine/machine.h"
+
+using namespace isurface;
+
+namespace {
+
+struct Recording : SampleSink {
+  std::vector<SimSample> samples;
+  std::size_t expected = 0, failAfter = ~std::size_t{0};
+  bool feedback = true;
+  std::chrono::milliseconds pause{0};  // a slow disk
+  void expect(std::size_t n) override { expected = n; }
+  bool wantsFeedback() const override { return feedback; }
+  void consume(const SimSample* s, std::size_t count) override {
+    std::this_thread::sleep_for(pause);
+    if (samples.size() + count > failAfter) throw std::runtime_error("disk full");
+    samples.insert(samples.end(), s, s + count);
+  }
+};
+
+std::vector<SimSample> numbered(std::size_t count) {
+  std::vector<SimSample> out(count);
+  for (std::size_t i = 0; i < count; ++i) {
+    out[i] = SimSample{static_cast<std::uint32_t>(i), 0, double(i), 0, 0, 0, 0, 0, 0};
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(threadedSink, EveryBatchReachesTheInnerSinkInOrder) {
+  Recording inner;
+  const std::vector<SimSample> all = numbered(100'000);
+  {
+    ThreadedSink sink(inner);
+    sink.expect(all.size());
+    // Batches of every size, from one sample to many, the buffers reused after each call.
+    std::vector<SimSample> batch;
+    for (std::size_t at = 0, size = 1; at < all.size(); at += size, size = size * 3 % 5001 + 1) {
+      batch.assign(all.begin() + at, all.begin() + std::min(all.size(), at + size));
+      sink.consume(batch.data(), batch.size());
+      for (SimSample& s : batch) s.x = -1;  // the caller may reuse its buffer at once
+    }
+    sink.drain();
+    EXPECT_EQ(inner.samples.size(), all.size());
+  }
+  EXPECT_EQ(inner.expected, all.size());
+  ASSERT_EQ(inner.samples.size(), all.size());
+  for (std::size_t i = 0; i < all.size(); ++i) ASSERT_EQ(inner.samples[i].x, double(i)) << i;
+}
+
+TEST(threadedSink, AFailureOfTheInnerSinkReachesTheCallerAndNothingMoreIsStored) {
+  Recording inner;
+  inner.failAfter = 50'000;
+  const std::vector<SimSample> all = numbered(4096);
+  ThreadedSink sink(inner);
+  EXPECT_THROW(
+      {
+        for (int k = 0; k < 100; ++k) sink.consume(all.data(), all.size());
+        sink.drain();
+      },
+      std::runtime_error);
+  EXPECT_THROW(sink.drain(), std::runtime_error);  // and at every later call
+  EXPECT_THROW(sink.consume(all.data(), all.size()), std::runtime_error);
+  EXPECT_LE(inner.samples.size(), inner.failAfter);
+}
+
+TEST(threadedSink, AnAbandonedRunDropsWhatIsStillQueued) {
+  Recording inner;
+  inner.pause = std::chrono::milliseconds(20);
+  const std::vector<SimSample> all = numbered(4096);
+  {
+    ThreadedSink sink(inner);
+    for (int k = 0; k < 20; ++k) sink.consume(all.data(), all.size());
+  }  // no drain: destroyed as when the simulation throws
+  // The producer ran ahead of the slow consumer by the queue: those batches were not stored.
+  EXPECT_LT(inner.samples.size(), 20 * all.size());
+  EXPECT_GE(inner.samples.size(), 10 * all.size());
+  EXPECT_EQ(inner.samples.size() % all.size(), 0u);  // whole batches only
+}
+
+TEST(threadedSink, ASimulationThroughItIsTheDirectSimulationSampleForSample) {
+  const Program program = interpretGcode(
+      "G21 G90 G17\nG0 X0 Y0 Z1\nG1 Z0 F600\nG1 X20 F300\nG2 X30 Y10 I0 J10\nG1 Y30\nG3 X10 Y30 R10\nG1 X0 Y0\n",
+      "threaded.nc").program;
+  const Machine machine = defaultMachine();
+  for (const bool feedback : {true, false}) {
+    TrajectorySink direct(machine.cycle, program.source, feedback);
+    simulate(program, machine, direct);
+    TrajectorySink stored(machine.cycle, program.source, feedback);
+    {
+      ThreadedSink sink(stored);
+      simulate(program, machine, sink);
+      sink.drain();
+    }
+    const Trajectory a = direct.take(), b = stored.take();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_GT(a.size(), 5u * 4096u);  // batches enough to be queued
+    for (std::size_t i = 0; i < a.size(); ++i) {
+      ASSERT_EQ(a.x[i], b.x[i]);
+      ASSERT_EQ(a.y[i], b.y[i]);
+      ASSERT_EQ(a.z[i], b.z[i]);
+      ASSERT_EQ(a.line.runValue(a.line.runAt(i)), b.line.runValue(b.line.runAt(i)));
+    }
+    EXPECT_EQ(a.hasFeedback(), b.hasFeedback());
+    if (feedback) {
+      EXPECT_EQ(a.fbOffsetX, b.fbOffsetX);
+    }
+  }
+}
