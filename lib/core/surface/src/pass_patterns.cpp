@@ -46,9 +46,10 @@ void mainAxis(const Trajectory& s, const std::vector<Pass>& runs, double& ux, do
       // Weighted by length: the tensor of the unit direction times the step length.
       const double l = std::sqrt(dx * dx + dy * dy);
       if (l <= kLengthEpsilon) continue;
-      sxx += dx * dx / l;
-      sxy += dx * dy / l;
-      syy += dy * dy / l;
+      const double weight = 1.0 / l;  // one division, not three: they were a third of the split
+      sxx += dx * dx * weight;
+      sxy += dx * dy * weight;
+      syy += dy * dy * weight;
     }
   }
   const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
