@@ -33,8 +33,9 @@ TEST(recordStretches, EachStretchIsAPassWhoseValuesAreTheWholeRunsAtTheSameRecor
           const std::size_t record = stretches[p].first + (i - pass.begin) * every;
           ASSERT_EQ(part.x[i], whole.x[record]) << p << " " << i;
           ASSERT_EQ(part.line[i], whole.line[record]);
-          if (every == 1 && record >= 2 && record + 2 < whole.size())
+          if (every == 1 && record >= 2 && record + 2 < whole.size()) {
             ASSERT_FLOAT_EQ(partValues[i], wholeValues[record]) << quantityInfo(q).label << " at record " << record;
+          }
         }
       }
     }

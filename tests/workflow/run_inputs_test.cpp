@@ -1,7 +1,9 @@
 // Opening programs and dumps, and joining a dump to its program: once, for the CLI and the app.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <fstream>
+#include <limits>
 
 #include "isurface/io/biip.h"
 #include "workflow_fixtures.h"
@@ -112,4 +114,35 @@ TEST(runInputs, AHaasProgramReadsAsItsControlReadsIt) {
   bool lookAhead = false;
   for (const std::string& w : warnings) lookAhead |= w.find("G08 P") != std::string::npos;
   EXPECT_TRUE(lookAhead);
+}
+
+TEST(runInputs, ADumpsNonFiniteSamplesAreCountedOnceWhetherLoadedWholeOrThinned) {
+  // A dump alone: 1000 records on a line, three of them with a NaN or an infinity.
+  const std::string dump = (scratchDir() / "non-finite.biip").string();
+  {
+    struct Record {
+      double x, y, z;
+    };
+    BiipWriter writer(dump, {{"x", BiipType::F64, 0}, {"y", BiipType::F64, 8}, {"z", BiipType::F64, 16}}, 0.001, "{}");
+    for (int i = 0; i < 1000; ++i) {
+      Record r{0.01 * i, 0, 0};
+      if (i == 10) r.x = std::numeric_limits<double>::quiet_NaN();
+      if (i == 11) r.y = std::numeric_limits<double>::infinity();
+      if (i == 500) r.z = -std::numeric_limits<double>::infinity();
+      writer.append(&r);
+    }
+    writer.commit();
+  }
+  const std::string expected = dump + ": 3 samples with non-finite x/y/z are kept out of geometry";
+  for (const std::size_t thinning : {std::size_t(1), std::size_t(7)}) {
+    OpenRunRequest request;
+    request.files = {"", dump};
+    request.channels.thinning = thinning;
+    const OpenedRun run = openRun(request);
+    EXPECT_EQ(std::count(run.warnings.begin(), run.warnings.end(), expected), 1) << "thinning " << thinning;
+    // What the reader alone says of the same file.
+    const BiipReader reader(dump);
+    ASSERT_EQ(reader.warnings().size(), reader.headerWarnings().size() + 1);
+    EXPECT_EQ(dump + ": " + reader.warnings().back(), expected);
+  }
 }

@@ -166,6 +166,15 @@ Trajectory simulateRun(const Program& program, const Machine& machine, const Pro
 
 namespace {
 
+std::size_t nonFiniteSamples(const Trajectory& s) {
+  std::size_t bad = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const double v = (s.x[i] - s.x[i]) + (s.y[i] - s.y[i]) + (s.z[i] - s.z[i]);  // NaN unless all finite
+    bad += static_cast<std::size_t>(v != v);
+  }
+  return bad;
+}
+
 // 1 when the dump's samples fit in half the free memory (the map, the curves and the close-up
 // need the rest); else the thinning that fits them there, and a warning saying what it costs.
 std::size_t thinningForMemory(const BiipReader& reader, const TrajectoryChannels& channels,
@@ -200,12 +209,17 @@ void readSamples(const OpenRunRequest& request, const ProgressCallback& progress
   } else {
     const auto opened = std::make_shared<const BiipReader>(path);
     const BiipReader& reader = *opened;
-    for (const std::string& w : reader.warnings()) run.warnings.push_back(path + ": " + w);
+    for (const std::string& w : reader.headerWarnings()) run.warnings.push_back(path + ": " + w);
+    const std::size_t nonFiniteWarningAt = run.warnings.size();
     TrajectoryChannels channels = request.channels;
     channels.block = run.program != nullptr;  // a move index means nothing without the program's moves
     if (request.thinToFit) channels.thinning = thinningForMemory(reader, channels, run.warnings);
     // Not const: feedback loaded later joins it (Trajectory::attachFeedback).
     auto samples = std::make_shared<Trajectory>(loadTrajectory(reader, progressStage(progress, 0.3, 1.0), channels));
+    // Every record loaded: they are counted in memory, not by another walk over the file.
+    const bool whole = samples->thinning == 1 && samples->size() == reader.recordCount();
+    const std::string nonFinite = nonFiniteWarning(whole ? nonFiniteSamples(*samples) : reader.nonFiniteSampleCount());
+    if (!nonFinite.empty()) run.warnings.insert(run.warnings.begin() + nonFiniteWarningAt, path + ": " + nonFinite);
     if (run.program && !request.force) mismatch = dumpMismatch(reader, *samples, *run.program);
     if (!samples->hasFeedback() && reader.hasChannel("fb_x") && reader.hasChannel("fb_y") && reader.hasChannel("fb_z"))
       run.feedbackSupply.dump = opened;

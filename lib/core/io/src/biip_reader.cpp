@@ -273,19 +273,19 @@ void BiipReader::parseMetadata(std::size_t tableEnd, std::uint32_t metadataBytes
       const auto parsed = depth > kDeepestMetadata ? nlohmann::json(nlohmann::json::value_t::discarded)
                                                    : nlohmann::json::parse(text.begin(), text.end(), nullptr, false);
       if (depth > kDeepestMetadata) {
-        warnings_.push_back("metadata is nested " + std::to_string(depth) + " levels deep, more than " +
+        headerWarnings_.push_back("metadata is nested " + std::to_string(depth) + " levels deep, more than " +
                             std::to_string(kDeepestMetadata) + "; ignored");
       } else if (parsed.is_discarded()) {
-        warnings_.push_back("metadata is not valid UTF-8 JSON; ignored");
+        headerWarnings_.push_back("metadata is not valid UTF-8 JSON; ignored");
       } else if (!parsed.is_object()) {
-        warnings_.push_back("metadata is JSON but not an object; ignored");
+        headerWarnings_.push_back("metadata is JSON but not an object; ignored");
       } else {
         h.metadataJson.assign(text.data(), text.size());
       }
     }
   }
   if (!std::isfinite(h.t0Seconds)) {
-    warnings_.push_back("t0_s is not finite; 0 is used instead");
+    headerWarnings_.push_back("t0_s is not finite; 0 is used instead");
     h.t0Seconds = 0;
   }
 
@@ -299,16 +299,16 @@ void BiipReader::countRecords() {
   if (h.recordCount == 0) {
     records_ = whole;
     if (partial != 0) {
-      warnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
+      headerWarnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
                           std::to_string(h.recordBytes) + " bytes): dropped");
     }
   } else if (h.recordCount > whole) {
     records_ = whole;
-    warnings_.push_back("record_count says " + std::to_string(h.recordCount) + " records but the file holds " +
+    headerWarnings_.push_back("record_count says " + std::to_string(h.recordCount) + " records but the file holds " +
                         std::to_string(whole) + (partial != 0 ? " whole ones" : "") + "; loaded " +
                         std::to_string(whole));
     if (partial != 0) {
-      warnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
+      headerWarnings_.push_back("final record cut short (" + std::to_string(partial) + " of " +
                           std::to_string(h.recordBytes) + " bytes): dropped");
     }
   } else {
@@ -317,17 +317,34 @@ void BiipReader::countRecords() {
 
   t_ = channel("t");
   if (t_.valid()) checkTimeChannel();
-  const BiipChannelView x = channel("x"), y = channel("y"), z = channel("z");
-  nonFinite_ = 0;
-  for (std::size_t begin = 0; begin < records_; begin += kScanRecords) {
-    const std::size_t end = std::min(records_, begin + kScanRecords);
-    nonFinite_ += countNonFinite(x, y, z, begin, end);
-    releaseRecords(begin, end);
-  }
-  if (nonFinite_ > 0) {
-    warnings_.push_back(std::to_string(nonFinite_) + (nonFinite_ == 1 ? " sample" : " samples") +
-                        " with non-finite x/y/z " + (nonFinite_ == 1 ? "is" : "are") + " kept out of geometry");
-  }
+}
+
+std::string nonFiniteWarning(std::size_t count) {
+  if (count == 0) return "";
+  return std::to_string(count) + (count == 1 ? " sample" : " samples") + " with non-finite x/y/z " +
+         (count == 1 ? "is" : "are") + " kept out of geometry";
+}
+
+std::size_t BiipReader::nonFiniteSampleCount() const {
+  std::call_once(nonFiniteCounted_, [this] {
+    const BiipChannelView x = channel("x"), y = channel("y"), z = channel("z");
+    std::size_t bad = 0;
+    for (std::size_t begin = 0; begin < records_; begin += kScanRecords) {
+      const std::size_t end = std::min(records_, begin + kScanRecords);
+      bad += countNonFinite(x, y, z, begin, end);
+      releaseRecords(begin, end);
+    }
+    checkIntact();
+    nonFinite_ = bad;
+    warnings_ = headerWarnings_;
+    if (bad > 0) warnings_.push_back(nonFiniteWarning(bad));
+  });
+  return nonFinite_;
+}
+
+const std::vector<std::string>& BiipReader::warnings() const {
+  nonFiniteSampleCount();
+  return warnings_;
 }
 
 // Every duration, speed and derivative is taken over the time channel: one that is not a clock

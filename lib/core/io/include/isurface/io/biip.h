@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <memory>
+#include <mutex>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -122,10 +123,14 @@ class BiipReader {
   const std::string& path() const { return path_; }
   const BiipHeader& header() const { return header_; }
   std::size_t recordCount() const { return records_; }  // records actually loaded
-  // Problems the reader worked around, one sentence each, without the file name.
-  const std::vector<std::string>& warnings() const { return warnings_; }
-  // Records whose x, y or z is NaN or infinite (counted when the file is opened).
-  std::size_t nonFiniteSampleCount() const { return nonFinite_; }
+  // Problems the reader worked around, one sentence each, without the file name; the first call
+  // reads every record's x, y and z to count the non-finite ones.
+  const std::vector<std::string>& warnings() const;
+  // The same without the count of non-finite records: what opening the file found. A loader that
+  // reads every record anyway counts them itself (nonFiniteWarning) instead of a walk of its own.
+  const std::vector<std::string>& headerWarnings() const { return headerWarnings_; }
+  // Records whose x, y or z is NaN or infinite (counted at the first call: a walk over the file).
+  std::size_t nonFiniteSampleCount() const;
 
   bool hasChannel(const std::string& name) const;
   const BiipChannel* findChannel(const std::string& name) const;  // nullptr when absent
@@ -162,13 +167,19 @@ class BiipReader {
   std::string path_;
   BiipHeader header_;
   std::size_t records_ = 0;
-  std::vector<std::string> warnings_;
+  std::vector<std::string> headerWarnings_;
   const unsigned char* data_ = nullptr;
   std::size_t size_ = 0;
   std::unique_ptr<ShrinkGuard> guard_;
   BiipChannelView t_;
-  std::size_t nonFinite_ = 0;
+  // Counted once, when first asked for (by any thread: the window shares an open dump).
+  mutable std::once_flag nonFiniteCounted_;
+  mutable std::size_t nonFinite_ = 0;
+  mutable std::vector<std::string> warnings_;
 };
+
+// The warning for `count` samples with a non-finite x, y or z ("" for none).
+std::string nonFiniteWarning(std::size_t count);
 
 // Streams records to `path` through a temporary file beside it; commit() renames it into place.
 // Destroying a writer that was not committed removes the temporary file: no partial output.
