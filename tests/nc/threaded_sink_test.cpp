@@ -2,7 +2,9 @@
 // order, and what happens when the inner sink fails or the run is abandoned.
 #include <gtest/gtest.h>
 
+#include <atomic>
 #include <chrono>
+#include <future>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -21,12 +23,20 @@ struct Recording : SampleSink {
   std::vector<SimSample> samples;
   std::size_t expected = 0, failAfter = ~std::size_t{0};
   bool feedback = true;
-  std::chrono::milliseconds pause{0};  // a slow disk
+  std::shared_future<void> gate;       // when valid, each batch waits for it (a stalled disk)
+  std::atomic<bool> entered{false};    // a batch reached consume()
+  bool failed = false;
+  std::size_t callsAfterFailure = 0;
   void expect(std::size_t n) override { expected = n; }
   bool wantsFeedback() const override { return feedback; }
   void consume(const SimSample* s, std::size_t count) override {
-    std::this_thread::sleep_for(pause);
-    if (samples.size() + count > failAfter) throw std::runtime_error("disk full");
+    entered = true;
+    if (gate.valid()) gate.wait();
+    if (failed) ++callsAfterFailure;
+    if (samples.size() + count > failAfter) {
+      failed = true;
+      throw std::runtime_error("disk full");
+    }
     samples.insert(samples.end(), s, s + count);
   }
 };
@@ -76,20 +86,29 @@ TEST(threadedSink, AFailureOfTheInnerSinkReachesTheCallerAndNothingMoreIsStored)
   EXPECT_THROW(sink.drain(), std::runtime_error);  // and at every later call
   EXPECT_THROW(sink.consume(all.data(), all.size()), std::runtime_error);
   EXPECT_LE(inner.samples.size(), inner.failAfter);
+  EXPECT_TRUE(inner.failed);
+  EXPECT_EQ(inner.callsAfterFailure, 0u);  // nothing queued behind the failed batch reached it
 }
 
 TEST(threadedSink, AnAbandonedRunDropsWhatIsStillQueued) {
   Recording inner;
-  inner.pause = std::chrono::milliseconds(20);
+  std::promise<void> open;
+  inner.gate = open.get_future().share();
   const std::vector<SimSample> all = numbered(4096);
+  std::thread opener;
   {
     ThreadedSink sink(inner);
-    for (int k = 0; k < 20; ++k) sink.consume(all.data(), all.size());
-  }  // no drain: destroyed as when the simulation throws
-  // The producer ran ahead of the slow consumer by the queue: those batches were not stored.
-  EXPECT_LT(inner.samples.size(), 20 * all.size());
-  EXPECT_GE(inner.samples.size(), 10 * all.size());
-  EXPECT_EQ(inner.samples.size() % all.size(), 0u);  // whole batches only
+    sink.consume(all.data(), all.size());
+    while (!inner.entered) std::this_thread::yield();  // the first batch is being stored
+    for (int k = 0; k < 4; ++k) sink.consume(all.data(), all.size());  // queued behind it
+    // The disk comes back while the sink is being destroyed, as when the simulation throws.
+    opener = std::thread([&] {
+      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      open.set_value();
+    });
+  }
+  opener.join();
+  EXPECT_EQ(inner.samples.size(), all.size());  // the batch being stored; the queued ones dropped
 }
 
 TEST(threadedSink, ASimulationThroughItIsTheDirectSimulationSampleForSample) {

@@ -43,6 +43,19 @@ Grid planeGrid(int passes, int points, double spacing, double step, bool zigZag,
   return g;
 }
 
+// Square loops of 20 mm stacked 0.5 mm apart in Z (a waterline finish of a vertical wall),
+// `samples` on each stretch of a loop.
+Trajectory stackedSquareLoops(int levels, int samples) {
+  PathSampler path(Vec3(0, -10, 0));
+  for (int level = 0; level < levels; ++level) {
+    const double z = -0.5 * level;
+    if (level > 0) path.lineTo(Vec3(0, -10, z), 500);
+    path.lineTo(Vec3(10, -10, z), samples).lineTo(Vec3(10, 10, z), samples).lineTo(Vec3(-10, 10, z), samples);
+    path.lineTo(Vec3(-10, -10, z), samples).lineTo(Vec3(0, -10, z), samples);
+  }
+  return path.take();
+}
+
 Vec3 triangleNormal(const Trajectory& s, const SurfaceMesh& m, const std::array<std::uint32_t, 3>& t) {
   const Vec3 a = s.commanded(m.vertexSample[t[0]]), b = s.commanded(m.vertexSample[t[1]]);
   const Vec3 c = s.commanded(m.vertexSample[t[2]]);
@@ -252,14 +265,7 @@ TEST(surface_mesh, LoopsRunningOppositeWaysAreMatched) {
 
 TEST(surface_mesh, WaterlineWallsFaceOutwards) {
   // Square loops stacked 0.5 mm apart in Z: a vertical wall, faced away from the loops' inside.
-  PathSampler path(Vec3(0, -10, 0));
-  for (int level = 0; level < 5; ++level) {
-    const double z = -0.5 * level;
-    if (level > 0) path.lineTo(Vec3(0, -10, z), 500);
-    path.lineTo(Vec3(10, -10, z), 2000).lineTo(Vec3(10, 10, z), 2000).lineTo(Vec3(-10, 10, z), 2000);
-    path.lineTo(Vec3(-10, -10, z), 2000).lineTo(Vec3(0, -10, z), 2000);
-  }
-  const Trajectory s = path.take();
+  const Trajectory s = stackedSquareLoops(5, 2000);
   const PassSet passes = splitPasses(s);
   ASSERT_EQ(passes.passes.size(), 5u);
   const SurfaceMesh m = buildSurfaceMesh(s, passes);
@@ -271,6 +277,26 @@ TEST(surface_mesh, WaterlineWallsFaceOutwards) {
     outwards += n.x() * c.x() + n.y() * c.y() > 0;
   }
   EXPECT_EQ(outwards, m.triangles.size());
+}
+
+// Strips made on two threads give the mesh made one strip after another: the same triangles,
+// facing the same way (a wall's strips follow each other across the halves), and neighbours.
+TEST(surface_mesh, StripsMadeSideBySideGiveTheSameMesh) {
+  const Trajectory walls = stackedSquareLoops(8, 800);
+  const Grid wave = planeGrid(40, 301, 0.05, 0.3, true, [](double x, double y) { return std::sin(x) * std::cos(y); });
+  for (const Trajectory* s : {&walls, &wave.samples}) {
+    const PassSet passes = s == &walls ? splitPasses(*s) : wave.passes;
+    ASSERT_GT(passes.passes.size(), 4u);
+    MeshOptions oneThread, twoThreads;
+    oneThread.sideBySideVertices = std::numeric_limits<std::size_t>::max();
+    twoThreads.sideBySideVertices = 0;
+    const SurfaceMesh a = buildSurfaceMesh(*s, passes, oneThread), b = buildSurfaceMesh(*s, passes, twoThreads);
+    ASSERT_GT(a.triangles.size(), 1000u);
+    EXPECT_EQ(a.triangles, b.triangles);
+    EXPECT_EQ(a.nextPassNeighbour, b.nextPassNeighbour);
+    EXPECT_EQ(a.previousPassNeighbour, b.previousPassNeighbour);
+    EXPECT_EQ(a.vertexSample, b.vertexSample);
+  }
 }
 
 TEST(surface_mesh, NormalsOfATiltedPlane) {

@@ -131,14 +131,6 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
     p.renderer->AddActor(p.coarseActor);
   }
 
-  if (style.showToolpath && !data.toolpath.empty()) {
-    p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);
-    p.toolpathOpacity = p.toolpathActor->GetProperty()->GetOpacity();
-    // A toolpath coloured by the values shows them where the surface is hidden: never faded.
-    if (data.toolpathScalars.empty()) p.passSpacing = medianPassSpacing(data.positions, *data.mesh);
-    p.renderer->AddActor(p.toolpathActor);
-  }
-
   // The surface's vertices as small points, hidden unless asked for.
   auto pointsMapper = vtkSmartPointer<vtkPolyDataMapper>::New();
   pointsMapper->SetInputData(p.surface);
@@ -150,6 +142,15 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.pointsActor->GetProperty()->SetPointSize(2);
   p.pointsActor->VisibilityOff();
   p.renderer->AddActor(p.pointsActor);
+
+  // The toolpath blends over what is drawn before it (makeToolpathActor): after the surfaces.
+  if (style.showToolpath && !data.toolpath.empty()) {
+    p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);
+    p.toolpathOpacity = p.toolpathActor->GetProperty()->GetOpacity();
+    // A toolpath coloured by the values shows them where the surface is hidden: never faded.
+    if (data.toolpathScalars.empty()) p.passSpacing = medianPassSpacing(data.positions, *data.mesh);
+    p.renderer->AddActor(p.toolpathActor);
+  }
 
   const float lineCore[3] = {1.0f, 1.0f, 0.85f}, lineRim[3] = {1.0f, 0.15f, 0.55f};
   const float sampleCore[3] = {1.0f, 1.0f, 1.0f}, sampleRim[3] = {1.0f, 0.85f, 0.1f};

@@ -8,7 +8,11 @@ namespace {
 constexpr std::size_t kMostQueued = 4;
 }  // namespace
 
-ThreadedSink::ThreadedSink(SampleSink& inner) : inner_(inner), worker_([this] { work(); }) {}
+ThreadedSink::ThreadedSink(SampleSink& inner) : inner_(inner) {
+  // Room for every buffer there can be, so the worker's push never allocates (nor fails).
+  spare_.reserve(kMostQueued + 2);
+  worker_ = std::thread([this] { work(); });
+}
 
 ThreadedSink::~ThreadedSink() {
   {
@@ -38,6 +42,10 @@ void ThreadedSink::consume(const SimSample* samples, std::size_t count) {
   lock.unlock();
   batch.assign(samples, samples + count);
   lock.lock();
+  if (error_) {  // the inner sink failed while this batch was copied: it is not handed over
+    spare_.push_back(std::move(batch));
+    rethrow(lock);
+  }
   queue_.push_back(std::move(batch));
   lock.unlock();
   changed_.notify_all();
@@ -75,10 +83,8 @@ void ThreadedSink::work() {
     }
     lock.lock();
     busy_ = false;
-    if (failure) {
-      error_ = failure;
-      queue_.clear();
-    }
+    if (failure && !error_) error_ = failure;  // the first failure is the one the caller hears of
+    if (error_) queue_.clear();
     spare_.push_back(std::move(batch));
     changed_.notify_all();
   }

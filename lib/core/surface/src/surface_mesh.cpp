@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 
 #include "isurface/base/diagnostic.h"
@@ -88,6 +89,19 @@ struct PassWalk {
   }
 };
 
+using Triangle = std::array<std::uint32_t, 3>;
+
+// A strip's triangles as made (A's edges forward), [begin, end) of a triangle list, and what
+// orienting them needs.
+struct StripShape {
+  std::size_t begin = 0, end = 0;
+  Vec3 normal = Vec3::Zero();  // sum of the triangles' (doubled) area vectors
+  double areaSum = 0;
+  bool reversedB = false;      // the walk ran pass B backward
+  double outward = 0;          // a wall's triangles facing away from pass A's centroid (> 0)
+  bool wall() const { return !(std::fabs(normal.z()) >= 0.5 * areaSum); }
+};
+
 class StripBuilder {
  public:
   StripBuilder(const PositionSource& p, const SurfaceMesh& mesh, double gapLimit, std::size_t stride,
@@ -95,10 +109,14 @@ class StripBuilder {
       : p_(p), mesh_(mesh), gap2_(gapLimit * gapLimit), gapLimit_(gapLimit), stride_(stride), pattern_(pattern),
         bestNext_(bestNext), bestPrevious_(bestPrevious) {}
 
-  // Triangles between pass k (A) and pass k + 1 (B), appended to `out`. Returns how pass k
-  // + 1's own edges ended up directed (+1 forward, -1 backward, 0 no triangles) for the next
-  // strip to follow on near-vertical walls; `previousDirection` is that of this strip's A.
-  int build(std::size_t k, int previousDirection, SurfaceMesh& out);
+  // Triangles between pass k (A) and pass k + 1 (B), appended to `triangles`; the matched
+  // vertices of neighbouring passes written into `out` (strips write disjoint vertices' entries,
+  // so strips can be made side by side).
+  StripShape make(std::size_t k, std::vector<Triangle>& triangles, SurfaceMesh& out);
+  // Faces a strip's triangles +Z, or, on a wall, the way the strip before it faced (its
+  // `previousDirection`); returns how pass B's own edges ended up directed (+1 forward, -1
+  // backward, 0 no triangles) for the next strip.
+  static int orient(const StripShape& strip, int previousDirection, std::vector<Triangle>& triangles);
 
  private:
   Vec3 pos(std::uint32_t v) const { return p_.at(mesh_.vertexSample[v]); }
@@ -106,13 +124,15 @@ class StripBuilder {
   std::size_t nearest(std::uint32_t first, std::size_t count, const Vec3& to, double* distance2 = nullptr) const;
   bool closedPass(std::uint32_t first, std::size_t count, std::uint32_t otherFirst, std::size_t otherCount) const;
   void match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out);
+  double outwardness(std::uint32_t firstA, std::size_t countA, const std::vector<Triangle>& triangles,
+                     std::size_t begin) const;
   // Whether triangle t = {a, next on one pass, b} (its cross-pass edges `across` and `other`
   // long, squared) joins passes within the gap limit: both edges within it, or, where the step
   // along the pass is itself longer than the limit but skips no more samples than the stride
   // (not a hole of samples left out of geometry), the other pass's vertex within it of that
   // step. The edges alone would leave a thinned mesh without triangles, its steps (4 mm on a
   // 100 M-sample raster's map in the window) being longer than the passes lie apart.
-  bool passesMeet(const std::array<std::uint32_t, 3>& t, double across, double other) const {
+  bool passesMeet(const Triangle& t, double across, double other) const {
     if (across <= gap2_ && other <= gap2_) return true;
     const bool stepOnA = mesh_.vertexPass[t[0]] == mesh_.vertexPass[t[1]];
     const std::uint32_t from = stepOnA ? t[0] : t[2], to = t[1], facing = stepOnA ? t[2] : t[0];
@@ -160,12 +180,14 @@ void StripBuilder::match(std::uint32_t a, std::uint32_t b, double dist2, Surface
   if (d < bestPrevious_[b]) bestPrevious_[b] = d, out.previousPassNeighbour[b] = a;
 }
 
-int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) {
+StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, SurfaceMesh& out) {
+  StripShape shape;
+  shape.begin = shape.end = triangles.size();
   const std::uint32_t firstA = static_cast<std::uint32_t>(mesh_.passFirstVertex[k]);
   const std::uint32_t firstB = static_cast<std::uint32_t>(mesh_.passFirstVertex[k + 1]);
   std::size_t countA = mesh_.passFirstVertex[k + 1] - firstA;
   std::size_t countB = mesh_.passFirstVertex[k + 2] - firstB;
-  if (countA < 2 || countB < 2) return 0;
+  if (countA < 2 || countB < 2) return shape;
 
   PassWalk a{firstA, countA}, b{firstB, countB};
   if (closedPass(firstA, countA, firstB, countB) && closedPass(firstB, countB, firstA, countA)) {
@@ -189,7 +211,6 @@ int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) 
     b.reversed = (a0 - b1).norm() + (a1 - b0).norm() < (a0 - b0).norm() + (a1 - b1).norm();
   }
 
-  const std::size_t triangleStart = out.triangles.size();
   const std::size_t stepsA = a.steps(), stepsB = b.steps();
   std::size_t i = 0, j = 0;
   std::uint32_t va = a.vertex(0), vb = b.vertex(0);
@@ -202,7 +223,7 @@ int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) 
     const std::uint32_t nextB = j < stepsB ? b.vertex(j + 1) : vb;
     const double viaA = i < stepsA ? d2(nextA, vb) : std::numeric_limits<double>::infinity();
     const double viaB = j < stepsB ? d2(va, nextB) : std::numeric_limits<double>::infinity();
-    std::array<std::uint32_t, 3> t;
+    Triangle t;
     double other;
     // The pass with steps left is taken when the other has none: comparing the distances alone
     // would not end when both are infinite (coordinates near the double's limit) or NaN.
@@ -224,44 +245,50 @@ int StripBuilder::build(std::size_t k, int previousDirection, SurfaceMesh& out) 
       const double area2 = n.squaredNorm();
       const double scale = std::max({(p1 - p0).squaredNorm(), (p2 - p0).squaredNorm(), (p2 - p1).squaredNorm()});
       if (area2 > 1e-24 * scale * scale && area2 > 0) {
-        out.triangles.push_back(t);
+        triangles.push_back(t);
         normal += n;
         areaSum += std::sqrt(area2);
       }
     }
     across = other;
   }
-  if (out.triangles.size() == triangleStart) return 0;
+  shape.end = triangles.size();
+  shape.normal = normal;
+  shape.areaSum = areaSum;
+  shape.reversedB = b.reversed;
+  if (shape.end > shape.begin && shape.wall()) shape.outward = outwardness(firstA, countA, triangles, shape.begin);
+  return shape;
+}
 
+// How much a wall strip's triangles (from `begin` on) face away from the centroid of A's vertices.
+double StripBuilder::outwardness(std::uint32_t firstA, std::size_t countA, const std::vector<Triangle>& triangles,
+                                 std::size_t begin) const {
+  Vec3 centre = Vec3::Zero();
+  for (std::size_t q = 0; q < countA; ++q) centre += pos(firstA + static_cast<std::uint32_t>(q));
+  centre /= double(countA);
+  double outward = 0;
+  for (std::size_t q = begin; q < triangles.size(); ++q) {
+    const Triangle& tri = triangles[q];
+    const Vec3 p0 = pos(tri[0]), p1 = pos(tri[1]), p2 = pos(tri[2]);
+    const Vec3 c = (p0 + p1 + p2) / 3.0 - centre;
+    outward += (p1 - p0).cross(p2 - p0).dot(Vec3(c.x(), c.y(), 0));
+  }
+  return outward;
+}
+
+int StripBuilder::orient(const StripShape& strip, int previousDirection, std::vector<Triangle>& triangles) {
+  if (strip.end == strip.begin) return 0;
   // Orientation: as made, A's edges run forward and B's against the walk. Face +Z; a strip
   // that is mostly a wall follows the strip before it through their shared pass, or faces away
   // from the loop it goes round.
   bool flip;
-  if (std::fabs(normal.z()) >= 0.5 * areaSum || previousDirection == 0) {
-    if (std::fabs(normal.z()) >= 0.5 * areaSum) {
-      flip = normal.z() < 0;
-    } else {
-      // Away from the centroid of A's vertices.
-      Vec3 centre = Vec3::Zero();
-      for (std::size_t q = 0; q < countA; ++q) centre += pos(firstA + static_cast<std::uint32_t>(q));
-      centre /= double(countA);
-      double outward = 0;
-      for (std::size_t q = triangleStart; q < out.triangles.size(); ++q) {
-        const auto& tri = out.triangles[q];
-        const Vec3 p0 = pos(tri[0]), p1 = pos(tri[1]), p2 = pos(tri[2]);
-        const Vec3 c = (p0 + p1 + p2) / 3.0 - centre;
-        outward += (p1 - p0).cross(p2 - p0).dot(Vec3(c.x(), c.y(), 0));
-      }
-      flip = outward < 0;
-    }
-  } else {
-    // A's edges must run against the way the strip before ran them.
-    flip = previousDirection == +1;
-  }
+  if (!strip.wall()) flip = strip.normal.z() < 0;
+  else if (previousDirection == 0) flip = strip.outward < 0;
+  else flip = previousDirection == +1;  // A's edges must run against the way the strip before ran them
   if (flip)
-    for (std::size_t q = triangleStart; q < out.triangles.size(); ++q) std::swap(out.triangles[q][1], out.triangles[q][2]);
+    for (std::size_t q = strip.begin; q < strip.end; ++q) std::swap(triangles[q][1], triangles[q][2]);
   // B's own edges: against the walk as made; the walk runs B forward unless reversed.
-  int directionB = b.reversed ? +1 : -1;
+  int directionB = strip.reversedB ? +1 : -1;
   if (flip) directionB = -directionB;
   return directionB;
 }
@@ -280,8 +307,32 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   std::vector<float> bestPrevious(vertices, std::numeric_limits<float>::infinity());
   StripBuilder strips(p, mesh, options.gapLimit, std::max<std::size_t>(1, options.stride), passes.pattern, bestNext,
                       bestPrevious);
+  const std::size_t count = passes.passes.size() > 1 ? passes.passes.size() - 1 : 0;
+  std::vector<StripShape> shapes(count);
+  const auto makeStrips = [&](std::size_t from, std::size_t to, std::vector<Triangle>& triangles) {
+    for (std::size_t k = from; k < to; ++k) shapes[k] = strips.make(k, triangles, mesh);
+  };
+  // The strips after the one at half the vertices are made on a second thread, into a list of
+  // their own appended after: the same triangles in the same order as made one by one.
+  std::size_t middle = count;
+  if (vertices >= options.sideBySideVertices) {
+    middle = 0;
+    while (middle < count && 2 * mesh.passFirstVertex[middle + 1] < vertices) ++middle;
+  }
+  std::vector<Triangle> later;
+  {
+    std::future<void> second;
+    if (middle < count) second = std::async(std::launch::async, [&] { makeStrips(middle, count, later); });
+    makeStrips(0, middle, mesh.triangles);
+    if (second.valid()) second.get();
+  }
+  const std::size_t offset = mesh.triangles.size();
+  mesh.triangles.insert(mesh.triangles.end(), later.begin(), later.end());
   int direction = 0;
-  for (std::size_t k = 0; k + 1 < passes.passes.size(); ++k) direction = strips.build(k, direction, mesh);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (k >= middle) shapes[k].begin += offset, shapes[k].end += offset;
+    direction = StripBuilder::orient(shapes[k], direction, mesh.triangles);
+  }
   return mesh;
 }
 

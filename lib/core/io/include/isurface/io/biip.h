@@ -124,12 +124,14 @@ class BiipReader {
   const BiipHeader& header() const { return header_; }
   std::size_t recordCount() const { return records_; }  // records actually loaded
   // Problems the reader worked around, one sentence each, without the file name; the first call
-  // reads every record's x, y and z to count the non-finite ones.
+  // reads every record's x, y and z to count the non-finite ones (seconds on a dump of tens of
+  // millions of records; InputError when the file was cut short since it was opened).
   const std::vector<std::string>& warnings() const;
   // The same without the count of non-finite records: what opening the file found. A loader that
   // reads every record anyway counts them itself (nonFiniteWarning) instead of a walk of its own.
   const std::vector<std::string>& headerWarnings() const { return headerWarnings_; }
-  // Records whose x, y or z is NaN or infinite (counted at the first call: a walk over the file).
+  // Records whose x, y or z is NaN or infinite (counted at the first call: a walk over the file,
+  // which throws InputError when the file was cut short since it was opened).
   std::size_t nonFiniteSampleCount() const;
 
   bool hasChannel(const std::string& name) const;

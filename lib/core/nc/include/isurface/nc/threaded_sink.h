@@ -1,7 +1,8 @@
 #pragma once
 // A sink that hands the interpolator's batches to another sink on a thread of its own: storing
 // the samples (and the page faults of their fresh arrays) runs beside the interpolation
-// instead of after each batch of it.
+// instead of after each batch of it. Call drain() before using what the inner sink holds: a
+// sink destroyed without it drops the batches still queued and any failure not yet reported.
 #include <condition_variable>
 #include <cstddef>
 #include <exception>

@@ -25,6 +25,9 @@ struct MeshOptions {
   double gapLimit = 2.0;    // mm; a triangle with an edge between passes longer than this is not made
   std::size_t stride = 1;   // use every stride-th sample of a pass (the last one always)
   bool feedback = false;    // build on the feedback positions instead of the commanded ones
+  // A mesh of at least this many vertices makes half of its strips on a second thread (the same
+  // mesh, sooner).
+  std::size_t sideBySideVertices = 200'000;
 };
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options = {});
