@@ -57,12 +57,20 @@ TEST(threadedSink, EveryBatchReachesTheInnerSinkInOrder) {
   {
     ThreadedSink sink(inner);
     sink.expect(all.size());
-    // Batches of every size, from one sample to many, the buffers reused after each call.
+    // Batches of every size, from one sample to many, copied from the caller's buffer (reused
+    // at once) or handed over with it, one and the other in turn.
     std::vector<SimSample> batch;
+    bool handOver = false;
     for (std::size_t at = 0, size = 1; at < all.size(); at += size, size = size * 3 % 5001 + 1) {
       batch.assign(all.begin() + at, all.begin() + std::min(all.size(), at + size));
-      sink.consume(batch.data(), batch.size());
-      for (SimSample& s : batch) s.x = -1;  // the caller may reuse its buffer at once
+      if (handOver) {
+        sink.consumeBatch(batch);
+        ASSERT_TRUE(batch.empty());
+      } else {
+        sink.consume(batch.data(), batch.size());
+        for (SimSample& s : batch) s.x = -1;
+      }
+      handOver = !handOver;
     }
     sink.drain();
     EXPECT_EQ(inner.samples.size(), all.size());

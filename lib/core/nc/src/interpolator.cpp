@@ -209,9 +209,10 @@ struct StreamingInterpolator::Impl {
   }
   void flush() {
     if (batch.empty()) return;
-    sink.consume(batch.data(), batch.size());
     samples += batch.size();
+    sink.consumeBatch(batch);
     batch.clear();
+    if (batch.capacity() < kBatch) batch.reserve(kBatch);
   }
   void push(const Vec3& raw, const SampleTag& tag) {
     if (rawIndex > 0 && tag.block != tagOf(rawIndex - 1).block) pendingChanges[changesIn++ & ringMask()] = rawIndex;

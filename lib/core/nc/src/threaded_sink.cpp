@@ -51,6 +51,23 @@ void ThreadedSink::consume(const SimSample* samples, std::size_t count) {
   changed_.notify_all();
 }
 
+void ThreadedSink::consumeBatch(std::vector<SimSample>& batch) {
+  std::vector<SimSample> replacement;
+  {
+    std::unique_lock<std::mutex> lock(mutex_);
+    changed_.wait(lock, [&] { return queue_.size() < kMostQueued || error_; });
+    rethrow(lock);
+    if (!spare_.empty()) {
+      replacement = std::move(spare_.back());
+      spare_.pop_back();
+    }
+    queue_.push_back(std::move(batch));
+  }
+  changed_.notify_all();
+  replacement.clear();
+  batch = std::move(replacement);
+}
+
 void ThreadedSink::drain() {
   std::unique_lock<std::mutex> lock(mutex_);
   waitIdle(lock);

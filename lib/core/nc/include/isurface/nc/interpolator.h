@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "isurface/nc/feed_plan.h"
 
@@ -30,6 +31,13 @@ class SampleSink {
   // and fbZ of its samples are NaN).
   virtual bool wantsFeedback() const { return true; }
   virtual void consume(const SimSample* samples, std::size_t count) = 0;
+  // A whole batch handed over with its buffer: a sink that keeps batches for later (ThreadedSink)
+  // takes the vector and leaves an empty one in its place instead of copying 64 bytes a sample.
+  // `batch` is empty on return.
+  virtual void consumeBatch(std::vector<SimSample>& batch) {
+    consume(batch.data(), batch.size());
+    batch.clear();
+  }
 };
 
 struct InterpolationSummary {

@@ -25,6 +25,7 @@ class ThreadedSink : public SampleSink {
   void expect(std::size_t samples) override;
   bool wantsFeedback() const override { return inner_.wantsFeedback(); }
   void consume(const SimSample* samples, std::size_t count) override;
+  void consumeBatch(std::vector<SimSample>& batch) override;  // queues the vector itself
   // Waits until the inner sink has every sample handed over; rethrows what it threw.
   void drain();
 
