@@ -322,7 +322,11 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   std::vector<Triangle> later;
   {
     std::future<void> second;
-    if (middle < count) second = std::async(std::launch::async, [&] { makeStrips(middle, count, later); });
+    if (middle < count)
+      second = std::async(std::launch::async, [&] {
+        later.reserve(2 * (vertices - mesh.passFirstVertex[middle]));  // as the whole list: never grown
+        makeStrips(middle, count, later);
+      });
     makeStrips(0, middle, mesh.triangles);
     if (second.valid()) second.get();
   }
