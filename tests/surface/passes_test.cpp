@@ -108,6 +108,26 @@ TEST(passes, ARapidRateThatIsNotAFloatIsStillARapid) {
   for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);  // never a rapid back
 }
 
+// A program whose feed lies above the machine's rapid rate (a placeholder F, the machine going
+// as fast as it can): its cutting moves are not rapids.
+TEST(passes, AFeedAboveTheRapidRateIsCutting) {
+  PathSampler path(Vec3(0, 0, 0));
+  path.withFeed();
+  const double rapid = 24000, programmed = 25374.6;  // mm/min: F999 in/min
+  for (int k = 0; k < 6; ++k) {
+    path.lineTo(Vec3(30, 0.8 * k, 0), 2000, programmed);  // the machine's limits hold it at 2000
+    path.lineTo(Vec3(30, 0.8 * k, 5), 1000, programmed);
+    path.lineTo(Vec3(0, 0.8 * (k + 1), 5), rapid, rapid);
+    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), 1000, programmed);
+  }
+  Trajectory s = path.take();
+  s.rapidFeed = rapid;
+  const PassSet set = splitPasses(s);
+  EXPECT_EQ(set.pattern, PathPattern::DirectionParallel);
+  ASSERT_EQ(set.passes.size(), 6u);
+  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);  // never the rapid back
+}
+
 TEST(passes, OneWayRasterRapidRateGuessedFromFeeds) {
   const Trajectory s = oneWayRaster(6, true);  // rapidFeed unknown: 20000 is 10 times the cutting feed
   const PassSet set = splitPasses(s);

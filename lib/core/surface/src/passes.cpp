@@ -161,12 +161,14 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
     rapid = typical > 0 && highest >= kRapidFeedRatio * typical ? highest : 0;
   }
   std::vector<char> out(n, 0);
-  // The feeds are floats: the rapid rate is compared as one too (12345.678 is not a float).
+  // The feeds are floats: the rapid rate is compared as one too (12345.678 is not a float). A
+  // feed above the rapid rate is a cutting move's (F999 in/min, "as fast as it goes", on a
+  // machine whose rapid rate is 24 m/min), not a rapid one.
   const double rapidAsStored = static_cast<float>(rapid);
   if (rapid > 0)
     s.feed.forEachRun(0, n, [&](float f, std::size_t begin, std::size_t end) {
       std::fill(out.begin() + static_cast<std::ptrdiff_t>(begin), out.begin() + static_cast<std::ptrdiff_t>(end),
-                char(f >= rapidAsStored * (1 - kRoundingSlack)));
+                char(std::fabs(f - rapidAsStored) <= rapidAsStored * kRoundingSlack));
     });
   return out;
 }
