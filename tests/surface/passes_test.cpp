@@ -128,6 +128,26 @@ TEST(passes, AFeedAboveTheRapidRateIsCutting) {
   for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);  // never the rapid back
 }
 
+// A short climb between two passes looks like a retract, and a later drop like a plunge; the
+// passes between them go on below where the climb started, so they are cut, not air moves.
+TEST(passes, AClimbFollowedByCuttingBelowItIsNotARetract) {
+  PathSampler path(Vec3(0, 0, 0));
+  path.lineTo(Vec3(30, 0, 0), 2000);
+  path.lineTo(Vec3(30, 0, 0.3), 1000);      // the climb: vertical, turning from +X to +Y
+  path.lineTo(Vec3(30, 0.8, 0.3), 2000);
+  path.lineTo(Vec3(0, 0.8, -1), 2000);      // down a slope, below where the climb started
+  path.lineTo(Vec3(0, 1.6, -1), 2000);
+  path.lineTo(Vec3(30, 1.6, -1), 2000);
+  path.lineTo(Vec3(30, 2.4, -1), 2000);
+  path.lineTo(Vec3(0, 2.4, -1), 2000);
+  path.lineTo(Vec3(0, 2.4, -3), 1000);      // the drop: vertical, turning from -X to +X
+  path.lineTo(Vec3(30, 2.4, -3), 2000);
+  const Trajectory s = path.take();
+  const PassSet set = splitPasses(s);
+  EXPECT_EQ(set.pattern, PathPattern::DirectionParallel);
+  EXPECT_EQ(set.passes.size(), 5u);
+}
+
 TEST(passes, OneWayRasterRapidRateGuessedFromFeeds) {
   const Trajectory s = oneWayRaster(6, true);  // rapidFeed unknown: 20000 is 10 times the cutting feed
   const PassSet set = splitPasses(s);
