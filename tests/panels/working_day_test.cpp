@@ -253,9 +253,11 @@ TEST(workingDay, AnInchProgramIsShownInInches) {
   waitForJobs(ui);
   EXPECT_EQ(described(ui)["length_unit"], "in");
   EXPECT_EQ(described(ui)["map"]["unit"], "in/min");  // the legend too
+  EXPECT_EQ(described(ui)["colour"]["unit"], "in/min");  // and the Colour panel
   ui.inspector().settings().units = "mm";  // the user's choice stands over the program's
   settle(ui);
   EXPECT_EQ(described(ui)["length_unit"], "mm");
+  EXPECT_EQ(described(ui)["colour"]["unit"], "mm/min");
   ui.inspector().settings().units = "auto";
   ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
   waitForJobs(ui);

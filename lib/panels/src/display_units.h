@@ -1,6 +1,8 @@
 #pragma once
 // Lengths, feeds and their derivatives as the window shows them: millimetres, or inches for a
 // program written in inches (or when the user says so). Everything is computed in mm and s.
+#include <string_view>
+
 #include "isurface/base/units.h"
 
 namespace isurface::panels {
@@ -13,6 +15,17 @@ struct DisplayUnits {
   const char* feedUnit() const { return inch ? "in/min" : "mm/min"; }
   const char* accelerationUnit() const { return inch ? "in/s^2" : "mm/s^2"; }
   const char* jerkUnit() const { return inch ? "in/s^3" : "mm/s^3"; }
+  // A quantity's unit as the map shows it: its millimetre unit, or the inch one for a length
+  // and its rates (a unit of something else, as um of deviation or s, stays).
+  const char* unitOf(const char* mmUnit) const {
+    if (!inch) return mmUnit;
+    const std::string_view u(mmUnit);
+    if (u == "mm") return "in";
+    if (u == "mm/min") return feedUnit();
+    if (u == "mm/s^2") return accelerationUnit();
+    if (u == "mm/s^3") return jerkUnit();
+    return mmUnit;
+  }
   // Decimals that show a length to about a micrometre.
   int lengthDecimals() const { return inch ? 5 : 4; }
 };

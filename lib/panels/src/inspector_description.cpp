@@ -98,7 +98,10 @@ std::string Inspector::describe() const {
   const nlohmann::json out = {{"documents", documents},
                               {"map", map},
                               {"length_unit", s.units().lengthUnit()},
-                              {"colour", {{"range_mode", s.settings.rangeMode},
+                              {"colour", {{"unit", s.settings.channel.empty()
+                                                       ? s.units().unitOf(quantityInfo(s.settings.quantity).unit)
+                                                       : ""},
+                                          {"range_mode", s.settings.rangeMode},
                                           {"fixed", {s.settings.fixedLow, s.settings.fixedHigh}}}},
                               {"locate", {{"sample", s.locateSample}, {"line", s.locateLine}, {"message", s.locateMessage}}},
                               {"recent_files", s.persistent.recentFiles},

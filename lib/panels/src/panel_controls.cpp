@@ -242,7 +242,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
         }
     ImGui::EndCombo();
   }
-  if (!byChannel) ImGui::Text("unit: %s", current.unit);
+  if (!byChannel) ImGui::Text("unit: %s", s.units().unitOf(current.unit));
   // Which surface carries the colours: what the interpolator commanded, or where the encoders
   // say the tool went (a dump with feedback). The programmed path is the toolpath below.
   {
