@@ -95,7 +95,34 @@ TEST(threadedSink, AFailureOfTheInnerSinkReachesTheCallerAndNothingMoreIsStored)
   EXPECT_THROW(sink.consume(all.data(), all.size()), std::runtime_error);
   EXPECT_LE(inner.samples.size(), inner.failAfter);
   EXPECT_TRUE(inner.failed);
-  EXPECT_EQ(inner.callsAfterFailure, 0u);  // nothing queued behind the failed batch reached it
+  // Nothing queued behind the failed batch reached it. (A failure while the producer is copying
+  // its next batch in is not forced here: that would need a pause inside the copy.)
+  EXPECT_EQ(inner.callsAfterFailure, 0u);
+}
+
+TEST(threadedSink, AFailureReachesTheCallerOfBatchesHandedOverWithTheirBuffers) {
+  Recording inner;
+  inner.failAfter = 50'000;
+  const std::vector<SimSample> all = numbered(4096);
+  ThreadedSink sink(inner);
+  std::vector<SimSample> batch;
+  bool thrown = false;
+  for (int k = 0; k < 100 && !thrown; ++k) {
+    batch = all;
+    try {
+      sink.consumeBatch(batch);
+    } catch (const std::runtime_error&) {
+      thrown = true;
+      EXPECT_EQ(batch.size(), all.size());  // a batch refused stays with its caller
+    }
+  }
+  if (!thrown) {
+    EXPECT_THROW(sink.drain(), std::runtime_error);
+  }
+  batch = all;
+  EXPECT_THROW(sink.consumeBatch(batch), std::runtime_error);
+  EXPECT_LE(inner.samples.size(), inner.failAfter);
+  EXPECT_EQ(inner.callsAfterFailure, 0u);
 }
 
 TEST(threadedSink, AnAbandonedRunDropsWhatIsStillQueued) {
@@ -103,17 +130,21 @@ TEST(threadedSink, AnAbandonedRunDropsWhatIsStillQueued) {
   std::promise<void> open;
   inner.gate = open.get_future().share();
   const std::vector<SimSample> all = numbered(4096);
+  std::atomic<bool> destroying{false};
   std::thread opener;
   {
     ThreadedSink sink(inner);
     sink.consume(all.data(), all.size());
     while (!inner.entered) std::this_thread::yield();  // the first batch is being stored
     for (int k = 0; k < 4; ++k) sink.consume(all.data(), all.size());  // queued behind it
-    // The disk comes back while the sink is being destroyed, as when the simulation throws.
+    // The disk comes back once the sink is being destroyed, as when the simulation throws (the
+    // destructor drops the queue at once; the pause only leaves it the time to get there).
     opener = std::thread([&] {
-      std::this_thread::sleep_for(std::chrono::milliseconds(300));
+      while (!destroying) std::this_thread::yield();
+      std::this_thread::sleep_for(std::chrono::milliseconds(100));
       open.set_value();
     });
+    destroying = true;
   }
   opener.join();
   EXPECT_EQ(inner.samples.size(), all.size());  // the batch being stored; the queued ones dropped

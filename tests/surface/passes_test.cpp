@@ -148,6 +148,38 @@ TEST(passes, AClimbFollowedByCuttingBelowItIsNotARetract) {
   EXPECT_EQ(set.passes.size(), 5u);
 }
 
+// A real air move: retract, a link that comes part of the way down, a plunge. It is not cut.
+TEST(passes, ALinkComingPartOfTheWayDownBeforeItsPlungeIsAnAirMove) {
+  PathSampler path(Vec3(0, 0, 0));
+  path.lineTo(Vec3(40, 0, 0), 2000);
+  path.lineTo(Vec3(40, 0, 5), 1000);  // retract
+  path.lineTo(Vec3(0, 1, 1), 2000);   // back, coming down to 1 mm above the part
+  path.lineTo(Vec3(0, 1, 0), 1000);   // plunge
+  path.lineTo(Vec3(40, 1, 0), 2000);
+  const Trajectory s = path.take();
+  const PassSet set = splitPasses(s);
+  ASSERT_EQ(set.passes.size(), 2u);
+  for (const Pass& p : set.passes)
+    for (std::size_t i = p.begin; i < p.end; ++i) ASSERT_NEAR(s.z[i], 0, 0.02) << i;
+}
+
+// Rapids logged a float step or two off the machine's rate are still rapids.
+TEST(passes, ARapidRateAFloatStepOffIsStillARapid) {
+  PathSampler path(Vec3(0, 0, 0));
+  path.withFeed();
+  const double rapid = 24000;
+  const double logged = std::nextafter(std::nextafter(float(rapid), 1e9f), 1e9f);
+  for (int k = 0; k < 6; ++k) {
+    path.lineTo(Vec3(30, 0.8 * k, 0), 2000, 2000);
+    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), rapid, logged);
+  }
+  Trajectory s = path.take();
+  s.rapidFeed = rapid;
+  const PassSet set = splitPasses(s);
+  ASSERT_EQ(set.passes.size(), 6u);
+  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);
+}
+
 TEST(passes, OneWayRasterRapidRateGuessedFromFeeds) {
   const Trajectory s = oneWayRaster(6, true);  // rapidFeed unknown: 20000 is 10 times the cutting feed
   const PassSet set = splitPasses(s);

@@ -284,8 +284,15 @@ TEST(surface_mesh, WaterlineWallsFaceOutwards) {
 TEST(surface_mesh, StripsMadeSideBySideGiveTheSameMesh) {
   const Trajectory walls = stackedSquareLoops(8, 800);
   const Grid wave = planeGrid(40, 301, 0.05, 0.3, true, [](double x, double y) { return std::sin(x) * std::cos(y); });
-  for (const Trajectory* s : {&walls, &wave.samples}) {
-    const PassSet passes = s == &walls ? splitPasses(*s) : wave.passes;
+  // An open vertical wall (the plane x = 0, a zig-zag of passes 0.3 mm apart in Z): no inside to
+  // face away from, so each strip faces as the strip before it, across the halves too.
+  Grid wall = planeGrid(40, 301, 0.05, 0.3, true);
+  wall.samples.z = wall.samples.y;
+  for (double& z : wall.samples.z) z = -z;
+  wall.samples.y = wall.samples.x;
+  std::fill(wall.samples.x.begin(), wall.samples.x.end(), 0.0);
+  for (const Trajectory* s : std::initializer_list<const Trajectory*>{&walls, &wave.samples, &wall.samples}) {
+    const PassSet passes = s == &walls ? splitPasses(*s) : s == &wall.samples ? wall.passes : wave.passes;
     ASSERT_GT(passes.passes.size(), 4u);
     MeshOptions oneThread, twoThreads;
     oneThread.sideBySideVertices = std::numeric_limits<std::size_t>::max();

@@ -164,11 +164,13 @@ std::vector<char> rapidFromFeed(const Trajectory& s) {
   // The feeds are floats: the rapid rate is compared as one too (12345.678 is not a float). A
   // feed above the rapid rate is a cutting move's (F999 in/min, "as fast as it goes", on a
   // machine whose rapid rate is 24 m/min), not a rapid one.
+  // A few steps of a float either side of it (a writer that rounded the rate its own way).
+  constexpr double kFloatSteps = 1e-6;
   const double rapidAsStored = static_cast<float>(rapid);
   if (rapid > 0)
     s.feed.forEachRun(0, n, [&](float f, std::size_t begin, std::size_t end) {
       std::fill(out.begin() + static_cast<std::ptrdiff_t>(begin), out.begin() + static_cast<std::ptrdiff_t>(end),
-                char(std::fabs(f - rapidAsStored) <= rapidAsStored * kRoundingSlack));
+                char(std::fabs(f - rapidAsStored) <= rapidAsStored * kFloatSteps));
     });
   return out;
 }
@@ -264,16 +266,17 @@ std::vector<Piece> piecesFromSamples(const Trajectory& s) {
 
 bool isLink(const Piece& p) { return p.kind == PieceKind::Feed && p.vertical && !p.cutting; }
 
-// Whether the samples between retract `k` and plunge `j` stay above half the retract's rise. A
-// short climb of a steep relief taken for a retract is followed by cutting below where it
-// started: the passes up to the next descent are not air moves (on stellabee1.ngc's dump, a
-// climb of 0.3 mm judged vertical from its samples took a million samples of cutting out).
+// Whether the samples between retract `k` and plunge `j` stay above where the retract started.
+// A short climb of a steep relief taken for a retract is followed by cutting below it: the
+// passes up to the next descent are not air moves (on stellabee1.ngc's dump, a climb of 0.3 mm
+// judged vertical from its samples took a million samples of cutting out). A link that comes
+// part of the way down before its plunge stays above it.
 bool staysUp(const Trajectory& s, const std::vector<Piece>& pieces, std::size_t k, std::size_t j) {
   const std::size_t begin = pieces[k + 1].begin, end = pieces[j].begin;
   std::size_t first = begin;
   while (first < end && !finite(s, first)) ++first;
   if (first == end) return true;
-  const double floor = s.z[first] - 0.5 * pieces[k].dz;
+  const double floor = s.z[first] - pieces[k].dz;
   for (std::size_t i = first; i < end; ++i)
     if (s.z[i] < floor) return false;
   return true;

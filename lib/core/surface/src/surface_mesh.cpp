@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <future>
+#include <system_error>
 #include <limits>
 
 #include "isurface/base/diagnostic.h"
@@ -322,11 +323,16 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   std::vector<Triangle> later;
   {
     std::future<void> second;
-    if (middle < count)
-      second = std::async(std::launch::async, [&] {
-        later.reserve(2 * (vertices - mesh.passFirstVertex[middle]));  // as the whole list: never grown
-        makeStrips(middle, count, later);
-      });
+    if (middle < count) {
+      try {
+        second = std::async(std::launch::async, [&] {
+          later.reserve(2 * (vertices - mesh.passFirstVertex[middle]));  // as the whole list: never grown
+          makeStrips(middle, count, later);
+        });
+      } catch (const std::system_error&) {  // no thread to be had: all of them on this one
+        middle = count;
+      }
+    }
     makeStrips(0, middle, mesh.triangles);
     if (second.valid()) second.get();
   }
