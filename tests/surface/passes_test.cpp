@@ -91,22 +91,25 @@ TEST(passes, OneWayRasterWithFeedChannel) {
   }
 }
 
-// The feed channel holds floats: a rapid rate a float cannot hold is still told apart.
-TEST(passes, ARapidRateThatIsNotAFloatIsStillARapid) {
-  // Cut along +X, rapid back along -X at the cutting height to the next pass.
+// Cuts along +X and rapids back along -X at the cutting height to the next pass, the rapids at
+// `rapid` mm/min (the machine's rate) and logged in the feed channel as `logged`; every pass found
+// must be a cut, never a rapid back.
+void expectOnlyTheCutsArePasses(double rapid, double logged) {
   PathSampler path(Vec3(0, 0, 0));
   path.withFeed();
-  const double rapid = 12345.678;  // mm/min
   for (int k = 0; k < 6; ++k) {
     path.lineTo(Vec3(30, 0.8 * k, 0), 2000, 2000);
-    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), rapid, rapid);
+    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), rapid, logged);
   }
   Trajectory s = path.take();
   s.rapidFeed = rapid;
   const PassSet set = splitPasses(s);
   ASSERT_EQ(set.passes.size(), 6u);
-  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);  // never a rapid back
+  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);
 }
+
+// The feed channel holds floats: a rapid rate a float cannot hold is still told apart.
+TEST(passes, ARapidRateThatIsNotAFloatIsStillARapid) { expectOnlyTheCutsArePasses(12345.678, 12345.678); }
 
 // A program whose feed lies above the machine's rapid rate (a placeholder F, the machine going
 // as fast as it can): its cutting moves are not rapids.
@@ -165,19 +168,7 @@ TEST(passes, ALinkComingPartOfTheWayDownBeforeItsPlungeIsAnAirMove) {
 
 // Rapids logged a float step or two off the machine's rate are still rapids.
 TEST(passes, ARapidRateAFloatStepOffIsStillARapid) {
-  PathSampler path(Vec3(0, 0, 0));
-  path.withFeed();
-  const double rapid = 24000;
-  const double logged = std::nextafter(std::nextafter(float(rapid), 1e9f), 1e9f);
-  for (int k = 0; k < 6; ++k) {
-    path.lineTo(Vec3(30, 0.8 * k, 0), 2000, 2000);
-    path.lineTo(Vec3(0, 0.8 * (k + 1), 0), rapid, logged);
-  }
-  Trajectory s = path.take();
-  s.rapidFeed = rapid;
-  const PassSet set = splitPasses(s);
-  ASSERT_EQ(set.passes.size(), 6u);
-  for (const Pass& p : set.passes) EXPECT_GT(s.x[p.end - 1], s.x[p.begin] + 29);
+  expectOnlyTheCutsArePasses(24000, std::nextafter(std::nextafter(24000.0f, 1e9f), 1e9f));
 }
 
 TEST(passes, OneWayRasterRapidRateGuessedFromFeeds) {
