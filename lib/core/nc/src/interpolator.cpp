@@ -210,8 +210,7 @@ struct StreamingInterpolator::Impl {
   void flush() {
     if (batch.empty()) return;
     samples += batch.size();
-    sink.consumeBatch(batch);
-    batch.clear();
+    sink.consumeBatch(batch);  // leaves it empty
     if (batch.capacity() < kBatch) batch.reserve(kBatch);
   }
   void push(const Vec3& raw, const SampleTag& tag) {

@@ -99,7 +99,6 @@ struct StripShape {
   Vec3 normal = Vec3::Zero();  // sum of the triangles' (doubled) area vectors
   double areaSum = 0;
   bool reversedB = false;      // the walk ran pass B backward
-  double outward = 0;          // a wall's triangles facing away from pass A's centroid (> 0)
   bool wall() const { return !(std::fabs(normal.z()) >= 0.5 * areaSum); }
 };
 
@@ -117,7 +116,7 @@ class StripBuilder {
   // Faces a strip's triangles +Z, or, on a wall, the way the strip before it faced (its
   // `previousDirection`); returns how pass B's own edges ended up directed (+1 forward, -1
   // backward, 0 no triangles) for the next strip.
-  static int orient(const StripShape& strip, int previousDirection, std::vector<Triangle>& triangles);
+  int orient(std::size_t k, const StripShape& strip, int previousDirection, std::vector<Triangle>& triangles) const;
 
  private:
   Vec3 pos(std::uint32_t v) const { return p_.at(mesh_.vertexSample[v]); }
@@ -125,8 +124,7 @@ class StripBuilder {
   std::size_t nearest(std::uint32_t first, std::size_t count, const Vec3& to, double* distance2 = nullptr) const;
   bool closedPass(std::uint32_t first, std::size_t count, std::uint32_t otherFirst, std::size_t otherCount) const;
   void match(std::uint32_t a, std::uint32_t b, double dist2, SurfaceMesh& out);
-  double outwardness(std::uint32_t firstA, std::size_t countA, const std::vector<Triangle>& triangles,
-                     std::size_t begin) const;
+  double outwardness(std::size_t k, const StripShape& strip, const std::vector<Triangle>& triangles) const;
   // Whether triangle t = {a, next on one pass, b} (its cross-pass edges `across` and `other`
   // long, squared) joins passes within the gap limit: both edges within it, or, where the step
   // along the pass is itself longer than the limit but skips no more samples than the stride
@@ -257,18 +255,19 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
   shape.normal = normal;
   shape.areaSum = areaSum;
   shape.reversedB = b.reversed;
-  if (shape.end > shape.begin && shape.wall()) shape.outward = outwardness(firstA, countA, triangles, shape.begin);
   return shape;
 }
 
-// How much a wall strip's triangles (from `begin` on) face away from the centroid of A's vertices.
-double StripBuilder::outwardness(std::uint32_t firstA, std::size_t countA, const std::vector<Triangle>& triangles,
-                                 std::size_t begin) const {
+// How much strip k's triangles, as made, face away from the centroid of its pass A's vertices
+// (> 0 outward).
+double StripBuilder::outwardness(std::size_t k, const StripShape& strip, const std::vector<Triangle>& triangles) const {
+  const std::uint32_t firstA = static_cast<std::uint32_t>(mesh_.passFirstVertex[k]);
+  const std::size_t countA = mesh_.passFirstVertex[k + 1] - firstA;
   Vec3 centre = Vec3::Zero();
   for (std::size_t q = 0; q < countA; ++q) centre += pos(firstA + static_cast<std::uint32_t>(q));
   centre /= double(countA);
   double outward = 0;
-  for (std::size_t q = begin; q < triangles.size(); ++q) {
+  for (std::size_t q = strip.begin; q < strip.end; ++q) {
     const Triangle& tri = triangles[q];
     const Vec3 p0 = pos(tri[0]), p1 = pos(tri[1]), p2 = pos(tri[2]);
     const Vec3 c = (p0 + p1 + p2) / 3.0 - centre;
@@ -277,14 +276,15 @@ double StripBuilder::outwardness(std::uint32_t firstA, std::size_t countA, const
   return outward;
 }
 
-int StripBuilder::orient(const StripShape& strip, int previousDirection, std::vector<Triangle>& triangles) {
+int StripBuilder::orient(std::size_t k, const StripShape& strip, int previousDirection,
+                         std::vector<Triangle>& triangles) const {
   if (strip.end == strip.begin) return 0;
   // Orientation: as made, A's edges run forward and B's against the walk. Face +Z; a strip
   // that is mostly a wall follows the strip before it through their shared pass, or faces away
   // from the loop it goes round.
   bool flip;
   if (!strip.wall()) flip = strip.normal.z() < 0;
-  else if (previousDirection == 0) flip = strip.outward < 0;
+  else if (previousDirection == 0) flip = outwardness(k, strip, triangles) < 0;
   else flip = previousDirection == +1;  // A's edges must run against the way the strip before ran them
   if (flip)
     for (std::size_t q = strip.begin; q < strip.end; ++q) std::swap(triangles[q][1], triangles[q][2]);
@@ -341,7 +341,7 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   int direction = 0;
   for (std::size_t k = 0; k < count; ++k) {
     if (k >= middle) shapes[k].begin += offset, shapes[k].end += offset;
-    direction = StripBuilder::orient(shapes[k], direction, mesh.triangles);
+    direction = strips.orient(k, shapes[k], direction, mesh.triangles);
   }
   return mesh;
 }
