@@ -64,6 +64,23 @@ TEST(passes, RasterAtAnAngleFindsItsAxis) {
   EXPECT_EQ(set.passes.size(), 8u);
 }
 
+TEST(passes, ALongRasterAtAnAngleFindsItsAxis) {
+  // Over a million samples: the steps are summed in two halves (on two threads where it can).
+  const double c = std::cos(kPi / 6), s30 = std::sin(kPi / 6);
+  const auto at = [&](double u, double v) { return Vec3(u * c - v * s30, u * s30 + v * c, 0); };
+  PathSampler path(at(0, 0));
+  for (int k = 0; k < 61; ++k) {
+    if (k > 0) path.lineTo(at(k % 2 == 0 ? 0 : 300, 0.6 * k), 1000);
+    path.lineTo(at(k % 2 == 0 ? 300 : 0, 0.6 * k), 1000);
+  }
+  const Trajectory s = path.take();
+  ASSERT_GT(s.size(), 1'000'000u);
+  const PassSet set = splitPasses(s);
+  EXPECT_EQ(set.pattern, PathPattern::DirectionParallel);
+  ASSERT_EQ(set.passes.size(), 61u);
+  for (const Pass& p : set.passes) EXPECT_NEAR(chordXY(s, p), 300.0, 0.5);
+}
+
 // One-way raster: cut along +X, retract, rapid back, plunge.
 Trajectory oneWayRaster(int passes, bool withFeed) {
   PathSampler path(Vec3(0, 0, 0));

@@ -1,7 +1,9 @@
 // Dividing cutting runs into passes for the three tool-path patterns of the paper's Figure 1.
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
+#include <system_error>
 
 #include "pass_split.h"
 
@@ -35,24 +37,56 @@ void keepLongEnough(const Trajectory& s, const Pass& pass, const PassOptions& op
 
 // --- direction-parallel -----------------------------------------------------------------------
 
-// Unit main direction of horizontal motion: the principal axis of the steps' orientation
-// tensor, so that moves one way and back add up instead of cancelling.
-void mainAxis(const Trajectory& s, const std::vector<Pass>& runs, double& ux, double& uy) {
-  double sxx = 0, sxy = 0, syy = 0;
+// Sums of the steps' orientation tensor over samples [begin, end) of the runs: each step's unit
+// direction times its length (xx, xy, yy).
+struct OrientationSums {
+  double xx = 0, xy = 0, yy = 0;
+};
+
+OrientationSums orientationSums(const Trajectory& s, const std::vector<Pass>& runs, std::size_t begin, std::size_t end) {
+  OrientationSums sums;
   for (const Pass& run : runs) {
-    for (std::size_t i = run.begin; i + 1 < run.end; ++i) {
+    const std::size_t last = std::min(run.end, end);
+    for (std::size_t i = std::max(run.begin, begin); i + 1 < last; ++i) {
       double dx, dy, dz;
       if (!step(s, i, dx, dy, dz)) continue;
-      // Weighted by length: the tensor of the unit direction times the step length.
       const double l = std::sqrt(dx * dx + dy * dy);
       if (l <= kLengthEpsilon) continue;
       const double weight = 1.0 / l;  // one division, not three: they were a third of the split
-      sxx += dx * dx * weight;
-      sxy += dx * dy * weight;
-      syy += dy * dy * weight;
+      sums.xx += dx * dx * weight;
+      sums.xy += dx * dy * weight;
+      sums.yy += dy * dy * weight;
     }
   }
-  const double angle = 0.5 * std::atan2(2 * sxy, sxx - syy);
+  return sums;
+}
+
+// Unit main direction of horizontal motion: the principal axis of the steps' orientation
+// tensor, so that moves one way and back add up instead of cancelling. Above a million samples
+// the second half of the steps is summed on a second thread; the halves depend only on the
+// samples, so the axis is the same whether or not a second thread can be had.
+void mainAxis(const Trajectory& s, const std::vector<Pass>& runs, double& ux, double& uy) {
+  constexpr std::size_t kSideBySideSamples = 1'000'000;
+  const std::size_t size = runs.empty() ? 0 : runs.back().end;
+  // The second half begins with the step from sample middle - 1 to middle.
+  const std::size_t middle = size >= kSideBySideSamples ? size / 2 : size;
+  std::future<OrientationSums> second;
+  bool secondHere = middle < size;
+  if (secondHere) {
+    try {
+      second = std::async(std::launch::async, [&] { return orientationSums(s, runs, middle - 1, size); });
+      secondHere = false;
+    } catch (const std::system_error&) {  // no thread to be had: both halves on this one
+    }
+  }
+  OrientationSums sums = orientationSums(s, runs, 0, middle);
+  if (middle < size) {
+    const OrientationSums later = secondHere ? orientationSums(s, runs, middle - 1, size) : second.get();
+    sums.xx += later.xx;
+    sums.xy += later.xy;
+    sums.yy += later.yy;
+  }
+  const double angle = 0.5 * std::atan2(2 * sums.xy, sums.xx - sums.yy);
   ux = std::cos(angle);
   uy = std::sin(angle);
 }
