@@ -49,16 +49,20 @@ TEST(passes, ZigZagRasterOnePassPerLine) {
   }
 }
 
-TEST(passes, RasterAtAnAngleFindsItsAxis) {
-  // A zig-zag along a direction 30 degrees off X.
+// A zig-zag of `passes` passes `length` mm long, 0.6 mm apart, along a direction 30 degrees off X.
+Trajectory rasterAtThirtyDegrees(int passes, double length, double feed) {
   const double c = std::cos(kPi / 6), s30 = std::sin(kPi / 6);
   const auto at = [&](double u, double v) { return Vec3(u * c - v * s30, u * s30 + v * c, 0); };
   PathSampler path(at(0, 0));
-  for (int k = 0; k < 8; ++k) {
-    if (k > 0) path.lineTo(at(k % 2 == 0 ? 0 : 30, 0.6 * k), 2000);
-    path.lineTo(at(k % 2 == 0 ? 30 : 0, 0.6 * k), 2000);
+  for (int k = 0; k < passes; ++k) {
+    if (k > 0) path.lineTo(at(k % 2 == 0 ? 0 : length, 0.6 * k), feed);
+    path.lineTo(at(k % 2 == 0 ? length : 0, 0.6 * k), feed);
   }
-  const Trajectory s = path.take();
+  return path.take();
+}
+
+TEST(passes, RasterAtAnAngleFindsItsAxis) {
+  const Trajectory s = rasterAtThirtyDegrees(8, 30, 2000);
   const PassSet set = splitPasses(s);
   EXPECT_EQ(set.pattern, PathPattern::DirectionParallel);
   EXPECT_EQ(set.passes.size(), 8u);
@@ -66,14 +70,7 @@ TEST(passes, RasterAtAnAngleFindsItsAxis) {
 
 TEST(passes, ALongRasterAtAnAngleFindsItsAxis) {
   // Over a million samples: the steps are summed in two halves (on two threads where it can).
-  const double c = std::cos(kPi / 6), s30 = std::sin(kPi / 6);
-  const auto at = [&](double u, double v) { return Vec3(u * c - v * s30, u * s30 + v * c, 0); };
-  PathSampler path(at(0, 0));
-  for (int k = 0; k < 61; ++k) {
-    if (k > 0) path.lineTo(at(k % 2 == 0 ? 0 : 300, 0.6 * k), 1000);
-    path.lineTo(at(k % 2 == 0 ? 300 : 0, 0.6 * k), 1000);
-  }
-  const Trajectory s = path.take();
+  const Trajectory s = rasterAtThirtyDegrees(61, 300, 1000);
   ASSERT_GT(s.size(), 1'000'000u);
   const PassSet set = splitPasses(s);
   EXPECT_EQ(set.pattern, PathPattern::DirectionParallel);
