@@ -191,6 +191,38 @@ TEST(workingDay, OptimiseWithOnlyADumpSaysWhyInTheDialog) {
       << state["optimise_problem"];
 }
 
+TEST(workingDay, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
+  // A roughing-like raster, its passes 4 mm apart: more than the 2 mm a finishing map joins.
+  const std::filesystem::path program = test::scratchDir() / "wide-step-over.nc";
+  {
+    std::ofstream out(program);
+    out << "G21 G90\nG0 X0 Y0 Z1\nG1 Z0 F1200\n";
+    for (int pass = 0; pass < 8; ++pass) out << "G1 X" << (pass % 2 == 0 ? 40 : 0) << "\nG1 Y" << 4 * (pass + 1) << "\n";
+    out << "G0 Z5\nM2\n";
+  }
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open(program.string());
+  waitForJobs(ui);
+  EXPECT_TRUE(described(ui)["map"].empty());
+  EXPECT_NE(ui.inspector().statusText().find("too far apart"), std::string::npos) << ui.inspector().statusText();
+
+  typeInto(ui, "surface.gap", "5");
+  tap(ui, ImGuiKey_Enter);
+  waitForJobs(ui);
+  const nlohmann::json state = described(ui);
+  EXPECT_DOUBLE_EQ(state["colour"]["gap_limit_mm"].get<double>(), 5.0);
+  ASSERT_FALSE(state["map"].empty()) << ui.inspector().statusText();
+  EXPECT_GT(state["map"]["vertices"].get<std::size_t>(), 100u);
+
+  // Nothing is made of a gap of 0: it is refused, and the map stays.
+  typeInto(ui, "surface.gap", "0");
+  tap(ui, ImGuiKey_Enter);
+  waitForJobs(ui);
+  EXPECT_DOUBLE_EQ(described(ui)["colour"]["gap_limit_mm"].get<double>(), 5.0);
+  EXPECT_NE(ui.inspector().statusText().find("more than 0"), std::string::npos) << ui.inspector().statusText();
+  EXPECT_FALSE(described(ui)["map"].empty());
+}
+
 TEST(workingDay, ADumpCutShortWithNoSurfaceOpensAndSaysBoth) {
   const std::filesystem::path program = test::scratchDir() / "one-line.nc";
   std::ofstream(program) << "G21 G90\nG1 X20 F600\nM2\n";

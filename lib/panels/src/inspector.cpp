@@ -29,6 +29,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   r.colorMap = settings.colorMap;
   r.view = settings.view;
   r.feedbackSurface = settings.feedbackSurface;
+  r.gapLimit = settings.gapLimit;
   r.inch = units().inch;
   if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
   if (settings.rangeMode == 2) r.fixedRange = ValueRange{settings.fixedLow, std::max(settings.fixedHigh, settings.fixedLow)};
@@ -194,10 +195,12 @@ void Inspector::State::takeJobResult() {
   } else if (result->scene) {
     Document* doc = activeDocument();
     if (!doc) return;
+    const bool firstMap = !doc->scene;
     doc->map = std::move(result->map);
     doc->scene = result->scene;
     view.setScene(doc->scene, doc->map.rayIndex);
     doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+    if (firstMap) view.refit();  // a map made after the gap between passes was raised
     shownGeneration = ~std::uint64_t(0);
     status = doc->name + ": coloured by " +
              (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);

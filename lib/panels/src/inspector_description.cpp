@@ -102,6 +102,7 @@ std::string Inspector::describe() const {
                                                        ? s.units().unitOf(quantityInfo(s.settings.quantity).unit)
                                                        : ""},
                                           {"range_mode", s.settings.rangeMode},
+                                          {"gap_limit_mm", s.settings.gapLimit},
                                           {"fixed", {s.settings.fixedLow, s.settings.fixedHigh}}}},
                               {"locate", {{"sample", s.locateSample}, {"line", s.locateLine}, {"message", s.locateMessage}}},
                               {"recent_files", s.persistent.recentFiles},

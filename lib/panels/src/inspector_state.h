@@ -76,6 +76,9 @@ struct ViewSettings {
   float fixedLow = 0, fixedHigh = 3000;
   vis::ViewDirection view = vis::ViewDirection::Iso;
   bool feedbackSurface = false;  // the surface of the encoder positions instead of the commanded
+  // mm: passes further apart get no triangles between them (a roughing program's step-over of
+  // 4 mm needs more than the 2 mm a finishing program's holes are told by).
+  double gapLimit = vis::QualityMapRequest{}.gapLimit;
 };
 
 // A region re-optimised: the new program, its simulation and map, and the comparison.

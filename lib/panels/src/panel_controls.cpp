@@ -2,6 +2,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -218,6 +219,34 @@ void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h)
   ImGui::End();
 }
 
+namespace {
+
+// How far apart passes may lie and still be joined by the surface, in the lengths shown; true
+// when it changed (the map is then made again). A roughing program's step-over (4 mm, say) is
+// more than the default, which is set for finishing programs: without this, such a program
+// opened in the window had curves but no map, and nothing to be done about it.
+bool drawGapControl(Inspector::State& s) {
+  const DisplayUnits u = s.units();
+  float shown = static_cast<float>(u.length(s.settings.gapLimit));
+  ImGui::TextUnformatted("gap between passes:");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  ImGui::InputFloat("##gap", &shown, 0, 0, u.inch ? "%.4f in" : "%.3f mm");
+  noteControl(s, "surface.gap");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("passes further apart than this get no surface between them");
+  if (!ImGui::IsItemDeactivatedAfterEdit()) return false;
+  const double mm = u.inch ? double(shown) * kMmPerInch : double(shown);
+  if (!(mm > 0) || !std::isfinite(mm)) {
+    s.status = "the gap between passes must be more than 0";
+    return false;
+  }
+  if (mm == s.settings.gapLimit) return false;
+  s.settings.gapLimit = mm;
+  return true;
+}
+
+}  // namespace
+
 void drawColourControls(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("Colour", x, y, w, h);
   bool recolour = false;
@@ -263,6 +292,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
       ImGui::SetTooltip("the samples have no feedback positions (fb_x fb_y fb_z)");
     s.settings.feedbackSurface = surface == 1;
   }
+  recolour |= drawGapControl(s);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
     std::vector<std::string> names = vis::colorMapNames();
