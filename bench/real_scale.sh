@@ -78,6 +78,32 @@ with open(path, "w") as out:
 EOF
 }
 
+# A pocket roughed level by level as a 3-axis CAM post writes it (N numbers, G0 between levels,
+# a zig-zag along X 4 mm apart, 8 mm moves, 4 decimals): 40 levels, about 800 KB and 14.5 M
+# samples, as the Haas roughing program the real-scale goals name.
+roughing() {
+  python3 - "$1" <<'EOF'
+import sys
+out = open(sys.argv[1], "w")
+n = 10
+def w(s):
+    global n
+    out.write(f"N{n} {s}\n")
+    n += 10
+w("G90 G21 G17 G40 G49 G80"); w("T1 M6"); w("S8000 M3"); w("G0 X0. Y0. Z25.")
+for level in range(1, 41):
+    z = -0.5 * level
+    w("G0 X0. Y0."); w(f"G0 Z{z + 2:.4f}"); w(f"G1 Z{z:.4f} F400")
+    for k in range(38):
+        if k > 0: w(f"G1 Y{4.0 * k:.4f}")
+        for i in range(1, 26):
+            x = 8.0 * i if k % 2 == 0 else 200.0 - 8.0 * i
+            w(f"G1 X{x:.4f}" + (" F1300" if k == 0 and i == 1 else ""))
+    w("G0 Z25.")
+w("M5"); w("M30")
+EOF
+}
+
 # The window under Xvfb on a program and its dump: sets `shown` (seconds from launch to the
 # coloured map, empty when not shown in 120 s) and `hwm` (its peak resident set, MB).
 window_run() {
@@ -153,6 +179,11 @@ row "generated relief raster: simulate ($n samples)" "$t s, $m MB" ""
 read -r t m < <(measure "$cli" render "$work/relief12.biip" -o "$work/relief12.png")
 row "render of its dump" "$t s, $m MB ($(( (m - start_mb) * 1048576 / n )) B a sample over start)" "100 B a sample"
 rm -f "$work/relief12.biip"
+
+roughing "$work/roughing.nc"
+read -r t m < <(measure "$cli" render "$work/roughing.nc" --gap-limit 5 -o "$work/roughing.png")
+n=$(grep -o '[0-9]* samples' "$work/out.txt" | head -1 | cut -d' ' -f1)
+row "generated roughing program ($(( $(stat -c %s "$work/roughing.nc") / 1024 )) KB): render, simulation included ($n samples)" "$t s, $m MB ($(( m * 1048576 / n )) B a sample)" "1.4 GB"
 
 if [ "$huge" = 1 ]; then
   relief "$work/relief100.nc" 1000 2000
