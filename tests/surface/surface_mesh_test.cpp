@@ -155,28 +155,6 @@ TEST(surface_mesh, GapLimitLeavesFarRegionsApart) {
   EXPECT_EQ(buildSurfaceMesh(g.samples, g.passes, wide).triangles.size(), 5u * (2 * 21 - 2));
 }
 
-TEST(surface_mesh, PassesThatCrossOverOneAnotherMakeNoSurface) {
-  // Two flat wavy passes 10 mm long: crossing each other twice a millimetre (as the pieces of an
-  // engraved curve do), or side by side 1 mm apart.
-  const auto wavy = [](double offset, double sign) {
-    Grid g = planeGrid(2, 401, 0.025, 0.0, false);
-    for (std::size_t i = g.passes.passes[1].begin; i < g.passes.passes[1].end; ++i)
-      g.samples.y[i] = offset + sign * 0.5 * std::sin(2 * kPi * g.samples.x[i]);
-    for (std::size_t i = g.passes.passes[0].begin; i < g.passes.passes[0].end; ++i)
-      g.samples.y[i] = 0.5 * std::sin(2 * kPi * g.samples.x[i]);
-    return g;
-  };
-  const Grid crossing = wavy(0.0, -1.0);
-  const SurfaceMesh folded = buildSurfaceMesh(crossing.samples, crossing.passes);
-  EXPECT_TRUE(folded.triangles.empty());
-  EXPECT_EQ(folded.foldedStrips, 1u);
-
-  const Grid alongside = wavy(1.0, 1.0);
-  const SurfaceMesh made = buildSurfaceMesh(alongside.samples, alongside.passes);
-  EXPECT_GT(made.triangles.size(), 700u);
-  EXPECT_EQ(made.foldedStrips, 0u);
-}
-
 TEST(surface_mesh, PassesOfDifferentLengthsOnlyMeetWhereTheyOverlap) {
   // The second pass covers only x in [5, 10] of the first's [0, 10].
   Grid g = planeGrid(2, 21, 0.5, 0.5, false);

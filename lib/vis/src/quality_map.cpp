@@ -141,10 +141,6 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   meshOptions.gapLimit = request.gapLimit;
   meshOptions.stride = stride;
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
-  if (map.mesh->triangles.empty() && map.mesh->foldedStrips > 0)
-    throw InputError(Diagnostic{samples.source, 0, 0,
-                                "the passes cross over one another instead of lying side by side (an engraving or a "
-                                "profile, not a surface): no surface to map"});
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,
                                 fmt::format("the passes are too far apart to make a surface (gap limit {:g} mm: raise it to join passes further apart, --gap-limit or the window's Colour panel)", request.gapLimit)});

@@ -99,13 +99,8 @@ struct StripShape {
   Vec3 normal = Vec3::Zero();  // sum of the triangles' (doubled) area vectors
   double areaSum = 0;
   bool reversedB = false;      // the walk ran pass B backward
-  bool folded = false;         // its triangles were dropped: see StripBuilder::make
   bool wall() const { return !(std::fabs(normal.z()) >= 0.5 * areaSum); }
 };
-
-// A strip lies flat when the shadows of its triangles on XY are this share of their area, and is
-// folded when the shadows facing up and those facing down cancel to less than this share.
-constexpr double kFlat = 0.9, kFolded = 0.5;
 
 class StripBuilder {
  public:
@@ -221,7 +216,7 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
   double across = d2(va, vb);  // squared length of the current cross-pass edge
   match(va, vb, across, out);
   Vec3 normal = Vec3::Zero();
-  double areaSum = 0, horizontalArea = 0;  // of the triangles, and of their shadows on XY
+  double areaSum = 0;
   while (i < stepsA || j < stepsB) {
     const std::uint32_t nextA = i < stepsA ? a.vertex(i + 1) : va;
     const std::uint32_t nextB = j < stepsB ? b.vertex(j + 1) : vb;
@@ -252,19 +247,9 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
         triangles.push_back(t);
         normal += n;
         areaSum += std::sqrt(area2);
-        horizontalArea += std::fabs(n.z());
       }
     }
     across = other;
-  }
-  // Lying flat, yet facing up and down by turns: the two passes do not run alongside each other
-  // but cross over one another (pieces of an engraved curve, a pocket's tangled loops), and the
-  // strip would fold over itself into a surface that is not there. A real strip faces one way
-  // (a wall's triangles stand, and do not lie flat).
-  if (horizontalArea >= kFlat * areaSum && std::fabs(normal.z()) < kFolded * horizontalArea) {
-    triangles.resize(shape.begin);
-    shape.folded = true;
-    return shape;
   }
   shape.end = triangles.size();
   shape.normal = normal;
@@ -357,7 +342,6 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   for (std::size_t k = 0; k < count; ++k) {
     if (k >= middle) shapes[k].begin += offset, shapes[k].end += offset;
     direction = strips.orient(k, shapes[k], direction, mesh.triangles);
-    if (shapes[k].folded) ++mesh.foldedStrips;
   }
   return mesh;
 }

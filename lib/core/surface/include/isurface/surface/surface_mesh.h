@@ -19,9 +19,6 @@ struct SurfaceMesh {
   // Nearest vertex on the previous / next pass (the one the strip matched), kNoVertex if none.
   std::vector<std::uint32_t> previousPassNeighbour, nextPassNeighbour;
   std::vector<std::size_t> passFirstVertex;             // first vertex of each pass, plus the end
-  // Strips left without triangles because their two passes cross over one another instead of
-  // running alongside (an engraved curve's pieces): no surface lies between them.
-  std::size_t foldedStrips = 0;
 };
 
 struct MeshOptions {
