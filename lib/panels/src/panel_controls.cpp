@@ -240,7 +240,8 @@ bool drawGapControl(Inspector::State& s) {
     s.status = "the gap between passes must be more than 0";
     return false;
   }
-  if (mm == s.settings.gapLimit) return false;
+  // The value as shown, typed again, is not a change (2 mm shows as 0.0787 in).
+  if (std::fabs(mm - s.settings.gapLimit) < (u.inch ? 0.00005 * kMmPerInch : 0.0005)) return false;
   s.settings.gapLimit = mm;
   return true;
 }

@@ -40,6 +40,7 @@ void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRe
                          const Program* program, vis::QualityMap& map, std::shared_ptr<vis::QualityScene>& scene) {
   request.view = like.view;
   request.coarseVertices = like.coarseVertices;
+  request.gapLimit = like.gapLimit;  // the passes joined as on the map it is the difference of
   map = vis::buildQualityMap(a, program, request);
   scene = std::make_shared<vis::QualityScene>(map.data, map.style);
 }

@@ -67,7 +67,8 @@ OrientationSums orientationSums(const Trajectory& s, const std::vector<Pass>& ru
 // samples, so the axis is the same whether or not a second thread can be had.
 void mainAxis(const Trajectory& s, const std::vector<Pass>& runs, double& ux, double& uy) {
   constexpr std::size_t kSideBySideSamples = 1'000'000;
-  const std::size_t size = runs.empty() ? 0 : runs.back().end;
+  std::size_t size = 0;
+  for (const Pass& run : runs) size = std::max(size, run.end);
   // The second half begins with the step from sample middle - 1 to middle.
   const std::size_t middle = size >= kSideBySideSamples ? size / 2 : size;
   std::future<OrientationSums> second;
