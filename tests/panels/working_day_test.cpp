@@ -214,6 +214,14 @@ TEST(workingDay, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
   ASSERT_FALSE(state["map"].empty()) << ui.inspector().statusText();
   EXPECT_GT(state["map"]["vertices"].get<std::size_t>(), 100u);
 
+  // A gap too small for any surface: the map made again fails, and the one shown stays with its gap.
+  typeInto(ui, "surface.gap", "0.01");
+  tap(ui, ImGuiKey_Enter);
+  waitForJobs(ui);
+  EXPECT_NE(ui.inspector().statusText().find("too far apart"), std::string::npos) << ui.inspector().statusText();
+  EXPECT_DOUBLE_EQ(described(ui)["colour"]["gap_limit_mm"].get<double>(), 5.0);
+  EXPECT_FALSE(described(ui)["map"].empty());
+
   // Nothing is made of a gap of 0: it is refused, and the map stays.
   typeInto(ui, "surface.gap", "0");
   tap(ui, ImGuiKey_Enter);

@@ -139,6 +139,8 @@ void Inspector::State::takeJobResult() {
   if (result && !result->programAlone.empty()) queuedRuns.push_front(RunFiles{result->programAlone, ""});
   if (!job.error().empty()) {
     status = "error: " + job.error();
+    // A map made again with a new gap between passes failed: the gap is the map's that stays.
+    if (const Document* doc = activeDocument(); doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
     if (result && !result->programAlone.empty()) joinNotice = job.error(), noticeProgram = result->programAlone;
     return;
   }
