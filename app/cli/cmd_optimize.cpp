@@ -33,7 +33,7 @@ struct OptimizeCliOptions {
   MachineOption machine;
   Objective objective = Objective::Balanced;
   bool automatic = false, all = false;
-  double chordTolerance = 0.002;
+  double chordTolerance = kDefaultChordTolerance;
 };
 
 nlohmann::json figuresJson(const QualityFigures& f) {

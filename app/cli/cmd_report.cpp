@@ -28,7 +28,7 @@ namespace {
 
 struct ReportCliOptions {
   std::string program, dump, output, json, batch, compare, optimise;
-  double chordTolerance = 0.002;
+  double chordTolerance = kDefaultChordTolerance;
   std::vector<std::string> failOn;
   MachineOption machine;
   int regions = 5;

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "isurface/base/progress.h"
+#include "isurface/optimise/region_optimizer.h"
 #include "isurface/workflow/run_inputs.h"
 
 namespace isurface::report {
@@ -26,7 +27,7 @@ struct ReportOptions {
   // speed difference and the figures of both.
   std::optional<OpenedRun> compared;
   ReportOptimisation optimisation = ReportOptimisation::None;
-  double chordTolerance = 0.002;  // mm, of the re-fitted moves when optimising
+  double chordTolerance = kDefaultChordTolerance;  // mm, of the re-fitted moves when optimising
 };
 
 constexpr int kMostRegions = 50;

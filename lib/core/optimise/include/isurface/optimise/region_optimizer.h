@@ -24,9 +24,13 @@ enum class CrossPassRule {
   Envelope,  // an interval runs at the slowest feed of the passes around it
 };
 
+// mm: how far a chord of the new G1 moves may stray from the fitted spline unless the user
+// says otherwise (`--tolerance`).
+constexpr double kDefaultChordTolerance = 0.005;
+
 struct OptimizeOptions {
   IntervalThresholds thresholds;
-  double chordTolerance = 0.002;  // mm, resampling of the spline into G1 moves
+  double chordTolerance = kDefaultChordTolerance;  // mm, resampling of the spline into G1 moves
   double maximumDeviation = 0.008; // mm, a fit that strays further from the old path is not used
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
