@@ -20,6 +20,7 @@ namespace {
 struct AnalyzeOptions {
   std::string gcode, biip, output, png;
   MachineOption machine;
+  GapLimitOption gapLimit;
   bool force = false;
   QualityThresholds thresholds;
   std::size_t top = 20;
@@ -35,12 +36,14 @@ int runAnalyze(const AnalyzeOptions& o) {
   requirePositive(o.thresholds.speedInconsistency, "--speed-threshold");
   requirePositive(o.thresholds.accelInconsistency, "--accel-threshold");
   requirePositive(o.thresholds.jerk, "--jerk-threshold");
+  const double gapLimit = o.gapLimit.checked();
   const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, o.machine, o.force);
   const Program& program = *run.program;
   const Trajectory& samples = *run.samples;
   ProgressLine progress("analysing");
   vis::QualityMapRequest request;
   request.quantity = Quantity::SpeedInconsistency;
+  request.gapLimit = gapLimit;
   request.fixedRange = ValueRange{0, 2 * o.thresholds.speedInconsistency};
   request.caption = std::filesystem::path(o.gcode).filename().string() + ": predicted defects";
   vis::QualityMap map = vis::buildQualityMap(samples, &program, request);
@@ -125,6 +128,7 @@ Command analyzeCommand() {
       sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str();
       sub.add_option("--top", o->top, "regions listed at most")->capture_default_str();
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
+      o->gapLimit.addTo(sub);
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       return [o] { return runAnalyze(*o); };
     }};

@@ -23,7 +23,7 @@ namespace {
 
 struct CompareOptions {
   std::string runA, runB, gcode, output, png, quantity = "speed", range, view = "iso", colorMap, pattern = "auto";
-  double gapLimit = MeshOptions{}.gapLimit;
+  GapLimitOption gapLimit;
   RunComparisonOptions comparison;
   std::size_t top = 10;
   bool linuxcncLines = false;
@@ -129,7 +129,7 @@ int runCompare(const CompareOptions& o) {
   if (!quantity) throw InputError(Diagnostic{"--quantity", 0, 0, "unknown quantity '" + o.quantity + "' (speed, position, time)"});
   const auto view = vis::parseView(o.view);
   if (!view) throw InputError(Diagnostic{"--view", 0, 0, "unknown view '" + o.view + "' (iso, top, front, left)"});
-  if (!(o.gapLimit > 0)) throw InputError(Diagnostic{"--gap-limit", 0, 0, "the gap limit must be greater than 0 mm"});
+  const double gapLimit = o.gapLimit.checked();
   if (o.comparison.maxRangeLines == 0) throw InputError(Diagnostic{"--range-lines", 0, 0, "must be at least 1"});
   std::optional<ValueRange> fixedRange;
   if (!o.range.empty()) fixedRange = parseRange(o.range);
@@ -149,7 +149,7 @@ int runCompare(const CompareOptions& o) {
   if (!o.png.empty()) {
     vis::QualityMapRequest request = vis::differenceMapRequest(comparison, *quantity, fixedRange, o.colorMap);
     request.view = *view;
-    request.gapLimit = o.gapLimit;
+    request.gapLimit = gapLimit;
     request.pattern = parsePattern(o.pattern);
     request.caption = std::filesystem::path(o.runB).filename().string() + " against " +
                       std::filesystem::path(o.runA).filename().string();
@@ -184,7 +184,7 @@ Command compareCommand() {
       sub.add_option("--range", o->range, "colour range LO:HI (default: symmetric 99th percentile; position 0 to it)");
       sub.add_option("--view", o->view, "iso, top, front or left")->capture_default_str();
       sub.add_option("--cmap", o->colorMap, "colour map (default coolwarm for speed and time, viridis for position)");
-      sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
+      o->gapLimit.addTo(sub);
       sub.add_option("--pattern", o->pattern, "how the map's passes are found: auto, direction-parallel, "
                                               "contour-parallel, no-boundary")->capture_default_str();
       sub.add_option("--top", o->top, "worst ranges listed")->capture_default_str();

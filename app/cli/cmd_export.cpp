@@ -18,12 +18,14 @@ namespace {
 
 struct ExportOptions {
   std::string biip, vtp, gcode, surface = "commanded";
+  GapLimitOption gapLimit;
   bool force = false;
 };
 
 int runExport(const ExportOptions& o) {
   if (o.surface != "commanded" && o.surface != "feedback")
     throw InputError(Diagnostic{"", 0, 0, "unknown --surface '" + o.surface + "' (commanded, feedback)"});
+  const double gapLimit = o.gapLimit.checked();
   const OpenedRun run = openRunOnTerminal({o.gcode, o.biip}, MachineOption{}, o.force);
   const Program* program = run.program.get();
   const Trajectory& samples = *run.samples;
@@ -36,8 +38,9 @@ int runExport(const ExportOptions& o) {
   const PassSet passes = splitPasses(samples, passOptions);
   MeshOptions meshOptions;
   meshOptions.feedback = feedback;
+  meshOptions.gapLimit = gapLimit;
   const SurfaceMesh mesh = buildSurfaceMesh(samples, passes, meshOptions);
-  if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, "no surface: no cutting passes close enough to join"});
+  if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, passesTooFarApart(gapLimit)});
   auto poly = vis::surfacePolyData(meshPositions(samples, mesh, feedback), mesh);
   std::size_t arrays = 0;
   const auto& infos = quantityInfos();
@@ -76,6 +79,7 @@ Command exportCommand() {
       sub.add_option("--gcode", o->gcode, "the program of the dump (tells rapids from cutting moves)");
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
+      o->gapLimit.addTo(sub);
       return [o] { return runExport(*o); };
     }};
 }

@@ -31,6 +31,7 @@ namespace {
 struct OptimizeCliOptions {
   std::string input, output, lines, box, report, pngBefore, pngAfter, pngDifference;
   MachineOption machine;
+  GapLimitOption gapLimit;
   Objective objective = Objective::Balanced;
   bool automatic = false, all = false;
   double chordTolerance = kDefaultChordTolerance;
@@ -58,6 +59,7 @@ void renderTop(const SurfaceRun& run, const Program& program, vis::QualityMapReq
                const std::string& path) {
   request.view = vis::ViewDirection::Top;
   request.caption = caption;
+  request.gapLimit = run.gapLimit;
   const vis::QualityMap map = vis::buildQualityMap(*run.samples, &program, request);
   vis::QualityScene scene(map.data, map.style);
   vis::renderSceneToPng(scene, 1200, 800, path);
@@ -115,6 +117,7 @@ int runOptimize(const OptimizeCliOptions& o) {
   if (!(o.chordTolerance > 0)) throw InputError(Diagnostic{"", 0, 0, "--tolerance must be greater than 0"});
   if (!(o.chordTolerance >= 1e-6 && o.chordTolerance <= 10))
     throw InputError(Diagnostic{"", 0, 0, "--tolerance must be from 1e-06 to 10 mm"});
+  const double gapLimit = o.gapLimit.checked();
   const OpenedRun opened = openRunOnTerminal({o.input, ""}, o.machine, false);
   const Machine& machine = opened.machine;
   const Program& program = *opened.program;
@@ -122,7 +125,7 @@ int runOptimize(const OptimizeCliOptions& o) {
   std::stringstream text;
   text << in.rdbuf();
 
-  const SurfaceRun before = surfaceRun(opened.samples, &program);
+  const SurfaceRun before = surfaceRun(opened.samples, &program, gapLimit);
   const RegionRequest request = regionOf(o, before);
   ProgressLine progress("optimising");
   const RegionOptimisation r =
@@ -188,6 +191,7 @@ Command optimizeCommand() {
                      "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
       o->machine.addTo(sub, "machine description (JSON)");
+      o->gapLimit.addTo(sub);
       sub.add_option("--objective", o->objective,
                      "balanced: no figure worse, time not longer (first such candidate); time: the fastest such "
                      "candidate; quality: the candidate that improves the region most, up to 5 % longer")

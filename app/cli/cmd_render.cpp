@@ -29,7 +29,7 @@ struct RenderOptions {
   long highlightLine = -1;
   bool noToolpath = false, noPassWires = false, colorToolpath = false, force = false;
   int isoBands = 12;
-  double gapLimit = MeshOptions{}.gapLimit;  // mm
+  GapLimitOption gapLimit;
 };
 
 std::pair<int, int> parseSize(const std::string& text) {
@@ -79,8 +79,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   request.passWires = !o.noPassWires;
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
-  if (!(o.gapLimit > 0)) throw InputError(Diagnostic{"", 0, 0, "--gap-limit must be greater than 0 mm"});
-  request.gapLimit = o.gapLimit;
+  request.gapLimit = o.gapLimit.checked();
   request.caption = std::filesystem::path(o.biip.empty() ? o.gcode : o.biip).filename().string();
   return request;
 }
@@ -140,7 +139,7 @@ Command renderCommand() {
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
-      sub.add_option("--gap-limit", o->gapLimit, "mm; passes further apart are not joined into the surface")->capture_default_str();
+      o->gapLimit.addTo(sub);
       return [o] { return runRender(*o); };
     }};
 }

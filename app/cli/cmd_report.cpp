@@ -31,6 +31,7 @@ struct ReportCliOptions {
   double chordTolerance = kDefaultChordTolerance;
   std::vector<std::string> failOn;
   MachineOption machine;
+  GapLimitOption gapLimit;
   int regions = 5;
   bool force = false;
 };
@@ -93,6 +94,7 @@ nlohmann::json reportOne(const ReportCliOptions& o, const std::string& program, 
                          : o.optimise == "all" ? report::ReportOptimisation::AllPasses
                                                : report::ReportOptimisation::None;
   options.chordTolerance = o.chordTolerance;
+  options.gapLimit = o.gapLimit.checked();
   if (!o.compare.empty())
     options.compared = openRunOnTerminal({dumpOnly ? "" : program, o.compare}, o.machine, o.force, channels);
   ProgressLine progress("reporting on " + std::filesystem::path(program).filename().string());
@@ -174,6 +176,7 @@ int runReport(const ReportCliOptions& o) {
     throw InputError(Diagnostic{"", 0, 0, fmt::format("--regions must be 0 to {}", report::kMostRegions)});
   if (!(o.chordTolerance >= 1e-6 && o.chordTolerance <= 10))
     throw InputError(Diagnostic{"", 0, 0, "--tolerance must be from 1e-06 to 10 mm"});
+  o.gapLimit.checked();
   const std::vector<Threshold> thresholds = parseThresholds(o.failOn);
   if (!o.batch.empty()) {
     if (!o.program.empty() || !o.dump.empty() || !o.json.empty() || !o.compare.empty())
@@ -213,6 +216,7 @@ Command reportCommand() {
           ->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
+      o->gapLimit.addTo(sub);
       return [o] { return runReport(*o); };
     }};
 }

@@ -37,6 +37,15 @@ void MachineOption::addTo(CLI::App& sub, const std::string& help) {
       ->check(CLI::PositiveNumber);
 }
 
+void GapLimitOption::addTo(CLI::App& sub) {
+  sub.add_option("--gap-limit", mm, "mm; passes further apart are not joined into the surface")->capture_default_str();
+}
+
+double GapLimitOption::checked() const {
+  if (!(mm > 0)) throw InputError(Diagnostic{"", 0, 0, "the gap limit (--gap-limit) must be greater than 0 mm"});
+  return mm;
+}
+
 Machine loadMachineOption(const MachineOption& option) {
   Machine machine = loadMachineOption(option.description);
   if (!option.toolTable.empty()) machine.toolDiameters = readToolTable(option.toolTable, machine.toolTableInch);

@@ -9,6 +9,7 @@
 #include "isurface/base/diagnostic.h"
 #include "isurface/machine/machine.h"
 #include "isurface/gcode/program.h"
+#include "isurface/surface/surface_mesh.h"
 
 namespace isurface::cli {
 
@@ -34,6 +35,15 @@ struct MachineOption {
 Machine loadMachineOption(const std::string& path);
 // With the tools of --tool-table, when given.
 Machine loadMachineOption(const MachineOption& option);
+
+// --gap-limit, as every command that makes a surface takes it: passes further apart than this
+// (mm) are not joined by its triangles.
+struct GapLimitOption {
+  double mm = MeshOptions{}.gapLimit;
+  void addTo(CLI::App& sub);
+  // mm; InputError naming the option unless it is greater than 0.
+  double checked() const;
+};
 
 // Stops a command on a bad option value, naming the file it was given for.
 [[noreturn]] inline void badOption(const std::string& file, const std::string& message) {

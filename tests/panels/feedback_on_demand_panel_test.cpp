@@ -13,18 +13,11 @@
 #include "workflow_fixtures.h"
 
 using namespace isurface;
-using test::clickControl, test::settle, test::tapLetter, test::typeInto;
+using test::clickControl, test::settle, test::tapLetter, test::typeInto, test::described, test::waitForJobs;
 
 namespace {
 
 constexpr int kWidth = 1280, kHeight = 800;
-
-nlohmann::json described(panels::HeadlessUi& ui) { return nlohmann::json::parse(ui.inspector().describe()); }
-
-void waitForJobs(panels::HeadlessUi& ui) {
-  ui.inspector().waitUntilIdle();
-  settle(ui);
-}
 
 std::unique_ptr<panels::HeadlessUi> opened(const std::vector<std::string>& files, const app_model::Settings& settings = {}) {
   auto ui = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, settings);

@@ -18,7 +18,7 @@
 #include "ui_driving.h"
 
 using namespace isurface;
-using test::click, test::clickControl, test::settle, test::tap, test::tapLetter, test::typeInto;
+using test::click, test::clickControl, test::settle, test::tap, test::tapLetter, test::typeInto, test::described, test::waitForJobs;
 
 namespace {
 
@@ -30,13 +30,6 @@ std::size_t distinctColours(const test::Image& image) {
     colours.push_back(unsigned(image.rgb[i]) << 16 | unsigned(image.rgb[i + 1]) << 8 | image.rgb[i + 2]);
   std::sort(colours.begin(), colours.end());
   return static_cast<std::size_t>(std::unique(colours.begin(), colours.end()) - colours.begin());
-}
-
-nlohmann::json described(panels::HeadlessUi& ui) { return nlohmann::json::parse(ui.inspector().describe()); }
-
-void waitForJobs(panels::HeadlessUi& ui) {
-  ui.inspector().waitUntilIdle();
-  settle(ui);
 }
 
 std::unique_ptr<panels::HeadlessUi> openedSample() {
@@ -189,46 +182,6 @@ TEST(workingDay, OptimiseWithOnlyADumpSaysWhyInTheDialog) {
   EXPECT_TRUE(state["windows"]["optimise"].get<bool>()) << "the dialog stays open to say why";
   EXPECT_NE(state["optimise_problem"].get<std::string>().find("needs the G-code program"), std::string::npos)
       << state["optimise_problem"];
-}
-
-TEST(workingDay, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
-  // A roughing-like raster, its passes 4 mm apart: more than the 2 mm a finishing map joins.
-  const std::filesystem::path program = test::scratchDir() / "wide-step-over.nc";
-  {
-    std::ofstream out(program);
-    out << "G21 G90\nG0 X0 Y0 Z1\nG1 Z0 F1200\n";
-    for (int pass = 0; pass < 8; ++pass) out << "G1 X" << (pass % 2 == 0 ? 40 : 0) << "\nG1 Y" << 4 * (pass + 1) << "\n";
-    out << "G0 Z5\nM2\n";
-  }
-  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
-  ui.inspector().open(program.string());
-  waitForJobs(ui);
-  EXPECT_TRUE(described(ui)["map"].empty());
-  EXPECT_NE(ui.inspector().statusText().find("too far apart"), std::string::npos) << ui.inspector().statusText();
-
-  typeInto(ui, "surface.gap", "5");
-  tap(ui, ImGuiKey_Enter);
-  waitForJobs(ui);
-  const nlohmann::json state = described(ui);
-  EXPECT_DOUBLE_EQ(state["colour"]["gap_limit_mm"].get<double>(), 5.0);
-  ASSERT_FALSE(state["map"].empty()) << ui.inspector().statusText();
-  EXPECT_GT(state["map"]["vertices"].get<std::size_t>(), 100u);
-
-  // A gap too small for any surface: the map made again fails, and the one shown stays with its gap.
-  typeInto(ui, "surface.gap", "0.01");
-  tap(ui, ImGuiKey_Enter);
-  waitForJobs(ui);
-  EXPECT_NE(ui.inspector().statusText().find("too far apart"), std::string::npos) << ui.inspector().statusText();
-  EXPECT_DOUBLE_EQ(described(ui)["colour"]["gap_limit_mm"].get<double>(), 5.0);
-  EXPECT_FALSE(described(ui)["map"].empty());
-
-  // Nothing is made of a gap of 0: it is refused, and the map stays.
-  typeInto(ui, "surface.gap", "0");
-  tap(ui, ImGuiKey_Enter);
-  waitForJobs(ui);
-  EXPECT_DOUBLE_EQ(described(ui)["colour"]["gap_limit_mm"].get<double>(), 5.0);
-  EXPECT_NE(ui.inspector().statusText().find("more than 0"), std::string::npos) << ui.inspector().statusText();
-  EXPECT_FALSE(described(ui)["map"].empty());
 }
 
 TEST(workingDay, ADumpCutShortWithNoSurfaceOpensAndSaysBoth) {

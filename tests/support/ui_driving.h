@@ -4,14 +4,25 @@
 #include <gtest/gtest.h>
 #include <imgui.h>
 
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "isurface/panels/headless_ui.h"
+#include "isurface/panels/inspector.h"
 
 namespace isurface::test {
 
 inline void settle(panels::HeadlessUi& ui, int frames = 3) {
   for (int i = 0; i < frames; ++i) ui.frame();
+}
+
+// The window's state as a script reads it (Inspector::describe()).
+inline nlohmann::json described(panels::HeadlessUi& ui) { return nlohmann::json::parse(ui.inspector().describe()); }
+
+// Lets the background work end and the window take its results in.
+inline void waitForJobs(panels::HeadlessUi& ui) {
+  ui.inspector().waitUntilIdle();
+  settle(ui);
 }
 
 inline void click(panels::HeadlessUi& ui, float x, float y) {

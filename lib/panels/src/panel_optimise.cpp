@@ -96,7 +96,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               // The whole surface, not the map's (thinned on large programs), as `optimize`.
               const std::shared_ptr<const Trajectory> before =
                   documentSamples ? documentSamples : std::make_shared<const Trajectory>(simulateRun(*program, machine));
-              const SurfaceRun beforeRun = surfaceRun(before, program.get());
+              const SurfaceRun beforeRun = surfaceRun(before, program.get(), request.gapLimit);
               RegionRequest region;
               region.lines = LineRange{first, last};
               region.box = measuredBox;

@@ -58,6 +58,8 @@ void Inspector::State::startReport(const std::string& path, int regions) {
   arguments.push_back(doc->programPath.empty() ? doc->dumpPath : doc->programPath);
   if (!doc->programPath.empty() && !doc->dumpPath.empty()) arguments.push_back(doc->dumpPath);
   arguments.insert(arguments.end(), {"--regions", std::to_string(regions)});
+  // Its surface joins the passes as the map shown does.
+  arguments.insert(arguments.end(), {"--gap-limit", fmt::format("{}", doc->scene ? doc->map.request.gapLimit : settings.gapLimit)});
   // A program simulated here was simulated with the document's machine, and a dump that names
   // none is judged against it: the report's machine is the same.
   const std::string machine = doc->dumpPath.empty() || !doc->machineKnown ? machineDescriptionJson(doc->machine) : "";

@@ -63,7 +63,7 @@ std::vector<Quantity> mapQuantities(const Trajectory& t) {
   return q;
 }
 
-std::size_t maps(HtmlDocument& doc, const OpenedRun& run, const ProgressCallback& progress) {
+std::size_t maps(HtmlDocument& doc, const OpenedRun& run, double gapLimit, const ProgressCallback& progress) {
   doc.raw("<div class=\"maps\">\n");
   const std::vector<Quantity> quantities = mapQuantities(*run.samples);
   for (std::size_t k = 0; k < quantities.size(); ++k) {
@@ -72,7 +72,7 @@ std::size_t maps(HtmlDocument& doc, const OpenedRun& run, const ProgressCallback
       request.quantity = quantities[k];
       request.view = view;
       const QuantityInfo& info = quantityInfo(quantities[k]);
-      doc.image(renderMapPng(run, request),
+      doc.image(renderMapPng(run, request, gapLimit),
                 fmt::format("{} ({}), {} view", info.label, info.unit, view == vis::ViewDirection::Iso ? "iso" : "top"));
     }
     if (progress) progress(double(k + 1) / double(quantities.size()));
@@ -117,7 +117,7 @@ void excerpt(HtmlDocument& doc, const app_model::TextLines& lines, const Quality
   doc.code(numbered, worstLine);
 }
 
-void oneRegion(HtmlDocument& doc, const OpenedRun& run, const QualityRegion& r, int number,
+void oneRegion(HtmlDocument& doc, const OpenedRun& run, double gapLimit, const QualityRegion& r, int number,
                const std::optional<app_model::TextLines>& lines, const std::vector<double>& speed,
                const std::vector<double>& accel) {
   const Trajectory& t = *run.samples;
@@ -136,11 +136,11 @@ void oneRegion(HtmlDocument& doc, const OpenedRun& run, const QualityRegion& r, 
   request.view = vis::ViewDirection::Top;
   request.highlightLine = worstLine;
   doc.raw("<div class=\"maps\">\n");
-  doc.image(renderMapPng(run, request, std::make_pair(r.lower, r.upper)),
+  doc.image(renderMapPng(run, request, gapLimit, std::make_pair(r.lower, r.upper)),
             fmt::format("Close-up of the region (x {:.1f} to {:.1f} mm, y {:.1f} to {:.1f} mm), speed difference "
                         "between neighbouring passes; line {} glows",
                         r.lower.x(), r.upper.x(), r.lower.y(), r.upper.y(), worstLine));
-  doc.image(renderMapPng(run, request), fmt::format("Where it lies on the whole part; line {} glows", worstLine));
+  doc.image(renderMapPng(run, request, gapLimit), fmt::format("Where it lies on the whole part; line {} glows", worstLine));
   doc.raw("</div>\n");
   if (lines && lines->count() > 0) excerpt(doc, *lines, r, worstLine);
   regionPlots(doc, t, r, speed, accel);
@@ -162,7 +162,7 @@ void regions(HtmlDocument& doc, const OpenedRun& run, const vis::QualityMap& sur
   if (shown == 0) doc.paragraph("No region of the surface passes the thresholds.");
   for (int k = 0; k < shown; ++k) {
     const QualityRegion& r = report.regions[static_cast<std::size_t>(k)];
-    oneRegion(doc, run, r, k + 1, lines, speed, accel);
+    oneRegion(doc, run, surface.request.gapLimit, r, k + 1, lines, speed, accel);
     out["regions"].push_back({{"first_line", r.firstLine}, {"last_line", r.lastLine},
                               {"worst_line", t.line[r.worstSample]}, {"severity", r.severity},
                               {"at_pass_ends", r.atPassEnds},
@@ -204,9 +204,11 @@ void axisLimits(HtmlDocument& doc, const OpenedRun& run, nlohmann::json& out) {
 // The surface the maps and regions are drawn on; nothing (and why, in the document) for a run
 // without cutting passes (a drilling cycle, a program that only computes): the summary and the
 // axis limits still say something.
-std::optional<vis::QualityMap> surfaceOf(const OpenedRun& run, std::string& why) {
+std::optional<vis::QualityMap> surfaceOf(const OpenedRun& run, double gapLimit, std::string& why) {
   try {
-    return vis::buildQualityMap(*run.samples, run.program.get(), vis::QualityMapRequest{});
+    vis::QualityMapRequest request;
+    request.gapLimit = gapLimit;
+    return vis::buildQualityMap(*run.samples, run.program.get(), request);
   } catch (const InputError& e) {
     why = e.diagnostic().message;
     return std::nullopt;
@@ -233,10 +235,10 @@ ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& opti
   doc.closeSection();
 
   std::string noSurface;
-  const std::optional<vis::QualityMap> surface = surfaceOf(run, noSurface);
+  const std::optional<vis::QualityMap> surface = surfaceOf(run, options.gapLimit, noSurface);
   doc.openSection("maps");
   doc.heading(2, "Quality maps");
-  if (surface) report.maps = maps(doc, run, progressStage(progress, 0, mapsEnd));
+  if (surface) report.maps = maps(doc, run, options.gapLimit, progressStage(progress, 0, mapsEnd));
   else doc.paragraph("No quality map: " + noSurface + ".");
   doc.closeSection();
 
@@ -258,7 +260,7 @@ ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& opti
 
   if (options.compared) {
     const double end = options.optimisation != ReportOptimisation::None ? 0.7 : 1.0;
-    comparisonSection(doc, run, *options.compared, progressStage(progress, regionsEnd, end), report.figures);
+    comparisonSection(doc, run, *options.compared, options.gapLimit, progressStage(progress, regionsEnd, end), report.figures);
   }
   if (options.optimisation != ReportOptimisation::None)
     optimisationSection(doc, run, options, progressStage(progress, options.compared ? 0.7 : regionsEnd, 1.0),

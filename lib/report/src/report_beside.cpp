@@ -36,13 +36,14 @@ std::string nameOf(const std::string& path) { return std::filesystem::path(path)
 
 }  // namespace
 
-void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun& other, const ProgressCallback& progress,
+void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun& other, double gapLimit,
+                       const ProgressCallback& progress,
                        nlohmann::json& out) {
   const std::string thisName = nameOf(run.files.dump.empty() ? run.files.program : run.files.dump);
   const std::string otherName = nameOf(other.files.dump.empty() ? other.files.program : other.files.dump);
   if (!other.samples) throw InputError(Diagnostic{other.files.dump, 0, 0, "the run compared makes no motion"});
-  const SurfaceRun a = surfaceRun(run.samples, run.program.get());
-  const SurfaceRun b = surfaceRun(other.samples, other.program ? other.program.get() : run.program.get());
+  const SurfaceRun a = surfaceRun(run.samples, run.program.get(), gapLimit);
+  const SurfaceRun b = surfaceRun(other.samples, other.program ? other.program.get() : run.program.get(), gapLimit);
   if (!a.mesh || !b.mesh)
     throw InputError(Diagnostic{a.mesh ? other.files.dump : run.files.program, 0, 0,
                                 "no cutting passes found to build a surface on: the runs cannot be compared"});
@@ -50,16 +51,16 @@ void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun&
   doc.heading(2, fmt::format("This run beside {}", otherName));
   const ValueRange range = sharedSpeedRange(a);
   doc.raw("<div class=\"maps\">\n");
-  doc.image(renderMapPng(run, speedTop(range, thisName)), fmt::format("Path speed, {} (top view)", thisName));
+  doc.image(renderMapPng(run, speedTop(range, thisName), gapLimit), fmt::format("Path speed, {} (top view)", thisName));
   if (progress) progress(0.3);
-  doc.image(renderMapPng(other, speedTop(range, otherName)),
+  doc.image(renderMapPng(other, speedTop(range, otherName), gapLimit),
             fmt::format("Path speed, {} (top view, the same colour range)", otherName));
   if (progress) progress(0.6);
   const RunComparison comparison = compareRuns(*run.samples, *other.samples);
   vis::QualityMapRequest difference = vis::differenceMapRequest(comparison, ComparisonQuantity::Speed);
   difference.view = vis::ViewDirection::Top;
   difference.caption = otherName + " against " + thisName;
-  doc.image(renderMapPng(run, difference),
+  doc.image(renderMapPng(run, difference, gapLimit),
             fmt::format("Speed of {} minus speed of {} at the same place on the part (mm/min)", otherName, thisName));
   doc.raw("</div>\n");
   const QualityFigures figuresA = measureQualityFigures(*a.samples, *a.mesh);
@@ -77,7 +78,7 @@ void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOp
   if (!run.program || run.files.program.empty())
     throw InputError(Diagnostic{run.files.dump, 0, 0, "a re-optimisation needs the program, not a dump alone"});
   const std::string& path = run.files.program;
-  const SurfaceRun before = surfaceRun(run.samples, run.program.get());
+  const SurfaceRun before = surfaceRun(run.samples, run.program.get(), options.gapLimit);
   const bool all = options.optimisation == ReportOptimisation::AllPasses;
   RegionOptimisation r;
   try {
@@ -110,13 +111,13 @@ void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOp
   const ValueRange range = sharedSpeedRange(before);
   const std::string name = nameOf(path);
   doc.raw("<div class=\"maps\">\n");
-  doc.image(renderMapPng(run, speedTop(range, name + " before")), "Path speed before (top view)");
-  doc.image(renderMapPng(after, speedTop(range, name + " after")), "Path speed after (top view, the same colour range)");
+  doc.image(renderMapPng(run, speedTop(range, name + " before"), options.gapLimit), "Path speed before (top view)");
+  doc.image(renderMapPng(after, speedTop(range, name + " after"), options.gapLimit), "Path speed after (top view, the same colour range)");
   const RunComparison difference = compareOptimizedRuns(*before.samples, *r.after.samples, r.result);
   vis::QualityMapRequest differenceMap = vis::regionDifferenceMapRequest(difference, *before.samples, r.lines);
   differenceMap.view = vis::ViewDirection::Top;
   differenceMap.caption = name + " after against before";
-  doc.image(renderMapPng(run, differenceMap), "Speed after minus before on the surface before (mm/min)");
+  doc.image(renderMapPng(run, differenceMap, options.gapLimit), "Speed after minus before on the surface before (mm/min)");
   doc.raw("</div>\n");
   doc.heading(3, "In the region");
   figuresTable(doc, "before", "after", r.timeBefore, r.timeAfter, r.regionBefore, r.regionAfter);

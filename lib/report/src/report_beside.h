@@ -9,7 +9,8 @@
 
 namespace isurface::report {
 
-void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun& other, const ProgressCallback& progress,
+void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun& other, double gapLimit,
+                       const ProgressCallback& progress,
                        nlohmann::json& out);
 
 void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOptions& options,

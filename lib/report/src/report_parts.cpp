@@ -11,9 +11,10 @@
 
 namespace isurface::report {
 
-std::string renderMapPng(const OpenedRun& run, vis::QualityMapRequest request,
+std::string renderMapPng(const OpenedRun& run, vis::QualityMapRequest request, double gapLimit,
                          const std::optional<std::pair<Vec3, Vec3>>& box) {
   request.inch = run.program && run.program->inch;
+  request.gapLimit = gapLimit;
   if (request.caption.empty())
     request.caption =
         std::filesystem::path(run.files.program.empty() ? run.files.dump : run.files.program).filename().string();

@@ -14,8 +14,9 @@ namespace isurface::report {
 
 constexpr int kMapWidth = 720, kMapHeight = 450;
 
-// A map of the run as a PNG; `box` (mm) frames a close-up of the surface in the view.
-std::string renderMapPng(const OpenedRun& run, vis::QualityMapRequest request,
+// A map of the run as a PNG, its passes joined up to `gapLimit` mm apart; `box` (mm) frames a
+// close-up of the surface in the view.
+std::string renderMapPng(const OpenedRun& run, vis::QualityMapRequest request, double gapLimit,
                          const std::optional<std::pair<Vec3, Vec3>>& box = std::nullopt);
 
 // "m:ss.mmm (s s)", as simulate prints a machining time.

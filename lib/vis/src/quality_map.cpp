@@ -143,7 +143,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,
-                                fmt::format("the passes are too far apart to make a surface (gap limit {:g} mm: raise it to join passes further apart, --gap-limit or the window's Colour panel)", request.gapLimit)});
+                                passesTooFarApart(request.gapLimit)});
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();

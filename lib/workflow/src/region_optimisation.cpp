@@ -50,17 +50,34 @@ std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) {
 
 }  // namespace
 
-SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program) {
+SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program, double gapLimit) {
   SurfaceRun run;
   PassOptions options;
   options.program = program;
   run.passes = splitPasses(*samples, options);
-  run.mesh = std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*samples, run.passes));
+  MeshOptions mesh;
+  mesh.gapLimit = gapLimit;
+  run.mesh = std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*samples, run.passes, mesh));
+  run.gapLimit = gapLimit;
   run.samples = std::move(samples);
   return run;
 }
 
+namespace {
+
+// The figures are measured between neighbouring passes on the surface: a run whose passes make
+// no triangle would be judged on nothing.
+void requireSurface(const SurfaceRun& run, const std::string& source) {
+  if (!run.mesh->triangles.empty()) return;
+  throw InputError(Diagnostic{source, 0, 0,
+                              run.passes.passes.size() < 2 ? std::string("a single cutting pass makes no surface to optimise")
+                                                           : passesTooFarApart(run.gapLimit)});
+}
+
+}  // namespace
+
 ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source) {
+  requireSurface(run, source);
   const QualityReport report = findQualityRegions(*run.samples, *run.mesh);
   const QualityRegion* worst = worstRegionInsidePasses(report);
   if (!worst)
@@ -97,6 +114,7 @@ ChosenRegion surfaceInside(const SurfaceRun& run, const Vec3& lower, const Vec3&
 }  // namespace
 
 ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& upper, const std::string& source) {
+  requireSurface(run, source);
   ChosenRegion region = surfaceInside(run, lower.cwiseMin(upper), lower.cwiseMax(upper));
   if (region.vertices == 0)
     throw InputError(Diagnostic{source, 0, 0,
@@ -109,6 +127,7 @@ ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& u
 }
 
 ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source) {
+  requireSurface(run, source);
   const Vec3 everywhere = Vec3::Constant(std::numeric_limits<double>::infinity());
   const ChosenRegion region = surfaceInside(run, -everywhere, everywhere);
   if (region.vertices == 0) throw InputError(Diagnostic{source, 0, 0, "no cutting passes to optimise"});
@@ -164,7 +183,7 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
   r.program = std::make_shared<const Program>(std::move(reread.program));
   r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.1, 0.9))),
-                       r.program.get());
+                       r.program.get(), before.run.gapLimit);
   // The figures look where the defect was found (a box), else where the path was re-fitted; a
   // re-fitted part that holds no surface sample (one pass, a flat box) gives way to the region.
   std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
@@ -324,6 +343,7 @@ class ClosedLoop {
 
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
                                   const Machine& machine, const RegionRequest& request, const ProgressCallback& progress) {
+  requireSurface(before, program.source);
   // The closed loop. The paper's plan first (each pass its own interval feeds); when the
   // simulation finds it worse, the feeds planned across passes (the median of the passes
   // around, then their slowest). Then every bend planned to the normal acceleration at which

@@ -7,6 +7,8 @@
 #include <system_error>
 #include <limits>
 
+#include <fmt/format.h>
+
 #include "isurface/base/diagnostic.h"
 
 namespace isurface {
@@ -295,6 +297,12 @@ int StripBuilder::orient(std::size_t k, const StripShape& strip, int previousDir
 }
 
 }  // namespace
+
+std::string passesTooFarApart(double gapLimit) {
+  return fmt::format("the passes are too far apart to make a surface (gap limit {:g} mm: raise it to join passes "
+                     "further apart, --gap-limit or the window's Colour panel)",
+                     gapLimit);
+}
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options) {
   const PositionSource p = positionSource(samples, options.feedback);

@@ -28,6 +28,7 @@ struct ReportOptions {
   std::optional<OpenedRun> compared;
   ReportOptimisation optimisation = ReportOptimisation::None;
   double chordTolerance = kDefaultChordTolerance;  // mm, of the re-fitted moves when optimising
+  double gapLimit = MeshOptions{}.gapLimit;         // mm: passes further apart make no surface
 };
 
 constexpr int kMostRegions = 50;

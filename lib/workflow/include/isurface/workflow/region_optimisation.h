@@ -20,10 +20,13 @@ struct SurfaceRun {
   std::shared_ptr<const Trajectory> samples;
   PassSet passes;
   std::shared_ptr<const SurfaceMesh> mesh;
+  double gapLimit = MeshOptions{}.gapLimit;  // mm: passes further apart were not joined
 };
 
-// Splits a program's samples into passes and builds the surface (the program tells rapids apart).
-SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program);
+// Splits a program's samples into passes and builds the surface (the program tells rapids
+// apart), joining passes up to `gapLimit` mm apart.
+SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program,
+                      double gapLimit = MeshOptions{}.gapLimit);
 
 // The worst region the quality prediction finds inside the passes, widened to whole passes (as
 // `optimize --auto` takes it), with the box of the defect; InputError when there is none.

@@ -4,6 +4,7 @@
 #include <array>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "isurface/surface/passes.h"
@@ -31,6 +32,9 @@ struct MeshOptions {
 };
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options = {});
+
+// Why a mesh of passes made no triangle at `gapLimit` mm, and what the user can do about it.
+std::string passesTooFarApart(double gapLimit);
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
 std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);

@@ -1,0 +1,95 @@
+// Passes further apart than the default gap of 2 mm (a finishing raster with a 3 mm step-over):
+// every command that makes a surface takes --gap-limit, and none judges or reports on a
+// surface that has no triangles.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include <fmt/format.h>
+
+#include "test_support.h"
+
+using namespace isurface::test;
+
+namespace {
+
+std::string scratch(const std::string& name) { return (scratchDir() / name).string(); }
+
+// A zig-zag raster over a bump, 12 passes 3 mm apart of 0.4 mm moves at F3000.
+std::string wideRaster() {
+  const std::string path = scratch("wide-raster.nc");
+  std::ofstream out(path);
+  out << "G21 G90 G17 G94\nG0 Z5\nG0 X0 Y0\nG1 Z0 F3000\n";
+  for (int pass = 0; pass < 12; ++pass)
+    for (int i = 0; i <= 100; ++i) {
+      const double x = 0.4 * (pass % 2 == 0 ? i : 100 - i);
+      out << fmt::format("G1 X{:.4f} Y{:.4f} Z{:.4f}\n", x, 3.0 * pass, 3.0 * std::exp(-std::pow((x - 20) / 6, 2)));
+    }
+  out << "G0 Z5\nM30\n";
+  return path;
+}
+
+void expectRefusedForItsGap(const CommandResult& r, const std::string& output) {
+  EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
+  EXPECT_NE(r.err.find("too far apart to make a surface (gap limit 2 mm"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("--gap-limit"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(output)) << output;
+}
+
+}  // namespace
+
+TEST(gapLimitCli, OptimizeRefusesPassesTooFarApartInsteadOfJudgingNothing) {
+  const std::string program = wideRaster(), out = scratch("wide-refused.nc");
+  for (const char* mode : {"--all", "--auto", "--lines 6-500"})
+    expectRefusedForItsGap(runCli("optimize " + program + " " + mode + " -o " + out), out);
+}
+
+TEST(gapLimitCli, OptimizeWithTheGapRaisedMeasuresBetweenThePasses) {
+  const std::string program = wideRaster(), out = scratch("wide-optimised.nc"), json = scratch("wide-optimised.json");
+  const CommandResult r = runCli("optimize " + program + " --all --gap-limit 4 -o " + out + " --report " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(readFile(json));
+  for (const char* side : {"before", "after"}) {
+    const nlohmann::json& whole = report["whole_program"][side];
+    EXPECT_GT(whole["samples"].get<double>(), 10000) << side;
+    EXPECT_GT(whole["speed_inconsistency_p99_mm_min"].get<double>(), 1.0) << side;
+    EXPECT_GT(whole["predicted_deviation_p99_um"].get<double>(), 0.1) << side;
+  }
+}
+
+TEST(gapLimitCli, AnalyzeFindsRegionsOnceTheGapIsRaised) {
+  const std::string program = wideRaster(), json = scratch("wide-analysis.json");
+  expectRefusedForItsGap(runCli("analyze " + program + " -o " + json), json);
+  const CommandResult r = runCli("analyze " + program + " --gap-limit 4 -o " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json report = nlohmann::json::parse(readFile(json));
+  EXPECT_EQ(report["passes"].get<int>(), 12);
+  EXPECT_GT(report["region_count"].get<int>(), 0);
+  EXPECT_EQ(runCli("analyze " + program + " --gap-limit 0 -o " + json).exitCode, 2);
+}
+
+TEST(gapLimitCli, AReportDrawsItsMapsAndRegionsOnceTheGapIsRaised) {
+  const std::string program = wideRaster(), html = scratch("wide-report.html"), json = scratch("wide-report.json");
+  CommandResult r = runCli("report " + program + " -o " + html + " --json " + json + " --regions 2");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("0 maps"), std::string::npos) << r.out;
+  EXPECT_NE(readFile(html).find("too far apart"), std::string::npos);
+  r = runCli("report " + program + " -o " + html + " --json " + json + " --regions 2 --gap-limit 3.5 --optimize auto");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_EQ(r.out.find(" 0 maps"), std::string::npos) << r.out;
+  const nlohmann::json figures = nlohmann::json::parse(readFile(json));
+  EXPECT_EQ(figures["regions"].size(), 2u);
+  EXPECT_FALSE(figures["optimisation"].contains("not_done")) << figures["optimisation"].dump();
+}
+
+TEST(gapLimitCli, ExportJoinsThePassesOnceTheGapIsRaised) {
+  const std::string program = wideRaster(), dump = scratch("wide-raster.biip"), vtp = scratch("wide-raster.vtp");
+  ASSERT_EQ(runCli("simulate " + program + " -o " + dump).exitCode, 0);
+  expectRefusedForItsGap(runCli("export " + dump + " --gcode " + program + " --vtp " + vtp), vtp);
+  const CommandResult r = runCli("export " + dump + " --gcode " + program + " --vtp " + vtp + " --gap-limit 4");
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.out.find("triangles"), std::string::npos);
+  EXPECT_GT(std::filesystem::file_size(vtp), 10000u);
+}
