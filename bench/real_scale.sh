@@ -135,7 +135,8 @@ wait_for_state() {
 finish_window() {
   shown=""
   wait_for_state 's["map"] and not s["busy"]' && shown=$(python3 -c "import time; print(f'{time.time() - $1:.1f}')")
-  hwm=$(awk '/VmHWM/ { printf "%.0f", $2 / 1024 }' "/proc/$window/status")
+  hwm=$(awk '/VmHWM/ { printf "%.0f", $2 / 1024 }' "/proc/$window/status" 2>/dev/null) ||
+    { echo "real_scale: the window ended early:" >&2; tail -n 5 "$work/window.log" >&2; exit 1; }
   kill "$window" 2>/dev/null || true
   wait "$window" 2>/dev/null || true
 }
@@ -155,7 +156,12 @@ window_gap_run() {
   local gap=$1 began box
   shift
   start_window "$@"
-  wait_for_state 's["documents"] and not s["busy"] and "surface.gap" in s["controls"]' || true
+  if ! wait_for_state 's["documents"] and not s["busy"] and "surface.gap" in s["controls"]'; then
+    echo "real_scale: the window did not open $* in 120 s:" >&2
+    tail -n 5 "$work/window.log" >&2
+    kill "$window" 2>/dev/null || true
+    exit 1
+  fi
   box=$(python3 -c 'import json,sys; x0,y0,x1,y1=json.load(open(sys.argv[1]))["controls"]["surface.gap"]; print(int((x0+x1)/2), int((y0+y1)/2))' "$state")
   DISPLAY=":$display" xdotool mousemove $box click 1 sleep 0.3 key ctrl+a type "$gap"
   DISPLAY=":$display" xdotool key Return

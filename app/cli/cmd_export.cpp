@@ -40,7 +40,7 @@ int runExport(const ExportOptions& o) {
   meshOptions.feedback = feedback;
   meshOptions.gapLimit = gapLimit;
   const SurfaceMesh mesh = buildSurfaceMesh(samples, passes, meshOptions);
-  if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, passesTooFarApart(gapLimit)});
+  if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, whyNoTriangles(passes, gapLimit)});
   auto poly = vis::surfacePolyData(meshPositions(samples, mesh, feedback), mesh);
   std::size_t arrays = 0;
   const auto& infos = quantityInfos();

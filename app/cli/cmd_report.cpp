@@ -77,7 +77,9 @@ std::vector<Threshold> parseThresholds(const std::vector<std::string>& texts) {
 std::vector<std::string> crossed(const nlohmann::json& report, const std::vector<Threshold>& thresholds) {
   std::vector<std::string> out;
   for (const Threshold& t : thresholds)
-    if (const double v = figureOf(report, t.name); v > t.limit) out.push_back(fmt::format("{} {:.4g} > {:g}", t.name, v, t.limit));
+    if (t.name != "machining_time" && report.contains("unmeasured"))
+      out.push_back(fmt::format("{} not measured: {}", t.name, report["unmeasured"].get<std::string>()));
+    else if (const double v = figureOf(report, t.name); v > t.limit) out.push_back(fmt::format("{} {:.4g} > {:g}", t.name, v, t.limit));
   return out;
 }
 

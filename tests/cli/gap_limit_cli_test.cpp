@@ -31,6 +31,21 @@ std::string wideRaster() {
   return path;
 }
 
+// Passes 1 mm apart over Y 0-5, then 5 mm apart over Y 10-25: joined in the first part only.
+std::string partlyJoinedRaster() {
+  const std::string path = scratch("partly-joined.nc");
+  std::ofstream out(path);
+  out << "G21 G90 G17 G94\nG0 Z5\nG0 X0 Y0\nG1 Z0 F3000\n";
+  const double ys[] = {0, 1, 2, 3, 4, 5, 10, 15, 20, 25};
+  for (int pass = 0; pass < 10; ++pass)
+    for (int i = 0; i <= 100; ++i) {
+      const double x = 0.4 * (pass % 2 == 0 ? i : 100 - i);
+      out << fmt::format("G1 X{:.4f} Y{:.4f} Z{:.4f}\n", x, ys[pass], 3.0 * std::exp(-std::pow((x - 20) / 6, 2)));
+    }
+  out << "G0 Z5\nM30\n";
+  return path;
+}
+
 void expectRefusedForItsGap(const CommandResult& r, const std::string& output) {
   EXPECT_EQ(r.exitCode, 2) << r.out << r.err;
   EXPECT_NE(r.err.find("too far apart to make a surface (gap limit 2 mm"), std::string::npos) << r.err;
@@ -92,4 +107,41 @@ TEST(gapLimitCli, ExportJoinsThePassesOnceTheGapIsRaised) {
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.out.find("triangles"), std::string::npos);
   EXPECT_GT(std::filesystem::file_size(vtp), 10000u);
+}
+
+TEST(gapLimitCli, ARegionWhosePassesAreNotJoinedIsRefusedThoughOthersAre) {
+  const std::string program = partlyJoinedRaster(), out = scratch("partly-joined-optimised.nc");
+  for (const char* region : {"--box 5,14,30,26", "--lines 611-1014"}) {
+    const CommandResult r = runCli("optimize " + program + " " + region + " -o " + out);
+    EXPECT_EQ(r.exitCode, 2) << region << ": " << r.out << r.err;
+    EXPECT_NE(r.err.find("in the region, the passes are too far apart"), std::string::npos) << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << region;
+  }
+  // Where the passes are joined, the same program is optimised (kept or not, measured).
+  const std::string json = scratch("partly-joined.json");
+  const CommandResult r = runCli("optimize " + program + " --box 0,0,30,4 -o " + out + " --report " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_GT(nlohmann::json::parse(readFile(json))["region"]["before"]["speed_inconsistency_p99_mm_min"].get<double>(), 1.0);
+}
+
+TEST(gapLimitCli, AGateOnFiguresBetweenPassesFailsWhereTheyWereNotMeasured) {
+  const std::string program = wideRaster(), html = scratch("gate.html");
+  CommandResult r = runCli("report " + program + " -o " + html + " --fail-on 'speed_inconsistency>100000'");
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("speed_inconsistency not measured: the passes are too far apart"), std::string::npos) << r.err;
+  // The machining time is measured all the same.
+  EXPECT_EQ(runCli("report " + program + " -o " + html + " --fail-on 'machining_time>100000'").exitCode, 0);
+  r = runCli("report " + program + " -o " + html + " --gap-limit 4 --fail-on 'speed_inconsistency>100000'");
+  EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+}
+
+TEST(gapLimitCli, AComparisonWithoutASurfaceSaysSoAndTheReportStands) {
+  const std::string program = wideRaster(), dump = scratch("wide-compared.biip"), html = scratch("compared.html"),
+                    json = scratch("compared.json");
+  ASSERT_EQ(runCli("simulate " + program + " -o " + dump).exitCode, 0);
+  const CommandResult r = runCli("report " + program + " --compare " + dump + " -o " + html + " --json " + json);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const nlohmann::json comparison = nlohmann::json::parse(readFile(json))["comparison"];
+  EXPECT_NE(comparison["not_done"].get<std::string>().find("too far apart"), std::string::npos) << comparison.dump();
+  EXPECT_NE(readFile(html).find("Not compared: the passes are too far apart"), std::string::npos);
 }

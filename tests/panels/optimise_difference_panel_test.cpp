@@ -28,7 +28,7 @@ TEST(optimiseDifferencePanel, TheRegionsPassesAreComparedWithTheirReplacements) 
   inspector.waitUntilIdle();
   ASSERT_NE(inspector.optimisedDifference(), nullptr) << inspector.statusText();
   const RunComparison& d = *inspector.optimisedDifference();
-  EXPECT_NE(inspector.statusText().find("The new passes lie within"), std::string::npos) << inspector.statusText();
+  EXPECT_NE(inspector.statusText().find("Simulated, the tool runs within"), std::string::npos) << inspector.statusText();
   // Every line of the region the old run has is matched (a pass as one group), and the new
   // path stays on the old one.
   std::size_t regionLines = 0, comparedSamples = 0;

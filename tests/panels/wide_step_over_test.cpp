@@ -15,7 +15,7 @@
 #include "ui_driving.h"
 
 using namespace isurface;
-using test::settle, test::tap, test::typeInto, test::described, test::waitForJobs;
+using test::clickControl, test::settle, test::tap, test::tapLetter, test::typeInto, test::described, test::waitForJobs;
 
 namespace {
 
@@ -43,6 +43,10 @@ TEST(wideStepOver, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
   waitForJobs(ui);
   EXPECT_TRUE(described(ui)["map"].empty());
   EXPECT_NE(ui.inspector().statusText().find("too far apart"), std::string::npos) << ui.inspector().statusText();
+  // The empty view says why too, not to open what is open.
+  const std::string viewText = described(ui)["view_text"];
+  EXPECT_EQ(viewText.rfind("no map: ", 0), 0u) << viewText;
+  EXPECT_NE(viewText.find("Colour panel"), std::string::npos) << viewText;
 
   typeInto(ui, "surface.gap", "5");
   tap(ui, ImGuiKey_Enter);
@@ -51,6 +55,19 @@ TEST(wideStepOver, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
   EXPECT_DOUBLE_EQ(state["colour"]["gap_limit_mm"].get<double>(), 5.0);
   ASSERT_FALSE(state["map"].empty()) << ui.inspector().statusText();
   EXPECT_GT(state["map"]["vertices"].get<std::size_t>(), 100u);
+  EXPECT_EQ(state["view_text"], "");
+
+  // A report made from the window joins the passes as its map does.
+  const std::filesystem::path report = test::scratchDir() / "wide-step-over report.html";
+  tapLetter(ui, 'E', true);
+  clickControl(ui, "export.report");
+  typeInto(ui, "export.path", report.string());
+  clickControl(ui, "export.write");
+  waitForJobs(ui);
+  ASSERT_EQ(described(ui)["last_saved"], report.string()) << ui.inspector().statusText();
+  const std::string html = test::readFile(report.string());
+  EXPECT_NE(html.find("data:image/png;base64,"), std::string::npos);
+  EXPECT_EQ(html.find("No quality map"), std::string::npos);
 
   // A gap too small for any surface: the map made again fails, and the one shown stays with its gap.
   typeInto(ui, "surface.gap", "0.01");
@@ -89,6 +106,18 @@ TEST(wideStepOver, AnOptimisationMeasuresThePassesAsTheMapJoinsThem) {
   tap(ui, ImGuiKey_Enter);
   waitForJobs(ui);
   ASSERT_FALSE(described(ui)["map"].empty()) << ui.inspector().statusText();
+
+  // Another program opened, its gap typed back to 2 mm, and closed: the Colour panel shows the
+  // gap of the map shown again, and the optimisation joins the passes by it.
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  typeInto(ui, "surface.gap", "2");
+  tap(ui, ImGuiKey_Enter);
+  waitForJobs(ui);
+  tapLetter(ui, 'W', true);
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u);
+  EXPECT_DOUBLE_EQ(described(ui)["colour"]["gap_limit_mm"].get<double>(), 4.0);
 
   ui.inspector().optimise(4, 1215);
   waitForJobs(ui);

@@ -97,6 +97,7 @@ std::string Inspector::describe() const {
            {"close_up", closeUpJson(s.refinement)}};
   const nlohmann::json out = {{"documents", documents},
                               {"map", map},
+                              {"view_text", map.empty() ? emptyViewText(s) : std::string()},
                               {"length_unit", s.units().lengthUnit()},
                               {"colour", {{"unit", s.settings.channel.empty()
                                                        ? s.units().unitOf(quantityInfo(s.settings.quantity).unit)

@@ -284,6 +284,8 @@ struct Inspector::State {
 // bottom-up, and without blending, since where VTK blended translucent glow its alpha is
 // below one and the panel behind must not show through.
 void drawViewFrame(unsigned int texture, ImVec2 size);
+// What the 3D view says where no map stands.
+std::string emptyViewText(const Inspector::State& s);
 
 // Frames the pointer rests before the value under it is shown.
 constexpr int kHoverRestFrames = 5;

@@ -32,7 +32,8 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
     apart = std::max(apart, d.figures.maxPathDistance);
     if (std::abs(d.figures.maxSpeedDifference) > std::abs(speedChange)) speedChange = d.figures.maxSpeedDifference;
   }
-  return fmt::format(". The new passes lie within {:.4f} mm of the old; speed after - before up to {:+.0f} mm/min",
+  return fmt::format(". Simulated, the tool runs within {:.4f} mm of where it ran before; speed after - before up to "
+                     "{:+.0f} mm/min",
                      apart, speedChange);
 }
 
@@ -52,7 +53,7 @@ void chooseWorstRegion(Inspector::State& s) {
   const Document* doc = s.activeDocument();
   if (!doc || !doc->samples || !doc->map.mesh) return;
   try {
-    const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
+    const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
     const ChosenRegion worst = worstRegion(run, doc->name);
     s.optimiseFirst = static_cast<int>(worst.lines.first);
     s.optimiseLast = static_cast<int>(worst.lines.last);
@@ -166,7 +167,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   if (ImGui::Button("Whole program") && doc && doc->samples && doc->map.mesh) {
     try {
       // As `optimize --all`: every pass, the figures taken over all of them.
-      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map)};
+      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
       const ChosenRegion all = wholeProgramRegion(run, doc->name);
       s.optimiseFirst = static_cast<int>(all.lines.first);
       s.optimiseLast = static_cast<int>(all.lines.last);

@@ -125,6 +125,17 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
 
 }  // namespace
 
+// What the view says where no map stands: why the open document has none (passes too far
+// apart, no cutting moves), so that the user is not told to open what is open.
+std::string emptyViewText(const Inspector::State& s) {
+  if (s.job.running()) return "working...";
+  const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr;
+  if (!doc) return "no quality map yet: open a program or a dump";
+  for (auto w = doc->warnings.rbegin(); w != doc->warnings.rend(); ++w)
+    if (w->rfind("no map: ", 0) == 0) return *w;
+  return "no quality map of " + doc->name;
+}
+
 void drawViewFrame(unsigned int texture, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   draw->AddCallback([](const ImDrawList*, const ImDrawCmd*) { glDisable(GL_BLEND); }, nullptr);
@@ -184,7 +195,9 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   } else {
     ImGui::Dummy(size);
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 20, origin.y + 20));
-    ImGui::TextDisabled("%s", s.job.running() ? "working..." : "no quality map yet: open a program or a dump");
+    ImGui::PushTextWrapPos(origin.x + size.x - 40);
+    ImGui::TextDisabled("%s", emptyViewText(s).c_str());
+    ImGui::PopTextWrapPos();
   }
   const ImGuiIO& io = ImGui::GetIO();
   const double mx = io.MousePos.x - origin.x, my = io.MousePos.y - origin.y;

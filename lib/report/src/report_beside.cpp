@@ -44,11 +44,16 @@ void comparisonSection(HtmlDocument& doc, const OpenedRun& run, const OpenedRun&
   if (!other.samples) throw InputError(Diagnostic{other.files.dump, 0, 0, "the run compared makes no motion"});
   const SurfaceRun a = surfaceRun(run.samples, run.program.get(), gapLimit);
   const SurfaceRun b = surfaceRun(other.samples, other.program ? other.program.get() : run.program.get(), gapLimit);
-  if (!a.mesh || !b.mesh)
-    throw InputError(Diagnostic{a.mesh ? other.files.dump : run.files.program, 0, 0,
-                                "no cutting passes found to build a surface on: the runs cannot be compared"});
   doc.openSection("comparison");
   doc.heading(2, fmt::format("This run beside {}", otherName));
+  // Runs without a surface between their passes are not compared; the rest of the report stands.
+  if (a.mesh->triangles.empty() || b.mesh->triangles.empty()) {
+    const std::string why = whyNoTriangles((a.mesh->triangles.empty() ? a : b).passes, gapLimit);
+    doc.paragraph("Not compared: " + why + ".");
+    doc.closeSection();
+    out["comparison"] = {{"compared_with", other.files.dump}, {"not_done", why}};
+    return;
+  }
   const ValueRange range = sharedSpeedRange(a);
   doc.raw("<div class=\"maps\">\n");
   doc.image(renderMapPng(run, speedTop(range, thisName), gapLimit), fmt::format("Path speed, {} (top view)", thisName));

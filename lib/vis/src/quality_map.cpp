@@ -17,6 +17,15 @@ namespace isurface::vis {
 
 namespace {
 
+// An end of a range within a rounding error of zero (an inconsistency of 3e-6 mm/min between
+// passes that run alike) is the zero it stands for, and is shown so.
+ValueRange endsNearZeroAsZero(ValueRange r) {
+  const double near = 1e-6 * (r.hi - r.lo);
+  if (std::fabs(r.lo) < near) r.lo = 0;
+  if (std::fabs(r.hi) < near) r.hi = 0;
+  return r;
+}
+
 std::string rangeText(const ValueRange& r) {
   return fmt::format("{:.4g} .. {:.4g}", r.lo, r.hi);
 }
@@ -143,7 +152,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,
-                                passesTooFarApart(request.gapLimit)});
+                                whyNoTriangles(map.passes, request.gapLimit)});
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();
@@ -201,6 +210,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   if (request.fixedRange) style.range = *request.fixedRange;
   else if (request.lowPercent <= 0 && request.highPercent >= 100) style.range = fullRange(map.data.scalars);
   else style.range = percentileRange(map.data.scalars, request.lowPercent, request.highPercent);
+  if (!request.fixedRange) style.range = endsNearZeroAsZero(style.range);
   // The diverging map "auto" chose has its middle colour at zero: the range is made symmetric.
   if (!request.fixedRange && request.colorMap == kAutoColorMap && signedValues) {
     const double reach = std::max(std::fabs(style.range.lo), std::fabs(style.range.hi));

@@ -69,9 +69,7 @@ namespace {
 // no triangle would be judged on nothing.
 void requireSurface(const SurfaceRun& run, const std::string& source) {
   if (!run.mesh->triangles.empty()) return;
-  throw InputError(Diagnostic{source, 0, 0,
-                              run.passes.passes.size() < 2 ? std::string("a single cutting pass makes no surface to optimise")
-                                                           : passesTooFarApart(run.gapLimit)});
+  throw InputError(Diagnostic{source, 0, 0, whyNoTriangles(run.passes, run.gapLimit)});
 }
 
 }  // namespace
@@ -196,6 +194,13 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
     r.upper += Vec3::Constant(kRegionMarginMm);
     r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
   }
+  // A region whose passes are not joined there would be judged on no figure between passes.
+  if (r.regionBefore.betweenPasses == 0)
+    throw InputError(Diagnostic{program.source, r.lines.first, 0,
+                                fmt::format("lines {}-{}: {}", r.lines.first, r.lines.last,
+                                            r.regionBefore.samples == 0
+                                                ? std::string("no surface sample lies in the region to measure it by")
+                                                : "in the region, " + passesTooFarApart(before.run.gapLimit))});
   r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, FigureWindow{r.result.newRange, r.lower, r.upper});
   r.wholeBefore = before.whole;
   r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);
@@ -408,7 +413,7 @@ std::string regionSummary(const RegionOptimisation& r) {
   return fmt::format(
       "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
       "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
-      "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; path moved {:.4f} mm at most ({})",
+      "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; programmed path moved {:.4f} mm at most ({})",
       r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, a.speedFluctuation,
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
       b.jerkP99,

@@ -75,6 +75,7 @@ QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMes
     const double d = speed[i] - mean.at(i);
     sumSquares += d * d;
     jerks.push_back(jerk[i]);
+    if (mesh.previousPassNeighbour[v] != kNoVertex || mesh.nextPassNeighbour[v] != kNoVertex) ++f.betweenPasses;
     if (std::isfinite(inconsistency[v])) {
       inconsistencies.push_back(inconsistency[v]);
       inconsistencySum += inconsistency[v];

@@ -304,6 +304,11 @@ std::string passesTooFarApart(double gapLimit) {
                      gapLimit);
 }
 
+std::string whyNoTriangles(const PassSet& passes, double gapLimit) {
+  return passes.passes.size() < 2 ? "a single cutting pass makes no surface (a surface lies between passes)"
+                                  : passesTooFarApart(gapLimit);
+}
+
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options) {
   const PositionSource p = positionSource(samples, options.feedback);
   SurfaceMesh mesh;

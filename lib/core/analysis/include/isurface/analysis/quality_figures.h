@@ -22,6 +22,7 @@ struct FigureWindow {
 
 struct QualityFigures {
   std::size_t samples = 0;         // surface samples measured
+  std::size_t betweenPasses = 0;   // of them, those with a neighbouring pass (inconsistency measured)
   double speedFluctuation = 0;     // mm/min, RMS of the path speed about its 100 ms moving average
   double inconsistencyP99 = 0;     // mm/min, 99th percentile of the adjacent-pass speed inconsistency
   double inconsistencyMean = 0;    // mm/min, its mean

@@ -35,6 +35,8 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
 
 // Why a mesh of passes made no triangle at `gapLimit` mm, and what the user can do about it.
 std::string passesTooFarApart(double gapLimit);
+// The same, or that there is a single pass (which no gap joins to another).
+std::string whyNoTriangles(const PassSet& passes, double gapLimit);
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
 std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);
