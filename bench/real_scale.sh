@@ -121,9 +121,11 @@ start_window() {
   window=$!
 }
 
-# Waits up to 120 s until the window's state says `$1` (a Python expression of `s`, the state).
+# Waits up to 120 s, while the window runs, until its state says `$1` (a Python expression of
+# `s`, the state).
 wait_for_state() {
-  for _ in $(seq 2400); do
+  local end=$((SECONDS + 120))
+  while [ "$SECONDS" -lt "$end" ] && kill -0 "$window" 2>/dev/null; do
     python3 -c "import json,sys; s=json.load(open(sys.argv[1])); sys.exit(0 if ($1) else 1)" "$state" 2>/dev/null && return 0
     sleep 0.05
   done

@@ -114,7 +114,10 @@ TEST(gapLimitCli, ARegionWhosePassesAreNotJoinedIsRefusedThoughOthersAre) {
   for (const char* region : {"--box 5,14,30,26", "--lines 611-1014"}) {
     const CommandResult r = runCli("optimize " + program + " " + region + " -o " + out);
     EXPECT_EQ(r.exitCode, 2) << region << ": " << r.out << r.err;
-    EXPECT_NE(r.err.find("in the region, the passes are too far apart"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("no sample of the region has a neighbouring pass on the surface (its passes are further apart "
+                         "than the gap limit of 2 mm"),
+              std::string::npos)
+        << r.err;
     EXPECT_FALSE(std::filesystem::exists(out)) << region;
   }
   // Where the passes are joined, the same program is optimised (kept or not, measured).
@@ -128,11 +131,17 @@ TEST(gapLimitCli, AGateOnFiguresBetweenPassesFailsWhereTheyWereNotMeasured) {
   const std::string program = wideRaster(), html = scratch("gate.html");
   CommandResult r = runCli("report " + program + " -o " + html + " --fail-on 'speed_inconsistency>100000'");
   EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
-  EXPECT_NE(r.err.find("speed_inconsistency not measured: the passes are too far apart"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("not measured (speed_inconsistency): the passes are too far apart"), std::string::npos) << r.err;
   // The machining time is measured all the same.
   EXPECT_EQ(runCli("report " + program + " -o " + html + " --fail-on 'machining_time>100000'").exitCode, 0);
   r = runCli("report " + program + " -o " + html + " --gap-limit 4 --fail-on 'speed_inconsistency>100000'");
   EXPECT_EQ(r.exitCode, 0) << r.out << r.err;
+  // A single pass has no surface either: not measured, whatever the gap.
+  const std::string single = scratch("single-pass.nc");
+  std::ofstream(single) << "G21 G90\nG0 X0 Y0 Z1\nG1 Z0 F1000\nG1 X10 Z0.5\nG1 X20 Z0\nG1 X30 Z0.5\nG0 Z5\nM2\n";
+  r = runCli("report " + single + " -o " + html + " --gap-limit 10 --fail-on 'jerk>1e12'");
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  EXPECT_NE(r.err.find("not measured (jerk): a single cutting pass makes no surface"), std::string::npos) << r.err;
 }
 
 TEST(gapLimitCli, AComparisonWithoutASurfaceSaysSoAndTheReportStands) {

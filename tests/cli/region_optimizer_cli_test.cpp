@@ -93,8 +93,8 @@ QualityFigures figuresOf(const std::string& nc, double& time) {
 // simulated and measured again here (not the report's numbers), is not longer (up to 5 % for
 // --objective quality) and no figure of the whole program is worse by more than 2 %; or, for a
 // program it cannot treat, nothing at all and an error that names the program.
-// RefusedUnjoined: the region's passes are further apart than the gap limit, so that nothing
-// between them can be measured (the reason names the gap).
+// RefusedUnjoined: no sample of the region has a neighbouring pass on the surface, so that
+// nothing between passes can be measured there (the reason says so).
 enum class Outcome { Refused, RefusedUnjoined, Unchanged, Kept, Failed };
 
 Outcome expectNeverWorse(const std::string& program, const std::string& mode) {
@@ -106,7 +106,7 @@ Outcome expectNeverWorse(const std::string& program, const std::string& mode) {
   if (r.exitCode == 2) {
     EXPECT_NE(r.err.find("error: " + program), std::string::npos) << r.err;
     EXPECT_FALSE(fileExists(out));
-    return r.err.find("the passes are too far apart to make a surface (gap limit") != std::string::npos
+    return r.err.find("no sample of the region has a neighbouring pass on the surface") != std::string::npos
                ? Outcome::RefusedUnjoined
                : Outcome::Refused;
   }
@@ -191,8 +191,8 @@ TEST(regionOptimizer, NoModeWritesAWorseProgram) {
 // bench/optimize_realdata.sh --every-mode (the DISABLED_ tests below). Of the small programs, the LinuxCNC examples other than
 // linuxcnc_test.ngc have no finishing passes (or are inverse-time) and the NIST programs use a
 // word iSurface refuses: those are refused with an error, the others never, but for a region
-// whose passes the surface does not join (linuxcnc_test.ngc's box), where nothing between passes
-// can be measured.
+// where nothing between passes can be measured (linuxcnc_test.ngc's box: the outlines of slots
+// and circles of a 2D profiling program, no surface).
 TEST(regionOptimizer, NoModeWritesAWorseSmallRealProgram) {
   if (!fileExists(realdataPath("communicator.nc"))) GTEST_SKIP() << "no shared realdata";
   const std::vector<std::string> treated = {"communicator.nc", "linuxcnc_test.ngc"};

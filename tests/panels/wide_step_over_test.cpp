@@ -47,6 +47,13 @@ TEST(wideStepOver, PassesFurtherApartThanTheGapAreJoinedOnceItIsRaised) {
   const std::string viewText = described(ui)["view_text"];
   EXPECT_EQ(viewText.rfind("no map: ", 0), 0u) << viewText;
   EXPECT_NE(viewText.find("Colour panel"), std::string::npos) << viewText;
+  // A gap raised but not enough: the view says so at the gap typed.
+  typeInto(ui, "surface.gap", "2.5");
+  tap(ui, ImGuiKey_Enter);
+  waitForJobs(ui);
+  EXPECT_TRUE(described(ui)["map"].empty());
+  EXPECT_NE(described(ui)["view_text"].get<std::string>().find("gap limit 2.5 mm"), std::string::npos)
+      << described(ui)["view_text"];
 
   typeInto(ui, "surface.gap", "5");
   tap(ui, ImGuiKey_Enter);

@@ -93,7 +93,12 @@ void Inspector::State::startRecolour() {
   job.start("colouring by " + std::string(quantityInfo(request.quantity).label),
             [result, samples, program, request](app_model::JobControl& control) {
               control.progress(0.1);
-              result->map = vis::buildQualityMap(*samples, program.get(), request);
+              try {
+                result->map = vis::buildQualityMap(*samples, program.get(), request);
+              } catch (const InputError& e) {
+                result->mapRefused = e.what();
+                throw;
+              }
               control.progress(0.7);
               result->scene = std::make_shared<vis::QualityScene>(result->map.data, result->map.style);
               control.progress(1.0);
@@ -141,6 +146,12 @@ void Inspector::State::takeJobResult() {
     status = "error: " + job.error();
     // A map made again with a new gap between passes failed: the gap is the map's that stays.
     if (const Document* doc = activeDocument(); doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
+    // A document still without a map: the view says why it has none now, at the gap typed.
+    if (Document* doc = activeDocument(); doc && !doc->scene && result && !result->mapRefused.empty()) {
+      auto& w = doc->warnings;
+      w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.rfind("no map: ", 0) == 0; }), w.end());
+      w.push_back("no map: " + result->mapRefused);
+    }
     if (result && !result->programAlone.empty()) joinNotice = job.error(), noticeProgram = result->programAlone;
     return;
   }

@@ -122,6 +122,7 @@ struct JobResult {
   std::string programAlone;                  // a program whose dump was refused, to open by itself next
   std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
   vis::QualityMap map;
+  std::string mapRefused;                    // why that colouring made no map
   std::string reportPath, report;            // or a report to save (File > Export)
   // or the feedback of a document's samples, and what was waiting for it
   std::optional<FeedbackOffsets> feedback;

@@ -240,9 +240,9 @@ ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& opti
   doc.heading(2, "Quality maps");
   if (surface) report.maps = maps(doc, run, options.gapLimit, progressStage(progress, 0, mapsEnd));
   else doc.paragraph("No quality map: " + noSurface + ".");
-  // Passes that are there but not joined are not measured, which is not the same as measured
-  // and found fine (a gate on the figures must not pass them).
-  if (!surface && noSurface == passesTooFarApart(options.gapLimit)) report.figures["unmeasured"] = noSurface;
+  // Passes that are there but make no surface (one pass, passes not joined) are not measured,
+  // which is not the same as measured and found fine (a gate on the figures must not pass them).
+  if (!surface && noSurface != kNoCuttingPasses) report.figures["unmeasured"] = noSurface;
   doc.closeSection();
 
   doc.openSection("regions");

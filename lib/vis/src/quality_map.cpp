@@ -142,7 +142,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.passes = splitPasses(samples, passOptions);
   std::size_t cutting = 0;
   for (const Pass& pass : map.passes.passes) cutting += pass.size();
-  if (cutting == 0) throw InputError(Diagnostic{samples.source, 0, 0, "no cutting passes found to build a surface on"});
+  if (cutting == 0) throw InputError(Diagnostic{samples.source, 0, 0, kNoCuttingPasses});
   const std::size_t stride = strideWithin(map.passes, request.maxVertices);
 
   MeshOptions meshOptions;

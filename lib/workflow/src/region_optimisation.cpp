@@ -169,6 +169,33 @@ struct Baseline {
   }
 };
 
+// The box a candidate is judged in and the program's own figures there: where the defect was
+// found (a box), else where the path was re-fitted; a re-fitted part that holds no surface
+// sample (one pass, a flat box) gives way to the region. InputError where nothing between
+// passes can be measured there (the candidate would be judged on nothing).
+void measureBefore(RegionOptimisation& r, Baseline& before, const RegionRequest& request) {
+  std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
+  r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
+  if (!request.box && r.regionBefore.samples == 0) {
+    std::tie(r.lower, r.upper) = boundingBox(regionPoints(before.program, request.lines));
+    // Only the region's lines are measured: the margin takes in no other line, and gives the
+    // box of a single straight pass the height its samples need.
+    r.lower -= Vec3::Constant(kRegionMarginMm);
+    r.upper += Vec3::Constant(kRegionMarginMm);
+    r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
+  }
+  if (r.regionBefore.betweenPasses > 0) return;
+  throw InputError(Diagnostic{
+      before.program.source, r.lines.first, 0,
+      fmt::format("lines {}-{}: {}", r.lines.first, r.lines.last,
+                  r.regionBefore.samples == 0
+                      ? std::string("no surface sample lies in the region to measure it by")
+                      : fmt::format("no sample of the region has a neighbouring pass on the surface (its passes are "
+                                    "further apart than the gap limit of {:g} mm, or run on from one another as one "
+                                    "pass): nothing between passes can be measured there",
+                                    before.run.gapLimit))});
+}
+
 // One candidate's re-fitted program, simulated on the machine, measured and judged.
 RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, const Machine& machine,
                                      const RegionRequest& request, const ProgressCallback& progress) {
@@ -180,27 +207,9 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   InterpretResult reread = interpretGcode(r.result.text, program.source);
   if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
   r.program = std::make_shared<const Program>(std::move(reread.program));
+  measureBefore(r, before, request);
   r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.1, 0.9))),
                        r.program.get(), before.run.gapLimit);
-  // The figures look where the defect was found (a box), else where the path was re-fitted; a
-  // re-fitted part that holds no surface sample (one pass, a flat box) gives way to the region.
-  std::tie(r.lower, r.upper) = request.box ? *request.box : std::make_pair(r.result.fittedLower, r.result.fittedUpper);
-  r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
-  if (!request.box && r.regionBefore.samples == 0) {
-    std::tie(r.lower, r.upper) = boundingBox(regionPoints(program, request.lines));
-    // Only the region's lines are measured: the margin takes in no other line, and gives the
-    // box of a single straight pass the height its samples need.
-    r.lower -= Vec3::Constant(kRegionMarginMm);
-    r.upper += Vec3::Constant(kRegionMarginMm);
-    r.regionBefore = before.regionIn(r.lower, r.upper, request.lines);
-  }
-  // A region whose passes are not joined there would be judged on no figure between passes.
-  if (r.regionBefore.betweenPasses == 0)
-    throw InputError(Diagnostic{program.source, r.lines.first, 0,
-                                fmt::format("lines {}-{}: {}", r.lines.first, r.lines.last,
-                                            r.regionBefore.samples == 0
-                                                ? std::string("no surface sample lies in the region to measure it by")
-                                                : "in the region, " + passesTooFarApart(before.run.gapLimit))});
   r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, FigureWindow{r.result.newRange, r.lower, r.upper});
   r.wholeBefore = before.whole;
   r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);

@@ -305,6 +305,7 @@ std::string passesTooFarApart(double gapLimit) {
 }
 
 std::string whyNoTriangles(const PassSet& passes, double gapLimit) {
+  if (passes.passes.empty()) return kNoCuttingPasses;
   return passes.passes.size() < 2 ? "a single cutting pass makes no surface (a surface lies between passes)"
                                   : passesTooFarApart(gapLimit);
 }

@@ -35,7 +35,10 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
 
 // Why a mesh of passes made no triangle at `gapLimit` mm, and what the user can do about it.
 std::string passesTooFarApart(double gapLimit);
-// The same, or that there is a single pass (which no gap joins to another).
+// Why there is no surface where no cutting pass was found.
+inline constexpr const char* kNoCuttingPasses = "no cutting passes found to build a surface on";
+// Why passes made no triangle: none, a single pass (which no gap joins to another), or passes
+// too far apart.
 std::string whyNoTriangles(const PassSet& passes, double gapLimit);
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
