@@ -156,7 +156,7 @@ void drawOptimiseDialog(Inspector::State& s) {
                      s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
   if (boxed) {
     const app_model::BoxSelection& b = *s.optimiseBox;
-    ImGui::Text("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
+    ImGui::TextWrapped("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
   }
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
@@ -235,15 +235,16 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   beginBesidePanel("After re-optimisation", c.summary, x, y, w, h);
   if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (speed after - before)"))
     s.showOptimisedDifference(*difference);
-  ImGui::SetNextItemWidth(w * 0.5f);
-  ImGui::InputText("##save", s.savePath, sizeof s.savePath);
-  ImGui::SameLine();
-  if (!c.kept) {
-    ImGui::TextUnformatted("not kept: worse than the program as it is");
-  } else if (ImGui::Button("Save program") && s.savePath[0]) {
-    s.save(s.savePath, c.text, "re-optimised program");
+  if (c.kept) {
+    ImGui::SetNextItemWidth(w * 0.5f);
+    ImGui::InputText("##save", s.savePath, sizeof s.savePath);
+    ImGui::SameLine();
+    if (ImGui::Button("Save program") && s.savePath[0]) s.save(s.savePath, c.text, "re-optimised program");
+    ImGui::SameLine();
+  } else {
+    // Nothing to save: the program stays as it is, for the reason the summary gives.
+    ImGui::TextWrapped("Not kept: a figure above is worse than the program's own, so the program stays as it is.");
   }
-  ImGui::SameLine();
   const bool close = ImGui::Button("Close");
   if (endBesidePanel(s, close)) s.comparison.reset();
 }
