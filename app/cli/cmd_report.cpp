@@ -2,6 +2,7 @@
 // quality maps, the worst regions with their G-code and the speed over them, and how close each
 // axis came to the machine's limits.
 #include <algorithm>
+#include <limits>
 #include <cstdlib>
 #include <iterator>
 #include <vector>
@@ -80,8 +81,9 @@ std::vector<std::string> crossed(const nlohmann::json& report, const std::vector
   std::vector<std::string> out;
   std::string unmeasured;
   for (const Threshold& t : thresholds)
-    if (t.name != "machining_time" && report.contains("unmeasured"))
-      unmeasured += (unmeasured.empty() ? "" : ", ") + t.name;
+    if (t.name != "machining_time" && report.contains("unmeasured")) {
+      if (unmeasured.find(t.name) == std::string::npos) unmeasured += (unmeasured.empty() ? "" : ", ") + t.name;
+    }
     else if (const double v = figureOf(report, t.name); v > t.limit)
       out.push_back(fmt::format("threshold crossed: {} {:.4g} > {:g}", t.name, v, t.limit));
   if (!unmeasured.empty())
@@ -144,7 +146,10 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
     try {
       row.figures = reportOne(o, path, "", (std::filesystem::path(o.output) / row.page).string(),
                               (std::filesystem::path(o.output) / (row.name + ".json")).string());
-      row.severity = row.figures["regions"].empty() ? 0 : row.figures["regions"][0]["severity"].get<double>();
+      // A program that could not be measured ranks first: it fails every gate on the surface.
+      row.severity = row.figures.contains("unmeasured")   ? std::numeric_limits<double>::infinity()
+                     : row.figures["regions"].empty() ? 0
+                                                      : row.figures["regions"][0]["severity"].get<double>();
       const std::vector<std::string> over = crossed(row.figures, thresholds);
       for (const std::string& c : over) row.problem += (row.problem.empty() ? "" : "; ") + c;
     } catch (const InputError& e) {
@@ -166,12 +171,12 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
     const std::string worst = reported && !r.figures["regions"].empty()
                                   ? fmt::format("lines {}-{}", r.figures["regions"][0]["first_line"].get<int>(),
                                                 r.figures["regions"][0]["last_line"].get<int>())
-                                  : r.figures.contains("unmeasured") ? "not measured: its passes are not joined"
+                                  : r.figures.contains("no_surface") ? "no surface: " + r.figures["no_surface"].get<std::string>()
                                                                      : "-";
     table += std::string("<tr") + (r.problem.empty() ? "" : " class=\"near\"") + "><td>" +
              (reported ? "<a href=\"" + report::escapeHtml(r.page) + "\">" + report::escapeHtml(r.name) + "</a>" : report::escapeHtml(r.name)) +
              "</td><td>" + report::escapeHtml(worst) + "</td><td>" +
-             (reported && !r.figures.contains("unmeasured") ? fmt::format("{:.1f}", r.severity) : "-") +
+             (reported && !r.figures.contains("no_surface") ? fmt::format("{:.1f}", r.severity) : "-") +
              "</td><td>" + (reported ? formatDuration(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
              report::escapeHtml(r.problem.empty() ? "none" : r.problem) + "</td></tr>\n";
   }

@@ -154,3 +154,20 @@ TEST(gapLimitCli, AComparisonWithoutASurfaceSaysSoAndTheReportStands) {
   EXPECT_NE(comparison["not_done"].get<std::string>().find("too far apart"), std::string::npos) << comparison.dump();
   EXPECT_NE(readFile(html).find("Not compared: the passes are too far apart"), std::string::npos);
 }
+
+TEST(gapLimitCli, ABatchRanksAProgramItCouldNotMeasureFirst) {
+  const std::filesystem::path folder = scratchDir() / "batch-unmeasured", out = scratchDir() / "batch-unmeasured-out";
+  std::filesystem::create_directories(folder);
+  std::filesystem::copy_file(wideRaster(), folder / "wide.nc", std::filesystem::copy_options::overwrite_existing);
+  std::filesystem::copy_file(sourcePath("samples/transition-surface.nc"), folder / "transition-surface.nc",
+                             std::filesystem::copy_options::overwrite_existing);
+  const CommandResult r = runCli("report --batch " + folder.string() + " -o " + out.string() +
+                                 " --fail-on 'speed_inconsistency>100000' --fail-on 'jerk>1e12' --fail-on 'jerk>1e13'");
+  EXPECT_EQ(r.exitCode, 1) << r.out << r.err;
+  const std::string index = readFile((out / "index.html").string());
+  const std::size_t wide = index.find(">wide.nc<"), measured = index.find(">transition-surface.nc<");
+  ASSERT_NE(wide, std::string::npos);
+  ASSERT_NE(measured, std::string::npos);
+  EXPECT_LT(wide, measured) << "the program that could not be measured is listed first";
+  EXPECT_NE(index.find("not measured (speed_inconsistency, jerk): the passes are too far apart"), std::string::npos);
+}

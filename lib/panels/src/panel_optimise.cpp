@@ -243,7 +243,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
     ImGui::SameLine();
   } else {
     // Nothing to save: the program stays as it is, for the reason the summary gives.
-    ImGui::TextWrapped("Not kept: a figure above is worse than the program's own, so the program stays as it is.");
+    ImGui::TextWrapped("Not kept (the reason ends the text above): the program stays as it is.");
   }
   const bool close = ImGui::Button("Close");
   if (endBesidePanel(s, close)) s.comparison.reset();

@@ -242,6 +242,7 @@ ProgramReport buildProgramReport(const OpenedRun& run, const ReportOptions& opti
   else doc.paragraph("No quality map: " + noSurface + ".");
   // Passes that are there but make no surface (one pass, passes not joined) are not measured,
   // which is not the same as measured and found fine (a gate on the figures must not pass them).
+  if (!surface) report.figures["no_surface"] = noSurface;
   if (!surface && noSurface != kNoCuttingPasses) report.figures["unmeasured"] = noSurface;
   doc.closeSection();
 

@@ -192,7 +192,8 @@ void measureBefore(RegionOptimisation& r, Baseline& before, const RegionRequest&
                       ? std::string("no surface sample lies in the region to measure it by")
                       : fmt::format("no sample of the region has a neighbouring pass on the surface (its passes are "
                                     "further apart than the gap limit of {:g} mm, or run on from one another as one "
-                                    "pass): nothing between passes can be measured there",
+                                    "pass): nothing between passes can be measured there (passes further apart are "
+                                    "joined by raising the gap: --gap-limit or the window's Colour panel)",
                                     before.run.gapLimit))});
 }
 
