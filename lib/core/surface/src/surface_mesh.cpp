@@ -298,11 +298,16 @@ int StripBuilder::orient(std::size_t k, const StripShape& strip, int previousDir
 
 }  // namespace
 
+namespace {
+
+// Why passes made no triangle at `gapLimit` mm, and what the user can do about it.
 std::string passesTooFarApart(double gapLimit) {
   return fmt::format("the passes are too far apart to make a surface (gap limit {:g} mm: raise it to join passes "
                      "further apart, --gap-limit or the window's Colour panel)",
                      gapLimit);
 }
+
+}  // namespace
 
 std::string whyNoTriangles(const PassSet& passes, double gapLimit) {
   if (passes.passes.empty()) return kNoCuttingPasses;

@@ -33,8 +33,6 @@ struct MeshOptions {
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options = {});
 
-// Why a mesh of passes made no triangle at `gapLimit` mm, and what the user can do about it.
-std::string passesTooFarApart(double gapLimit);
 // Why there is no surface where no cutting pass was found.
 inline constexpr const char* kNoCuttingPasses = "no cutting passes found to build a surface on";
 // Why passes made no triangle: none, a single pass (which no gap joins to another), or passes
