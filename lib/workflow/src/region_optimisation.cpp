@@ -249,11 +249,14 @@ struct Candidate {
   std::vector<double> ceilings;   // mm/min per source line, where deviation was held
   double normalAcceleration = 0;  // mm/s^2, no bend run faster: the servo's deviation held
   double ramp = 0;                // mm/s^2, ramps between interval feeds
+  double tautening = 0;           // mm, points drawn taut before the fit
+  bool programmedFeed = false;    // the program's feed kept: the NC's planner sets the speed
 };
 
 std::string describe(const Candidate& c) {
-  return fmt::format("{}{}{}{}{}{}",
-                     c.rule == CrossPassRule::None     ? "each pass its own interval feeds"
+  return fmt::format("{}{}{}{}{}{}{}",
+                     c.programmedFeed                  ? "the program's feed kept"
+                     : c.rule == CrossPassRule::None   ? "each pass its own interval feeds"
                      : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
                                                        : "interval feeds planned across passes (slowest)",
                      c.fine ? fmt::format(", characteristic points within {:g} mm", kFineCharacteristicError) : "",
@@ -262,6 +265,7 @@ std::string describe(const Candidate& c) {
                          ? fmt::format(", bends within the servo's deviation ({:.0f} mm/s^2)", c.normalAcceleration)
                          : "",
                      c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
+                     c.tautening > 0 ? fmt::format(", points drawn taut within {:g} mm", c.tautening) : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
@@ -318,6 +322,8 @@ class ClosedLoop {
     candidate.options.lineFeedCeiling = c.ceilings;
     candidate.options.normalAccelerationLimit = c.normalAcceleration;
     candidate.options.rampAcceleration = c.ramp;
+    candidate.options.tautening = c.tautening;
+    candidate.options.programmedFeed = c.programmedFeed;
     if (c.fine) candidate.options.thresholds.error = std::min(candidate.options.thresholds.error, kFineCharacteristicError);
     OptimizeResult result = optimizeRegion(text_, baseline_.program, request_.lines, machine_, candidate.options);
     const bool repeated = std::find(judged_.begin(), judged_.end(), result.text) != judged_.end();
@@ -342,7 +348,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 11;
+  static constexpr std::size_t kExpectedCandidates = 12;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -367,9 +373,9 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // more than before (the smooth new path is run faster through bends where the old one braked
   // at every point), characteristic points at a finer scale, so that a bend between long moves is an interval
   // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
-  // Then a little below the plan. Each distinct candidate is simulated and judged; the objective
-  // chooses among those no worse than the program. When none is, the first one's figures and
-  // reason are reported.
+  // Then a little below the plan, and last the points drawn taut (taut_path.h). Each distinct
+  // candidate is simulated and judged; the objective chooses among those no worse than the
+  // program. When none is, the first one's figures and reason are reported.
   Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), std::nullopt};
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
@@ -403,6 +409,10 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
     if (loop.done() || std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
     loop.judge({rule, 0.95, false, {}});
   }
+  // Last, the program's own points drawn taut and its feed kept: no longer the paper's fit, but
+  // what makes a program whose corners the machine already runs at its limits (a relief whose
+  // points step up and down at every point) any faster.
+  if (!loop.done()) loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, request.options.maximumDeviation, true});
   if (progress) progress(1.0);
   return loop.result();
 }

@@ -19,6 +19,7 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/optimise/cross_pass_feeds.h"
 #include "isurface/optimise/feed_ramps.h"
+#include "isurface/optimise/taut_path.h"
 
 namespace isurface {
 
@@ -78,9 +79,10 @@ bool mentions(const std::string& text, const char* code) {
 }
 
 // Runs of consecutive plain G1 moves in the range, split where the path turns back in XY (the
-// end of a raster pass).
+// end of a raster pass) and, unless the points are drawn taut (which softens a corner within
+// its tube like any other point), at sharp corners, around which a spline would swing.
 std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std::vector<std::string_view>& lines,
-                                               LineRange range) {
+                                               LineRange range, bool splitAtCorners) {
   std::vector<std::vector<std::size_t>> runs;
   std::vector<std::size_t> run;
   auto close = [&] {
@@ -105,7 +107,7 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
       const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
       const bool consecutive = m.line == previous.line + 1;
       // A sharp corner (a step-over) or a move against the pass's direction ends the pass.
-      const bool corner = a.dot(b) < 0.5;
+      const bool corner = splitAtCorners && a.dot(b) < 0.5;
       const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
       if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
     }
@@ -144,8 +146,8 @@ std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chor
 // The new G1 points of one interval. An Akima spline across a jump in point spacing (a long
 // straight move met by short ones) swings away from the path, so the points are fitted in runs
 // of similar spacing (ratio of neighbouring chords within the distance-ratio threshold); a run
-// whose fit strays from its points by more than `maximumDeviation` keeps its points.
-std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options) {
+// whose fit strays from its points by more than `maximumDeviation` (mm) keeps its points.
+std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options, double maximumDeviation) {
   std::vector<Vec3> out = {own.front()};
   const double ratio = options.thresholds.distanceRatio;
   std::size_t start = 0;
@@ -160,7 +162,7 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
     const std::vector<Vec3> run(own.begin() + start, own.begin() + i + 1);
     std::vector<Vec3> piece;
     if (run.size() >= 3) piece = evenlySubdivided(fitAkimaSpline(run), options.chordTolerance, options.maxTurn);
-    if (piece.size() < 2 || polylineDistance(piece, run) > options.maximumDeviation) piece = run;
+    if (piece.size() < 2 || polylineDistance(piece, run) > maximumDeviation) piece = run;
     out.insert(out.end(), piece.begin() + 1, piece.end());
     start = i;
   }
@@ -269,6 +271,8 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
                    const OptimizeOptions& options, FittedBox& fitted) {
   std::vector<Vec3> points = {program.startOf(run.front())};
   for (std::size_t i : run) points.push_back(program.moves[i].end);
+  points = drawnTaut(points, options.tautening);
+  const double fitDeviation = std::max(0.0, options.maximumDeviation - options.tautening);
   const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
   // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
   // interval): a spline across an interval's boundary, where spacing or curvature jumps,
@@ -279,7 +283,7 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   std::vector<std::size_t> dataIndex(points.size(), 0);
   for (const ConstantSpeedInterval& interval : partition.intervals) {
     const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-    const std::vector<Vec3> piece = refitInterval(own, options);
+    const std::vector<Vec3> piece = refitInterval(own, options, fitDeviation);
     const std::size_t offset = plan.points.size() - 1;
     plan.points.insert(plan.points.end(), piece.begin() + 1, piece.end());
     for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
@@ -294,7 +298,10 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   for (std::size_t i = 0; i + 1 < points.size(); ++i)
     for (std::size_t k = dataIndex[i] + 1; k <= dataIndex[i + 1] && k < plan.points.size(); ++k)
       plan.sourceLines[k] = program.moves[run[i]].line;
-  plan.feeds = intervalFeeds(options, program, run, plan.points, dataIndex, partition, program.moves[run.front()].feed, machine);
+  const double feed = program.moves[run.front()].feed;
+  plan.feeds = options.programmedFeed
+                   ? std::vector<double>(partition.intervals.size(), feed)
+                   : intervalFeeds(options, program, run, plan.points, dataIndex, partition, feed, machine);
   return plan;
 }
 
@@ -312,7 +319,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
-  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range);
+  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, !(options.tautening > 0));
   runs.erase(std::remove_if(runs.begin(), runs.end(), [&](const auto& r) { return r.size() < options.minimumMoves; }),
              runs.end());
   if (runs.empty())
@@ -332,6 +339,11 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   };
   // First every pass is re-fitted and its interval feeds planned; then the feeds are planned
   // across passes; then the passes are written.
+  // The fit may stray from the taut points by what the tautening left of the deviation.
+  const std::string how =
+      options.tautening <= 0 ? std::string("Akima spline in arc length")
+      : fmt::format("points drawn taut within {:g} mm{}", options.tautening,
+                    options.maximumDeviation > options.tautening ? ", Akima spline in arc length" : "");
   std::vector<PassFeeds> plans;
   for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
   result.fittedLower = fittedBox.lower;
@@ -352,8 +364,8 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     pass.intervalFeeds = feeds;
     std::string feedList;
     for (double f : feeds) feedList += " F" + units.feed(f);
-    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: Akima spline in arc length, constant speed intervals{}{}){}",
-                               first.line, last.line, feedList,
+    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: {}, constant speed intervals{}{}){}",
+                               first.line, last.line, how, feedList,
                                options.rampAcceleration > 0 ? fmt::format(", ramps of {:g} mm/s^2", options.rampAcceleration) : "",
                                lineEnd);
     pass.newFirstLine = ++written;

@@ -42,6 +42,13 @@ struct OptimizeOptions {
   // (feed_ramps.h); 0: one step at the interval's end.
   double rampAcceleration = 0;
   CrossPassRule crossPass = CrossPassRule::None;
+  // mm: how far each point of a pass may move toward a taut path before the fit (taut_path.h),
+  // taken out of `maximumDeviation`; 0: the fit goes through the program's own points (the
+  // paper's steps).
+  double tautening = 0;
+  // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
+  // (where it already runs at its own limits at every point, one feed per interval is slower).
+  bool programmedFeed = false;
   // mm/min, indexed by source line (0: none): no interval runs faster than the lowest ceiling
   // of the old lines it replaces.
   std::vector<double> lineFeedCeiling;
