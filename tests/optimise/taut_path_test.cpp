@@ -52,7 +52,8 @@ TEST(tautPath, StepsSmallerThanTheTubeAreFlattenedAway) {
   const std::vector<Vec3> taut = drawnTaut(old, 0.008);
   // 10 um steps, 8 um of tube on either side: the steps are gone, the path is nearly straight.
   EXPECT_NEAR(largestTurn(old), 0.13, 0.01);
-  EXPECT_LT(largestTurn(taut), 0.01);
+  EXPECT_LT(largestTurn(taut, 4), 0.003);
+  EXPECT_LT(largestTurn(taut), 0.02);  // next to the ends, which stay where they were
 }
 
 TEST(tautPath, ASmoothPathIsLeftWhereItIs) {
@@ -67,7 +68,7 @@ TEST(tautPath, ASmoothPathIsLeftWhereItIs) {
   }
   const std::vector<Vec3> tautLine = drawnTaut(line, 0.008);
   for (const Vec3& p : tautLine) EXPECT_NEAR(distanceToSegment(p, line.front(), line.back()), 0.0, 1e-12);
-  EXPECT_LT(polylineDistance(drawnTaut(arc, 0.008), arc), 0.004);
+  EXPECT_LT(polylineDistance(drawnTaut(arc, 0.008), arc), 0.002);
 }
 
 TEST(tautPath, DegenerateInputsComeBackUnchangedOrFinite) {

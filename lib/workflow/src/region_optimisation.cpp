@@ -31,6 +31,10 @@ constexpr double kServoBoundShare = 0.95;
 // faster one costs less time, the gentler one changes the speed more evenly.
 constexpr double kRampAccelerations[] = {200.0, 100.0};
 
+// Of a faster run's samples, the shares whose speed the feed of the next candidates is capped
+// below: its briefest peaks first, then ever more of its speeds, each cap slower than the last.
+constexpr double kSpeedPeakShares[] = {0.01, 0.1, 0.3, 0.5};
+
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
   for (std::size_t i = 0; i < program.moves.size(); ++i)
@@ -251,10 +255,11 @@ struct Candidate {
   double ramp = 0;                // mm/s^2, ramps between interval feeds
   double tautening = 0;           // mm, points drawn taut before the fit
   bool programmedFeed = false;    // the program's feed kept: the NC's planner sets the speed
+  double feedCap = 0;             // mm/min, with programmedFeed: no faster (0: no cap)
 };
 
 std::string describe(const Candidate& c) {
-  return fmt::format("{}{}{}{}{}{}{}",
+  return fmt::format("{}{}{}{}{}{}{}{}",
                      c.programmedFeed                  ? "the program's feed kept"
                      : c.rule == CrossPassRule::None   ? "each pass its own interval feeds"
                      : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
@@ -266,6 +271,7 @@ std::string describe(const Candidate& c) {
                          : "",
                      c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
                      c.tautening > 0 ? fmt::format(", points drawn taut within {:g} mm", c.tautening) : "",
+                     c.feedCap > 0 ? fmt::format(", at most {:.0f} mm/min", std::floor(c.feedCap)) : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
@@ -302,6 +308,24 @@ std::vector<double> deviationCeilings(const RegionOptimisation& r, double target
   return previous;
 }
 
+// mm/min: the speed a candidate's run exceeds on `share` of its surface samples in the region
+// (0 where it has none).
+double cuttingSpeedAbove(const RegionOptimisation& r, double share) {
+  const Trajectory& t = *r.after.samples;
+  const std::vector<float> speed = vertexQuantity(Quantity::Speed, t, *r.after.mesh);
+  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
+  std::vector<float> inRegion;
+  for (std::size_t v = 0; v < speed.size(); ++v) {
+    const std::uint32_t line = lineOf[r.after.mesh->vertexSample[v]];
+    if (line >= r.result.newRange.first && line <= r.result.newRange.last && std::isfinite(speed[v]))
+      inRegion.push_back(speed[v]);
+  }
+  if (inRegion.empty()) return 0;
+  const auto at = inRegion.begin() + static_cast<std::ptrdiff_t>((1.0 - share) * double(inRegion.size() - 1));
+  std::nth_element(inRegion.begin(), at, inRegion.end());
+  return *at;
+}
+
 }  // namespace
 
 namespace {
@@ -324,6 +348,7 @@ class ClosedLoop {
     candidate.options.rampAcceleration = c.ramp;
     candidate.options.tautening = c.tautening;
     candidate.options.programmedFeed = c.programmedFeed;
+    candidate.options.feedCap = c.feedCap;
     if (c.fine) candidate.options.thresholds.error = std::min(candidate.options.thresholds.error, kFineCharacteristicError);
     OptimizeResult result = optimizeRegion(text_, baseline_.program, request_.lines, machine_, candidate.options);
     const bool repeated = std::find(judged_.begin(), judged_.end(), result.text) != judged_.end();
@@ -348,7 +373,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 12;
+  static constexpr std::size_t kExpectedCandidates = 15;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -411,8 +436,22 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   }
   // Last, the program's own points drawn taut and its feed kept: no longer the paper's fit, but
   // what makes a program whose corners the machine already runs at its limits (a relief whose
-  // points step up and down at every point) any faster.
-  if (!loop.done()) loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, request.options.maximumDeviation, true});
+  // points step up and down at every point) any faster. Where that run is faster but its speed
+  // now peaks between the corners it no longer brakes at, the peaks are trimmed: the feed is
+  // capped at the speed its run exceeds on 1 %, then 10, 30 and 50 % of its samples in the
+  // region, until a cap is kept or makes the program slower.
+  if (!loop.done()) {
+    const double tube = request.options.maximumDeviation;
+    const RegionOptimisation* taut = loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, tube, true});
+    std::vector<double> caps;
+    if (taut && taut->timeAfter < taut->timeBefore)
+      for (const double share : kSpeedPeakShares) caps.push_back(cuttingSpeedAbove(*taut, share));
+    for (const double cap : caps) {
+      if (loop.done() || !(cap > 0)) break;
+      const RegionOptimisation* capped = loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, tube, true, cap});
+      if (capped && slower(*capped)) break;  // a lower cap would only be slower still
+    }
+  }
   if (progress) progress(1.0);
   return loop.result();
 }

@@ -300,7 +300,8 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
       plan.sourceLines[k] = program.moves[run[i]].line;
   const double feed = program.moves[run.front()].feed;
   plan.feeds = options.programmedFeed
-                   ? std::vector<double>(partition.intervals.size(), feed)
+                   ? std::vector<double>(partition.intervals.size(),
+                                         options.feedCap > 0 ? std::min(feed, std::floor(options.feedCap)) : feed)
                    : intervalFeeds(options, program, run, plan.points, dataIndex, partition, feed, machine);
   return plan;
 }

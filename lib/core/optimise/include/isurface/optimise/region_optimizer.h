@@ -47,8 +47,10 @@ struct OptimizeOptions {
   // paper's steps).
   double tautening = 0;
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
-  // (where it already runs at its own limits at every point, one feed per interval is slower).
+  // (where it already runs at its own limits at every point, one feed per interval is slower),
+  // but no faster than `feedCap` (mm/min; 0: no cap).
   bool programmedFeed = false;
+  double feedCap = 0;
   // mm/min, indexed by source line (0: none): no interval runs faster than the lowest ceiling
   // of the old lines it replaces.
   std::vector<double> lineFeedCeiling;

@@ -1,6 +1,6 @@
 #pragma once
 // A pass's points drawn taut inside a tube around them: every point but the two ends moves, by
-// at most `radius` (mm), toward the middle of its neighbours. A relief sampled by a CAM system
+// at most `radius` (mm), toward the chord between its neighbours. A relief sampled by a CAM system
 // with points that step up and down by tens of micrometres (a zig-zag the tool follows at every
 // point) keeps its shape but turns less at each point, so a jerk-limited machine brakes less.
 // The new polyline lies within `radius` of the old one: each point stays in its ball and every
