@@ -7,6 +7,8 @@
 #include <cstdio>
 #include <sstream>
 
+#include <fmt/format.h>
+
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/optimise/region_optimizer.h"
@@ -152,4 +154,49 @@ TEST(regionOptimizer, AnInchProgramIsRewrittenInInches) {
   }
   EXPECT_LT(farthest, 0.01);  // mm
   EXPECT_THROW(optimizeRegion("G21\n" + text, original.program, LineRange{70, 126}, defaultMachine()), InputError);
+}
+
+namespace {
+
+// Four raster passes along X whose points step up and down by 30 um, joined by step-overs in Y,
+// entered by a plunge: in mm, or in inches.
+std::string steppedRaster(bool inch) {
+  const double unit = inch ? 25.4 : 1.0;
+  std::string text = inch ? "G20 G90\nG0 X0 Y0 Z0.2\nG1 Z0 F40\n" : "G21 G90\nG0 X0 Y0 Z5\nG1 Z0 F1000\n";
+  for (int pass = 0; pass < 4; ++pass) {
+    for (int i = 1; i <= 40; ++i) {
+      const int k = pass % 2 ? 40 - i : i;
+      text += fmt::format("G1 X{:.5f} Y{:.5f} Z{:.5f}\n", 0.15 * k / unit, 0.5 * pass / unit, (k % 2 ? 0.03 : 0.0) / unit);
+    }
+    if (pass < 3) text += fmt::format("G1 Y{:.5f}\n", 0.5 * (pass + 1) / unit);
+  }
+  return text + "M2\n";
+}
+
+}  // namespace
+
+TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
+  for (const bool inch : {false, true}) {
+    const std::string text = steppedRaster(inch);
+    const InterpretResult original = interpretGcode(text, "stepped.nc");
+    ASSERT_TRUE(original.ok()) << original.errors.front().str();
+    OptimizeOptions options;
+    options.tautening = 0.008;
+    options.programmedFeed = true;
+    options.feedCap = 700.4;  // mm/min
+    const OptimizeResult r = optimizeRegion(text, original.program, LineRange{1, 200}, defaultMachine(), options);
+    // A pass ends at a step-over (a corner seen from above), however its points step in Z; the
+    // plunge joins no pass.
+    EXPECT_EQ(r.passes.size(), 4u) << r.text;
+    const InterpretResult reread = interpretGcode(r.text, "stepped-new.nc");
+    ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+    std::vector<Vec3> before, after;
+    for (std::size_t i = 0; i < original.program.moves.size(); ++i) before.push_back(original.program.moves[i].end);
+    for (std::size_t i = 0; i < reread.program.moves.size(); ++i) after.push_back(reread.program.moves[i].end);
+    EXPECT_LE(polylineDistance(before, after), 0.008 + 0.0003) << (inch ? "inch" : "mm");
+    EXPECT_GT(polylineDistance(before, after), 0.007);  // the steps were lowered
+    // The cap in the program's units (700 mm/min is 27.56 in/min), the old feed after each pass.
+    EXPECT_NE(r.text.find(inch ? "F27.56" : "F700"), std::string::npos) << r.text;
+    EXPECT_NE(r.text.find(inch ? "\nF40.00\n" : "\nF1000\n"), std::string::npos) << r.text;
+  }
 }

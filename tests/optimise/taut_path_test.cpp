@@ -57,9 +57,10 @@ TEST(tautPath, StepsSmallerThanTheTubeAreFlattenedAway) {
 }
 
 TEST(tautPath, ASmoothPathIsLeftWhereItIs) {
-  // A straight line and an arc of 20 mm radius, points unevenly spaced: moving toward the middle
-  // of its neighbours, a point of a straight line stays on it, and one of a wide arc moves by
-  // far less than the tube.
+  // A straight line with its points unevenly spaced stays exactly where it is (each point is
+  // already where the chord between its neighbours passes at its share of their distance; the
+  // middle of that chord would slide it along the line), and an arc of 20 mm radius moves by far
+  // less than the tube.
   std::vector<Vec3> line, arc;
   for (int k = 0; k < 30; ++k) {
     const double s = 0.2 * k + (k % 3 == 0 ? 0.05 : 0.0);
@@ -67,7 +68,7 @@ TEST(tautPath, ASmoothPathIsLeftWhereItIs) {
     arc.emplace_back(20 * std::sin(s / 20), 0.0, 20 * (1 - std::cos(s / 20)));
   }
   const std::vector<Vec3> tautLine = drawnTaut(line, 0.008);
-  for (const Vec3& p : tautLine) EXPECT_NEAR(distanceToSegment(p, line.front(), line.back()), 0.0, 1e-12);
+  for (std::size_t k = 0; k < line.size(); ++k) EXPECT_LT((tautLine[k] - line[k]).norm(), 1e-12) << k;
   EXPECT_LT(polylineDistance(drawnTaut(arc, 0.008), arc), 0.002);
 }
 
@@ -78,10 +79,18 @@ TEST(tautPath, DegenerateInputsComeBackUnchangedOrFinite) {
   const std::vector<Vec3> zig = zigZag(10, 0.15, 0.04);
   EXPECT_EQ(drawnTaut(zig, 0.0), zig);
   EXPECT_EQ(drawnTaut(zig, -1.0), zig);
-  // Duplicate points (a CAM system writing the same point twice) and a point at both ends.
+  // Duplicate points (a CAM system writing the same point twice) and the same point at both
+  // ends (a closed contour).
   const std::vector<Vec3> repeated = {Vec3(0, 0, 0), Vec3(0, 0, 0), Vec3(0.1, 0, 0.02), Vec3(0.1, 0, 0.02),
                                       Vec3(0.2, 0, 0), Vec3(0, 0, 0)};
-  for (const Vec3& p : drawnTaut(repeated, 0.008)) EXPECT_TRUE(p.allFinite());
+  const std::vector<Vec3> taut = drawnTaut(repeated, 0.008);
+  ASSERT_EQ(taut.size(), repeated.size());
+  EXPECT_EQ(taut.front(), repeated.front());
+  EXPECT_EQ(taut.back(), repeated.back());
+  for (std::size_t k = 0; k < taut.size(); ++k) {
+    EXPECT_TRUE(taut[k].allFinite()) << k;
+    EXPECT_LE((taut[k] - repeated[k]).norm(), 0.008 + 1e-12) << k;
+  }
 }
 
 }  // namespace

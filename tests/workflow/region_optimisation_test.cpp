@@ -212,7 +212,7 @@ TEST(regionOptimisation, PointsDrawnTautRunFasterWithinTheirTube) {
 TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
   // Drawn taut, the noisy relief runs far faster but its speed now peaks between the corners
   // left, and swings more than before; the feed capped below the top of those speeds keeps
-  // most of the time won and makes every figure better.
+  // most of the time won, and the speed swings no more than before.
   const std::string text = noisyRelief(false);
   const Program program = interpretGcode(text, "noisy-relief.nc").program;
   const RegionOptimisation r = optimiseWhole(text, program);
@@ -225,7 +225,8 @@ TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
   });
   ASSERT_NE(uncapped, r.candidates.end());
   EXPECT_FALSE(uncapped->kept);
-  EXPECT_GT(uncapped->region.speedFluctuation, r.regionBefore.speedFluctuation);
-  EXPECT_LE(r.regionAfter.speedFluctuation, r.regionBefore.speedFluctuation);
-  EXPECT_LE(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99);
+  EXPECT_NE(uncapped->reason.find("speed fluctuation"), std::string::npos) << uncapped->reason;
+  EXPECT_LT(uncapped->timeAfter, r.timeAfter);  // the cap gives back a little of the time won
+  EXPECT_LE(r.regionAfter.speedFluctuation, r.regionBefore.speedFluctuation * (1 + kWorseningAllowed));
+  EXPECT_LT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99);
 }

@@ -10,11 +10,12 @@
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/analysis/quality_regions.h"
-#include "isurface/analysis/quantities.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/servo_response.h"
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/workflow/run_inputs.h"
+
+#include "candidate_feed_limits.h"
 
 namespace isurface {
 
@@ -30,10 +31,6 @@ constexpr double kServoBoundShare = 0.95;
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster one costs less time, the gentler one changes the speed more evenly.
 constexpr double kRampAccelerations[] = {200.0, 100.0};
-
-// Of a faster run's samples, the shares whose speed the feed of the next candidates is capped
-// below: its briefest peaks first, then ever more of its speeds, each cap slower than the last.
-constexpr double kSpeedPeakShares[] = {0.01, 0.1, 0.3, 0.5};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -275,57 +272,6 @@ std::string describe(const Candidate& c) {
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
-// Feed ceilings (mm/min per old source line) that bring the servo's deviation in a candidate's
-// run back to `targetUm`: a move whose samples deviate by d > target is held to its feed times
-// sqrt(target / d) (the lag that deviates the path grows with the square of the speed where it
-// bends), with a margin. `previous` ceilings are kept where they are lower.
-std::vector<double> deviationCeilings(const RegionOptimisation& r, double targetUm, std::vector<double> previous) {
-  constexpr double kMargin = 0.97;
-  const Trajectory& t = *r.after.samples;
-  const std::vector<float> deviation = vertexQuantity(Quantity::Deviation, t, *r.after.mesh);
-  std::vector<double> worst;  // um per new line
-  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
-  for (std::size_t v = 0; v < deviation.size(); ++v) {
-    const std::uint32_t line = lineOf[r.after.mesh->vertexSample[v]];
-    if (line == 0 || !std::isfinite(deviation[v])) continue;
-    if (line >= worst.size()) worst.resize(line + 1, 0.0);
-    worst[line] = std::max(worst[line], double(std::fabs(deviation[v])));
-  }
-  std::vector<double> feedOfLine;  // mm/min per new line
-  for (const Move& m : r.program->moves) {
-    if (m.line >= feedOfLine.size()) feedOfLine.resize(m.line + 1, 0.0);
-    feedOfLine[m.line] = m.feed;
-  }
-  for (const OptimizedPass& pass : r.result.passes)
-    for (std::size_t k = 0; k < pass.sourceLines.size(); ++k) {
-      const std::size_t line = pass.newFirstLine + k;
-      const std::uint32_t source = pass.sourceLines[k];
-      if (line >= worst.size() || line >= feedOfLine.size() || worst[line] <= targetUm || source == 0) continue;
-      const double ceiling = kMargin * feedOfLine[line] * std::sqrt(targetUm / worst[line]);
-      if (source >= previous.size()) previous.resize(source + 1, 0.0);
-      if (previous[source] == 0 || ceiling < previous[source]) previous[source] = ceiling;
-    }
-  return previous;
-}
-
-// mm/min: the speed a candidate's run exceeds on `share` of its surface samples in the region
-// (0 where it has none).
-double cuttingSpeedAbove(const RegionOptimisation& r, double share) {
-  const Trajectory& t = *r.after.samples;
-  const std::vector<float> speed = vertexQuantity(Quantity::Speed, t, *r.after.mesh);
-  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
-  std::vector<float> inRegion;
-  for (std::size_t v = 0; v < speed.size(); ++v) {
-    const std::uint32_t line = lineOf[r.after.mesh->vertexSample[v]];
-    if (line >= r.result.newRange.first && line <= r.result.newRange.last && std::isfinite(speed[v]))
-      inRegion.push_back(speed[v]);
-  }
-  if (inRegion.empty()) return 0;
-  const auto at = inRegion.begin() + static_cast<std::ptrdiff_t>((1.0 - share) * double(inRegion.size() - 1));
-  std::nth_element(inRegion.begin(), at, inRegion.end());
-  return *at;
-}
-
 }  // namespace
 
 namespace {
@@ -373,7 +319,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 15;
+  static constexpr std::size_t kExpectedCandidates = 16;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -384,6 +330,35 @@ class ClosedLoop {
   RegionOptimisation last_;
   std::optional<RegionOptimisation> best_, first_;
 };
+
+}  // namespace
+
+namespace {
+
+Candidate tautCandidate(double tube, double feedCap = 0) {
+  Candidate c{CrossPassRule::None, 1.0, false, {}};
+  c.tautening = tube;
+  c.programmedFeed = true;
+  c.feedCap = feedCap;
+  return c;
+}
+
+// Last, the program's own points drawn taut within `tube` (mm) and its feed kept: no longer the
+// paper's fit, but what makes a program whose corners the machine already runs at its limits (a
+// relief whose points step up and down at every point) any faster. Where that run is faster,
+// its speed now peaks between the corners it no longer brakes at, and swings more: the peaks are
+// trimmed by capping the feed (speedPeakCaps), from the highest cap down, until a cap is kept
+// (under Objective::Balanced) or makes the program slower (a lower one would be slower still).
+void judgeTautCandidates(ClosedLoop& loop, double tube) {
+  if (loop.done()) return;
+  const RegionOptimisation* taut = loop.judge(tautCandidate(tube));
+  if (!taut || !(taut->timeAfter < taut->timeBefore)) return;
+  for (const double cap : speedPeakCaps(*taut)) {
+    if (loop.done()) return;
+    const RegionOptimisation* capped = loop.judge(tautCandidate(tube, cap));
+    if (capped && slower(*capped)) return;
+  }
+}
 
 }  // namespace
 
@@ -434,30 +409,15 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
     if (loop.done() || std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
     loop.judge({rule, 0.95, false, {}});
   }
-  // Last, the program's own points drawn taut and its feed kept: no longer the paper's fit, but
-  // what makes a program whose corners the machine already runs at its limits (a relief whose
-  // points step up and down at every point) any faster. Where that run is faster but its speed
-  // now peaks between the corners it no longer brakes at, the peaks are trimmed: the feed is
-  // capped at the speed its run exceeds on 1 %, then 10, 30 and 50 % of its samples in the
-  // region, until a cap is kept or makes the program slower.
-  if (!loop.done()) {
-    const double tube = request.options.maximumDeviation;
-    const RegionOptimisation* taut = loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, tube, true});
-    std::vector<double> caps;
-    if (taut && taut->timeAfter < taut->timeBefore)
-      for (const double share : kSpeedPeakShares) caps.push_back(cuttingSpeedAbove(*taut, share));
-    for (const double cap : caps) {
-      if (loop.done() || !(cap > 0)) break;
-      const RegionOptimisation* capped = loop.judge({CrossPassRule::None, 1.0, false, {}, 0, 0, tube, true, cap});
-      if (capped && slower(*capped)) break;  // a lower cap would only be slower still
-    }
-  }
+  judgeTautCandidates(loop, request.options.maximumDeviation);
   if (progress) progress(1.0);
   return loop.result();
 }
 
 std::optional<std::string> worsening(const RegionOptimisation& r) {
   if (slower(r)) return fmt::format("the program would take longer ({:.3f} -> {:.3f} s)", r.timeBefore, r.timeAfter);
+  if (r.maxPathDistance > kPathMoveAllowed)
+    return fmt::format("the path would move by {:.4f} mm, more than {:g} mm", r.maxPathDistance, kPathMoveAllowed);
   // A region that cannot be measured after cannot be said to be no worse.
   if (r.regionBefore.samples > 0 && r.regionAfter.samples == 0) return std::string("the region has no surface after");
   if (const std::string worse = worseFigure(r.regionBefore, r.regionAfter, kWorseningAllowed); !worse.empty())

@@ -78,11 +78,22 @@ bool mentions(const std::string& text, const char* code) {
   return false;
 }
 
+// Whether unit directions `a` and `b` turn sharply seen from above, or either runs (nearly)
+// vertically: a step-over, a plunge or a lift, where a pass ends even though its points may
+// step up and down in Z at every point.
+bool sharpTurnInPlan(const Vec3& a, const Vec3& b) {
+  constexpr double kSteep = 0.1;  // of a unit direction's length: steeper than 84 degrees
+  const Eigen::Vector2d inPlanA = a.head<2>(), inPlanB = b.head<2>();
+  if (inPlanA.norm() < kSteep || inPlanB.norm() < kSteep) return true;
+  return inPlanA.normalized().dot(inPlanB.normalized()) < 0.5;
+}
+
 // Runs of consecutive plain G1 moves in the range, split where the path turns back in XY (the
-// end of a raster pass) and, unless the points are drawn taut (which softens a corner within
-// its tube like any other point), at sharp corners, around which a spline would swing.
+// end of a raster pass) and at sharp corners (a step-over), around which a spline would swing.
+// Points drawn taut soften a corner within their tube like any other point, so for them only
+// a corner seen from above ends a run, not one in Z.
 std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std::vector<std::string_view>& lines,
-                                               LineRange range, bool splitAtCorners) {
+                                               LineRange range, bool drawnTaut) {
   std::vector<std::vector<std::size_t>> runs;
   std::vector<std::size_t> run;
   auto close = [&] {
@@ -106,8 +117,7 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
       const Vec3 b = (m.end - program.startOf(i)).normalized();
       const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
       const bool consecutive = m.line == previous.line + 1;
-      // A sharp corner (a step-over) or a move against the pass's direction ends the pass.
-      const bool corner = splitAtCorners && a.dot(b) < 0.5;
+      const bool corner = drawnTaut ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
       const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
       if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
     }
@@ -148,6 +158,7 @@ std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chor
 // of similar spacing (ratio of neighbouring chords within the distance-ratio threshold); a run
 // whose fit strays from its points by more than `maximumDeviation` (mm) keeps its points.
 std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options, double maximumDeviation) {
+  if (maximumDeviation <= 0) return own;  // no fit could stay close enough
   std::vector<Vec3> out = {own.front()};
   const double ratio = options.thresholds.distanceRatio;
   std::size_t start = 0;
@@ -301,7 +312,7 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   const double feed = program.moves[run.front()].feed;
   plan.feeds = options.programmedFeed
                    ? std::vector<double>(partition.intervals.size(),
-                                         options.feedCap > 0 ? std::min(feed, std::floor(options.feedCap)) : feed)
+                                         options.feedCap > 0 ? std::clamp(std::floor(options.feedCap), 1.0, feed) : feed)
                    : intervalFeeds(options, program, run, plan.points, dataIndex, partition, feed, machine);
   return plan;
 }
@@ -320,7 +331,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
-  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, !(options.tautening > 0));
+  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, options.tautening > 0);
   runs.erase(std::remove_if(runs.begin(), runs.end(), [&](const auto& r) { return r.size() < options.minimumMoves; }),
              runs.end());
   if (runs.empty())

@@ -76,9 +76,9 @@ struct RegionOptimisation {
   QualityFigures wholeBefore, wholeAfter;    // over the whole program
   double timeBefore = 0, timeAfter = 0;    // s, machining time of the whole program
   double maxPathDistance = 0;              // mm, new path to old over the region
-  // The new program is kept only when it is no slower and no figure, of the region or of the
-  // whole program, is worse by more than kWorseningAllowed; otherwise `reason` says which, and
-  // the program stays as it was.
+  // The new program is kept only when it is no slower, its path moved no more than
+  // kPathMoveAllowed and no figure, of the region or of the whole program, is worse by more
+  // than kWorseningAllowed; otherwise `reason` says which, and the program stays as it was.
   bool kept = true;
   std::string reason;
   std::string plan;  // the candidate reported: how its interval feeds were planned
@@ -96,6 +96,9 @@ struct RegionOptimisation {
 
 // How much worse (relative) a figure of the region may get for the new program to be kept.
 constexpr double kWorseningAllowed = 0.02;
+
+// mm: how far the new programmed path may lie from the old one for the new program to be kept.
+constexpr double kPathMoveAllowed = 0.01;
 
 // Why the new program is worse than the old one by the rule above (the time allowed depends on
 // r.objective), or nothing when it is not.

@@ -1,9 +1,10 @@
 #pragma once
 // Region re-optimisation (the loop of the paper's Figure 6): the G1 moves of a line range are
 // split into passes, each pass is fitted by an Akima spline in arc length and resampled into
-// G1 moves within a chord tolerance, and every constant speed interval gets one feed. Every
-// line outside the changed passes is kept byte for byte; new blocks carry comments naming the
-// lines they replace.
+// G1 moves within a chord tolerance, and every constant speed interval gets one feed; or,
+// instead of the fit, its points are drawn taut (taut_path.h) and it keeps the program's feed.
+// Every line outside the changed passes is kept byte for byte; new blocks carry comments naming
+// the lines they replace.
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -48,7 +49,7 @@ struct OptimizeOptions {
   double tautening = 0;
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
   // (where it already runs at its own limits at every point, one feed per interval is slower),
-  // but no faster than `feedCap` (mm/min; 0: no cap).
+  // but no faster than `feedCap` (mm/min, whole; 0: no cap).
   bool programmedFeed = false;
   double feedCap = 0;
   // mm/min, indexed by source line (0: none): no interval runs faster than the lowest ceiling
@@ -58,7 +59,8 @@ struct OptimizeOptions {
 
 struct OptimizedPass {
   std::uint32_t firstLine = 0, lastLine = 0;        // replaced source lines
-  std::uint32_t newFirstLine = 0, newLastLine = 0;  // where their replacement stands in the output
+  // Where their replacement stands in the output: its comment line, then one block per new move.
+  std::uint32_t newFirstLine = 0, newLastLine = 0;
   std::size_t oldMoves = 0, newMoves = 0;
   std::vector<double> intervalFeeds;                // mm/min, one per constant speed interval
   std::vector<std::uint32_t> sourceLines;           // per new move, the old line it stands for
