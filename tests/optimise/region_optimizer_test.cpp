@@ -195,7 +195,10 @@ TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
     for (std::size_t i = 0; i < reread.program.moves.size(); ++i) after.push_back(reread.program.moves[i].end);
     EXPECT_LE(polylineDistance(before, after), 0.008 + 0.0003) << (inch ? "inch" : "mm");
     EXPECT_GT(polylineDistance(before, after), 0.007);  // the steps were lowered
-    // The cap in the program's units (700 mm/min is 27.56 in/min), the old feed after each pass.
+    // The cap in the program's units (700 mm/min is 27.56 in/min), named once per pass, and the
+    // old feed after each pass.
+    EXPECT_NE(r.text.find(inch ? "drawn taut within 0.008 mm, feed F27.56)" : "drawn taut within 0.008 mm, feed F700)"),
+              std::string::npos) << r.text;
     EXPECT_NE(r.text.find(inch ? "F27.56" : "F700"), std::string::npos) << r.text;
     EXPECT_NE(r.text.find(inch ? "\nF40.00\n" : "\nF1000\n"), std::string::npos) << r.text;
   }

@@ -206,7 +206,7 @@ TEST(regionOptimisation, PointsDrawnTautRunFasterWithinTheirTube) {
     return points;
   };
   EXPECT_LE(polylineDistance(cuttingPoints(program), cuttingPoints(after)), options.maximumDeviation + 1e-4);
-  EXPECT_NE(drawn.text.find("points drawn taut within 0.008 mm, constant speed intervals F3000"), std::string::npos);
+  EXPECT_NE(drawn.text.find("re-fitted: points drawn taut within 0.008 mm, feed F3000)"), std::string::npos);
 }
 
 TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
@@ -217,11 +217,13 @@ TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
   const Program program = interpretGcode(text, "noisy-relief.nc").program;
   const RegionOptimisation r = optimiseWhole(text, program);
   ASSERT_TRUE(r.kept) << r.reason;
-  EXPECT_NE(r.plan.find("points drawn taut within 0.008 mm, at most"), std::string::npos) << r.plan;
+  EXPECT_EQ(r.plan.find("the program's feed capped at "), 0u) << r.plan;
+  EXPECT_NE(r.plan.find("points drawn taut within 0.008 mm"), std::string::npos) << r.plan;
+  EXPECT_NE(regionSummary(r).find(". Kept: not slower, no figure worse by more than 2 %"), std::string::npos);
   EXPECT_LT(r.timeAfter, 0.8 * r.timeBefore);
   EXPECT_LT(r.maxPathDistance, 0.01);
   const auto uncapped = std::find_if(r.candidates.begin(), r.candidates.end(), [](const RegionOptimisation::Outcome& c) {
-    return c.plan.find("drawn taut") != std::string::npos && c.plan.find("at most") == std::string::npos;
+    return c.plan.find("the program's feed kept, points drawn taut") == 0;
   });
   ASSERT_NE(uncapped, r.candidates.end());
   EXPECT_FALSE(uncapped->kept);

@@ -256,8 +256,9 @@ struct Candidate {
 };
 
 std::string describe(const Candidate& c) {
-  return fmt::format("{}{}{}{}{}{}{}{}",
-                     c.programmedFeed                  ? "the program's feed kept"
+  return fmt::format("{}{}{}{}{}{}{}",
+                     c.programmedFeed && c.feedCap > 0 ? fmt::format("the program's feed capped at {:.0f} mm/min", std::floor(c.feedCap))
+                     : c.programmedFeed                ? std::string("the program's feed kept")
                      : c.rule == CrossPassRule::None   ? "each pass its own interval feeds"
                      : c.rule == CrossPassRule::Median ? "interval feeds planned across passes (median)"
                                                        : "interval feeds planned across passes (slowest)",
@@ -268,7 +269,6 @@ std::string describe(const Candidate& c) {
                          : "",
                      c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
                      c.tautening > 0 ? fmt::format(", points drawn taut within {:g} mm", c.tautening) : "",
-                     c.feedCap > 0 ? fmt::format(", at most {:.0f} mm/min", std::floor(c.feedCap)) : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
@@ -440,7 +440,12 @@ std::string regionSummary(const RegionOptimisation& r) {
           ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} \u00b5m", a.deviationP99, b.deviationP99)
           : "",
       r.maxPathDistance, r.plan) +
-         (r.kept ? "" : ". Not kept: " + r.reason + "; the program is left as it was");
+         (r.kept ? fmt::format(". Kept: {}no figure worse by more than {:g} %",
+                               r.objective == Objective::Quality
+                                   ? fmt::format("at most {:g} % slower, ", 100 * kQualitySlowdownAllowed)
+                                   : std::string("not slower, "),
+                               100 * kWorseningAllowed)
+                 : ". Not kept: " + r.reason + "; the program is left as it was");
 }
 
 }  // namespace isurface

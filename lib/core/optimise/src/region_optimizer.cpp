@@ -374,10 +374,11 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     pass.lastLine = last.line;
     pass.oldMoves = run.size();
     pass.intervalFeeds = feeds;
-    std::string feedList;
-    for (double f : feeds) feedList += " F" + units.feed(f);
-    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: {}, constant speed intervals{}{}){}",
-                               first.line, last.line, how, feedList,
+    // One feed per interval, or the program's own (perhaps capped) for the whole pass.
+    std::string feedList = options.programmedFeed ? ", feed F" + units.feed(feeds.front()) : ", constant speed intervals";
+    if (!options.programmedFeed)
+      for (double f : feeds) feedList += " F" + units.feed(f);
+    result.text += fmt::format("(iSurface: lines {}-{} re-fitted: {}{}{}){}", first.line, last.line, how, feedList,
                                options.rampAcceleration > 0 ? fmt::format(", ramps of {:g} mm/s^2", options.rampAcceleration) : "",
                                lineEnd);
     pass.newFirstLine = ++written;
