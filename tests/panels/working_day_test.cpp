@@ -311,6 +311,9 @@ TEST(workingDay, TheMapsFiguresExportAsJson) {
   clickControl(*ui, "export.json");
   typeInto(*ui, "export.path", json.string());
   clickControl(*ui, "export.write");
+  // The figures include the predicted deviation: the dump's feedback is loaded first, in the
+  // background, and the file is written when it is in.
+  waitForJobs(*ui);
   ASSERT_EQ(described(*ui)["last_saved"], json.string()) << ui->inspector().statusText();
   const nlohmann::json figures = nlohmann::json::parse(test::readFile(json.string()));
   EXPECT_EQ(figures["quantity"], "Path speed");
