@@ -47,16 +47,16 @@ std::vector<double> deviationCeilings(const RegionOptimisation& r, double target
 std::vector<double> speedPeakCaps(const RegionOptimisation& r) {
   const Trajectory& t = *r.after.samples;
   const std::vector<float> speed = vertexQuantity(Quantity::Speed, t, *r.after.mesh);
-  const std::vector<float> feed = vertexQuantity(Quantity::Feed, t, *r.after.mesh);
+  const LineRange& lines = r.result.newRange;
   RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
   std::vector<float> inRegion;
-  double highestFeed = 0;
   for (std::size_t v = 0; v < speed.size(); ++v) {
     const std::uint32_t line = lineOf[r.after.mesh->vertexSample[v]];
-    if (line < r.result.newRange.first || line > r.result.newRange.last || !std::isfinite(speed[v])) continue;
-    inRegion.push_back(speed[v]);
-    if (std::isfinite(feed[v])) highestFeed = std::max(highestFeed, double(feed[v]));
+    if (line >= lines.first && line <= lines.last && std::isfinite(speed[v])) inRegion.push_back(speed[v]);
   }
+  double highestFeed = 0;  // mm/min, programmed in the region
+  for (const Move& m : r.program->moves)
+    if (m.kind == MoveKind::Linear && m.line >= lines.first && m.line <= lines.last) highestFeed = std::max(highestFeed, double(m.feed));
   std::vector<double> caps;
   for (const double share : kSpeedPeakShares) {
     if (inRegion.empty()) break;

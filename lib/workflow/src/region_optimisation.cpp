@@ -331,10 +331,6 @@ class ClosedLoop {
   std::optional<RegionOptimisation> best_, first_;
 };
 
-}  // namespace
-
-namespace {
-
 Candidate tautCandidate(double tube, double feedCap = 0) {
   Candidate c{CrossPassRule::None, 1.0, false, {}};
   c.tautening = tube;

@@ -156,9 +156,8 @@ std::vector<Vec3> evenlySubdivided(const PiecewiseCubicCurve& curve, double chor
 // The new G1 points of one interval. An Akima spline across a jump in point spacing (a long
 // straight move met by short ones) swings away from the path, so the points are fitted in runs
 // of similar spacing (ratio of neighbouring chords within the distance-ratio threshold); a run
-// whose fit strays from its points by more than `maximumDeviation` (mm) keeps its points.
-std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options, double maximumDeviation) {
-  if (maximumDeviation <= 0) return own;  // no fit could stay close enough
+// whose fit strays from its points by more than `maximumDeviation` keeps its points.
+std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOptions& options) {
   std::vector<Vec3> out = {own.front()};
   const double ratio = options.thresholds.distanceRatio;
   std::size_t start = 0;
@@ -173,7 +172,7 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
     const std::vector<Vec3> run(own.begin() + start, own.begin() + i + 1);
     std::vector<Vec3> piece;
     if (run.size() >= 3) piece = evenlySubdivided(fitAkimaSpline(run), options.chordTolerance, options.maxTurn);
-    if (piece.size() < 2 || polylineDistance(piece, run) > maximumDeviation) piece = run;
+    if (piece.size() < 2 || polylineDistance(piece, run) > options.maximumDeviation) piece = run;
     out.insert(out.end(), piece.begin() + 1, piece.end());
     start = i;
   }
@@ -283,7 +282,6 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   std::vector<Vec3> points = {program.startOf(run.front())};
   for (std::size_t i : run) points.push_back(program.moves[i].end);
   points = drawnTaut(points, options.tautening);
-  const double fitDeviation = std::max(0.0, options.maximumDeviation - options.tautening);
   const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
   // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
   // interval): a spline across an interval's boundary, where spacing or curvature jumps,
@@ -294,7 +292,8 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   std::vector<std::size_t> dataIndex(points.size(), 0);
   for (const ConstantSpeedInterval& interval : partition.intervals) {
     const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-    const std::vector<Vec3> piece = refitInterval(own, options, fitDeviation);
+    // Points drawn taut have used the deviation a fit would be allowed: they are not fitted.
+    const std::vector<Vec3> piece = options.tautening > 0 ? own : refitInterval(own, options);
     const std::size_t offset = plan.points.size() - 1;
     plan.points.insert(plan.points.end(), piece.begin() + 1, piece.end());
     for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
@@ -351,11 +350,8 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   };
   // First every pass is re-fitted and its interval feeds planned; then the feeds are planned
   // across passes; then the passes are written.
-  // The fit may stray from the taut points by what the tautening left of the deviation.
-  const std::string how =
-      options.tautening <= 0 ? std::string("Akima spline in arc length")
-      : fmt::format("points drawn taut within {:g} mm{}", options.tautening,
-                    options.maximumDeviation > options.tautening ? ", Akima spline in arc length" : "");
+  const std::string how = options.tautening > 0 ? fmt::format("points drawn taut within {:g} mm", options.tautening)
+                                                 : std::string("Akima spline in arc length");
   std::vector<PassFeeds> plans;
   for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
   result.fittedLower = fittedBox.lower;

@@ -43,8 +43,8 @@ struct OptimizeOptions {
   // (feed_ramps.h); 0: one step at the interval's end.
   double rampAcceleration = 0;
   CrossPassRule crossPass = CrossPassRule::None;
-  // mm: how far each point of a pass may move toward a taut path before the fit (taut_path.h),
-  // taken out of `maximumDeviation`; 0: the fit goes through the program's own points (the
+  // mm: how far each point of a pass may move toward a taut path (taut_path.h) instead of being
+  // fitted; at most `maximumDeviation`. 0: the fit goes through the program's own points (the
   // paper's steps).
   double tautening = 0;
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
