@@ -181,7 +181,7 @@ TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
     const InterpretResult original = interpretGcode(text, "stepped.nc");
     ASSERT_TRUE(original.ok()) << original.errors.front().str();
     OptimizeOptions options;
-    options.tautening = 0.008;
+    options.shape = PathShape::DrawnTaut;
     options.programmedFeed = true;
     options.feedCap = 700.4;  // mm/min
     const OptimizeResult r = optimizeRegion(text, original.program, LineRange{1, 200}, defaultMachine(), options);

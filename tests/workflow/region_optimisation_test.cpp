@@ -91,7 +91,7 @@ TEST(regionOptimisation, ACandidateWorseThanTheProgramIsNotKept) {
   EXPECT_NE(r.reason.find("inconsistency between passes"), std::string::npos) << r.reason;
   EXPECT_GT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99 * (1 + kWorseningAllowed));
   EXPECT_NE(regionSummary(r).find("Not kept"), std::string::npos);
-  EXPECT_TRUE(worsening(r).has_value());
+  EXPECT_TRUE(whyNotKept(r).has_value());
 }
 
 TEST(regionOptimisation, ACandidateNoWorseOnAnyFigureIsKept) {
@@ -105,7 +105,7 @@ TEST(regionOptimisation, ACandidateNoWorseOnAnyFigureIsKept) {
   request.box = std::make_pair(worst.lower, worst.upper);
   const RegionOptimisation r = optimiseRegion(readFile(path), program, before, defaultMachine(), request);
   EXPECT_TRUE(r.kept) << r.reason;
-  EXPECT_FALSE(worsening(r).has_value());
+  EXPECT_FALSE(whyNotKept(r).has_value());
   EXPECT_LE(r.timeAfter, r.timeBefore);
   EXPECT_LT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99);
 }
@@ -195,7 +195,7 @@ TEST(regionOptimisation, PointsDrawnTautRunFasterWithinTheirTube) {
   EXPECT_GT(r.candidates.front().timeAfter, r.timeBefore);
 
   OptimizeOptions options;
-  options.tautening = options.maximumDeviation;
+  options.shape = PathShape::DrawnTaut;
   options.programmedFeed = true;
   const OptimizeResult drawn = optimizeRegion(text, program, r.lines, defaultMachine(), options);
   const Program after = interpretGcode(drawn.text, "zig-zag-relief.nc").program;

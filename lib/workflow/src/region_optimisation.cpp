@@ -219,7 +219,7 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
       polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
   r.timeBefore = machiningTime(*before.run.samples);
   r.timeAfter = machiningTime(*r.after.samples);
-  if (const auto why = worsening(r)) {
+  if (const auto why = whyNotKept(r)) {
     r.kept = false;
     r.reason = *why;
   }
@@ -227,19 +227,26 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   return r;
 }
 
-// The region's figures after over before, summed (smaller is better): how Objective::Quality
+// The region's figures after over before, averaged (smaller is better): how Objective::Quality
 // ranks the candidates it keeps.
 double qualityScore(const RegionOptimisation& r) {
   const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
   auto ratio = [](double before, double after, double floor) { return std::max(after, floor) / std::max(before, floor); };
-  return ratio(a.speedFluctuation, b.speedFluctuation, 0.1) + ratio(a.inconsistencyP99, b.inconsistencyP99, 0.1) +
-         ratio(a.inconsistencyMean, b.inconsistencyMean, 0.1) + ratio(a.jerkP99, b.jerkP99, 1.0) +
-         (a.hasDeviation ? ratio(a.deviationP99, b.deviationP99, 0.001) : 0.0);
+  const double sum = ratio(a.speedFluctuation, b.speedFluctuation, 0.1) + ratio(a.inconsistencyP99, b.inconsistencyP99, 0.1) +
+                     ratio(a.inconsistencyMean, b.inconsistencyMean, 0.1) + ratio(a.jerkP99, b.jerkP99, 1.0) +
+                     (a.hasDeviation ? ratio(a.deviationP99, b.deviationP99, 0.001) : 0.0);
+  return sum / (a.hasDeviation ? 5.0 : 4.0);
 }
+
+// The machining time after over before added to the quality score, so that the time weighs as
+// much as the figures together: how Objective::Balanced ranks the candidates it keeps, none of
+// them slower.
+double balancedScore(const RegionOptimisation& r) { return qualityScore(r) + r.timeAfter / r.timeBefore; }
 
 // Whether `r` (kept) is a better choice than `best` (kept) for the objective.
 bool betterFor(Objective objective, const RegionOptimisation& r, const RegionOptimisation& best) {
   if (objective == Objective::Time) return r.timeAfter < best.timeAfter;
+  if (objective == Objective::Balanced) return balancedScore(r) < balancedScore(best);
   return qualityScore(r) < qualityScore(best);
 }
 
@@ -250,12 +257,13 @@ struct Candidate {
   std::vector<double> ceilings;   // mm/min per source line, where deviation was held
   double normalAcceleration = 0;  // mm/s^2, no bend run faster: the servo's deviation held
   double ramp = 0;                // mm/s^2, ramps between interval feeds
-  double tautening = 0;           // mm, points drawn taut before the fit
+  PathShape shape = PathShape::Fitted;
   bool programmedFeed = false;    // the program's feed kept: the NC's planner sets the speed
   double feedCap = 0;             // mm/min, with programmedFeed: no faster (0: no cap)
 };
 
-std::string describe(const Candidate& c) {
+// `tube`: mm, how far a path drawn taut or rounded may stray.
+std::string describe(const Candidate& c, double tube) {
   return fmt::format("{}{}{}{}{}{}{}",
                      c.programmedFeed && c.feedCap > 0 ? fmt::format("the program's feed capped at {:.0f} mm/min", std::floor(c.feedCap))
                      : c.programmedFeed                ? std::string("the program's feed kept")
@@ -268,7 +276,9 @@ std::string describe(const Candidate& c) {
                          ? fmt::format(", bends within the servo's deviation ({:.0f} mm/s^2)", c.normalAcceleration)
                          : "",
                      c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
-                     c.tautening > 0 ? fmt::format(", points drawn taut within {:g} mm", c.tautening) : "",
+                     c.shape == PathShape::DrawnTaut        ? fmt::format(", points drawn taut within {:g} mm", tube)
+                     : c.shape == PathShape::CornersRounded ? fmt::format(", corners rounded within {:g} mm", tube)
+                                                            : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
@@ -292,7 +302,7 @@ class ClosedLoop {
     candidate.options.lineFeedCeiling = c.ceilings;
     candidate.options.normalAccelerationLimit = c.normalAcceleration;
     candidate.options.rampAcceleration = c.ramp;
-    candidate.options.tautening = c.tautening;
+    candidate.options.shape = c.shape;
     candidate.options.programmedFeed = c.programmedFeed;
     candidate.options.feedCap = c.feedCap;
     if (c.fine) candidate.options.thresholds.error = std::min(candidate.options.thresholds.error, kFineCharacteristicError);
@@ -302,15 +312,16 @@ class ClosedLoop {
     const double step = 1.0 / kExpectedCandidates;
     const double at = std::min(1.0 - step, step * double(judged_.size()));
     if (!repeated) judged_.push_back(result.text);
+    last_ = RegionOptimisation{};  // its run is let go (unless kept as the best) before the next one is made
     last_ = evaluateCandidate(std::move(result), baseline_, machine_, candidate, progressStage(progress_, at, at + step));
-    last_.plan = describe(c);
+    last_.plan = describe(c, candidate.options.maximumDeviation);
     if (!repeated) outcomes_.push_back({last_.plan, last_.kept, last_.reason, last_.timeAfter, last_.regionAfter, last_.wholeAfter});
     if (last_.kept && (!best_ || betterFor(request_.objective, last_, *best_))) best_ = last_;
-    if (!first_ && !last_.kept) first_ = last_;
+    // The first candidate is reported only when none is kept: its run is not held beside them.
+    if (!first_ && !best_ && !last_.kept) first_ = last_;
+    if (best_) first_.reset();
     return &last_;
   }
-
-  bool done() const { return best_ && request_.objective == Objective::Balanced; }
 
   RegionOptimisation result() {
     RegionOptimisation chosen = best_ ? std::move(*best_) : std::move(*first_);
@@ -319,7 +330,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 16;
+  static constexpr std::size_t kExpectedCandidates = 21;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -331,27 +342,26 @@ class ClosedLoop {
   std::optional<RegionOptimisation> best_, first_;
 };
 
-Candidate tautCandidate(double tube, double feedCap = 0) {
+Candidate shapeCandidate(PathShape shape, double feedCap = 0) {
   Candidate c{CrossPassRule::None, 1.0, false, {}};
-  c.tautening = tube;
+  c.shape = shape;
   c.programmedFeed = true;
   c.feedCap = feedCap;
   return c;
 }
 
-// Last, the program's own points drawn taut within `tube` (mm) and its feed kept: no longer the
-// paper's fit, but what makes a program whose corners the machine already runs at its limits (a
-// relief whose points step up and down at every point) any faster. Where that run is faster,
-// its speed now peaks between the corners it no longer brakes at, and swings more: the peaks are
-// trimmed by capping the feed (speedPeakCaps), from the highest cap down, until a cap is kept
-// (under Objective::Balanced) or makes the program slower (a lower one would be slower still).
-void judgeTautCandidates(ClosedLoop& loop, double tube) {
-  if (loop.done()) return;
-  const RegionOptimisation* taut = loop.judge(tautCandidate(tube));
-  if (!taut || !(taut->timeAfter < taut->timeBefore)) return;
-  for (const double cap : speedPeakCaps(*taut)) {
-    if (loop.done()) return;
-    const RegionOptimisation* capped = loop.judge(tautCandidate(tube, cap));
+// Last, the program's own path drawn anew within the tube and its feed kept: no longer the
+// paper's fit, but what makes a program whose corners the machine brakes at (a relief whose
+// points step up and down at every point, a grid of points whose slope changes at each) any
+// smoother and faster. Where that run is faster, its speed now peaks between the corners it
+// no longer brakes at, and swings more: the peaks are trimmed by capping the feed
+// (speedPeakCaps), from the highest cap down, until a cap makes the program slower (a lower
+// one would be slower still).
+void judgeShapeCandidates(ClosedLoop& loop, PathShape shape) {
+  const RegionOptimisation* drawn = loop.judge(shapeCandidate(shape));
+  if (!drawn || !(drawn->timeAfter < drawn->timeBefore)) return;
+  for (const double cap : speedPeakCaps(*drawn)) {
+    const RegionOptimisation* capped = loop.judge(shapeCandidate(shape, cap));
     if (capped && slower(*capped)) return;
   }
 }
@@ -381,36 +391,32 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
     if (r && !r->kept && slower(*r)) tooSlow.push_back(rule);
     if (r && !deviationTarget && r->regionBefore.hasDeviation)
       deviationTarget = std::min(r->regionBefore.deviationP99, r->wholeBefore.deviationP99);
-    if (loop.done()) break;
   }
   const double limit = deviationTarget ? kServoBoundShare * *deviationTarget / servoDeviationPerNormalAcceleration(machine) : 0.0;
   // A run that deviated by nothing (feedback equal to the command) gives no bound to plan to.
-  if (!loop.done() && std::isfinite(limit) && limit > 0) {
-    for (const double ramp : kRampAccelerations) {
-      loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
-      if (loop.done()) break;
-    }
-  }
-  const RegionOptimisation* fine = loop.done() ? nullptr : loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
+  if (std::isfinite(limit) && limit > 0)
+    for (const double ramp : kRampAccelerations) loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
+  const RegionOptimisation* fine = loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {
     const double target = std::min(fine->regionBefore.deviationP99, fine->wholeBefore.deviationP99);
     std::vector<double> ceilings;
-    for (int round = 0; round < kDeviationRounds && fine && !loop.done(); ++round) {
+    for (int round = 0; round < kDeviationRounds && fine; ++round) {
       ceilings = deviationCeilings(*fine, target, ceilings);
       fine = loop.judge({CrossPassRule::None, 1.0, true, ceilings});
     }
   }
   for (const CrossPassRule rule : {CrossPassRule::None, CrossPassRule::Median}) {
     // Lower feeds can only take longer still.
-    if (loop.done() || std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
+    if (std::find(tooSlow.begin(), tooSlow.end(), rule) != tooSlow.end()) continue;
     loop.judge({rule, 0.95, false, {}});
   }
-  judgeTautCandidates(loop, request.options.maximumDeviation);
+  judgeShapeCandidates(loop, PathShape::CornersRounded);
+  judgeShapeCandidates(loop, PathShape::DrawnTaut);
   if (progress) progress(1.0);
   return loop.result();
 }
 
-std::optional<std::string> worsening(const RegionOptimisation& r) {
+std::optional<std::string> whyNotKept(const RegionOptimisation& r) {
   if (slower(r)) return fmt::format("the program would take longer ({:.3f} -> {:.3f} s)", r.timeBefore, r.timeAfter);
   if (r.maxPathDistance > kPathMoveAllowed)
     return fmt::format("the path would move by {:.4f} mm, more than {:g} mm", r.maxPathDistance, kPathMoveAllowed);
@@ -420,6 +426,11 @@ std::optional<std::string> worsening(const RegionOptimisation& r) {
     return "in the region, " + worse;
   if (const std::string worse = worseFigure(r.wholeBefore, r.wholeAfter, kWorseningAllowed); !worse.empty())
     return "over the whole program, " + worse;
+  if (r.timeAfter > r.timeBefore * (1 - kGainRequired) &&
+      betterFigure(r.regionBefore, r.regionAfter, kGainRequired).empty())
+    return fmt::format("it would help nothing: neither the time ({:.3f} -> {:.3f} s) nor any figure of the region is "
+                       "better by {:g} % or more",
+                       r.timeBefore, r.timeAfter, 100 * kGainRequired);
   return std::nullopt;
 }
 

@@ -3,6 +3,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -91,24 +92,40 @@ QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMes
   return f;
 }
 
-std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed) {
-  // Below its floor a change is no change (a speed a tenth of a mm/min, a jerk of 1 mm/s^3,
-  // a nanometre): a figure that was 0 does not make every candidate worse.
-  const struct {
-    const char* name;
-    double before, after;
-    const char* unit;
-    double floor;
-  } figures[] = {
+namespace {
+
+struct NamedFigure {
+  const char* name;
+  double before, after;
+  const char* unit;
+  double floor;  // below it a change is no change
+};
+
+// Below its floor a change is no change (a speed a tenth of a mm/min, a jerk of 1 mm/s^3, a
+// nanometre): a figure that was 0 does not make every candidate worse.
+std::array<NamedFigure, 5> namedFigures(const QualityFigures& before, const QualityFigures& after) {
+  return {{
       {"speed fluctuation", before.speedFluctuation, after.speedFluctuation, "mm/min", 0.1},
       {"inconsistency between passes (p99)", before.inconsistencyP99, after.inconsistencyP99, "mm/min", 0.1},
       {"inconsistency between passes (mean)", before.inconsistencyMean, after.inconsistencyMean, "mm/min", 0.1},
       {"jerk (p99)", before.jerkP99, after.jerkP99, "mm/s^3", 1.0},
       {"predicted deviation (p99)", before.deviationP99, after.deviationP99, "\u00b5m", 0.001},
-  };
-  for (const auto& f : figures)
-    if (f.after > f.before * (1 + allowed) + f.floor)
-      return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit);
+  }};
+}
+
+std::string named(const NamedFigure& f) { return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit); }
+
+}  // namespace
+
+std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed) {
+  for (const NamedFigure& f : namedFigures(before, after))
+    if (f.after > f.before * (1 + allowed) + f.floor) return named(f);
+  return {};
+}
+
+std::string betterFigure(const QualityFigures& before, const QualityFigures& after, double required) {
+  for (const NamedFigure& f : namedFigures(before, after))
+    if (f.after < f.before * (1 - required) - f.floor) return named(f);
   return {};
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <string_view>
 
 #include <fmt/format.h>
@@ -19,11 +20,16 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/optimise/cross_pass_feeds.h"
 #include "isurface/optimise/feed_ramps.h"
+#include "isurface/optimise/rounded_corners.h"
 #include "isurface/optimise/taut_path.h"
 
 namespace isurface {
 
 namespace {
+
+// rad: each chord of a rounded corner turns the path by no more. The NC passes such a junction
+// at the speeds of finishing without braking for its jerk; finer pieces only multiply lines.
+constexpr double kRoundedPieceTurn = 0.1;
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
@@ -90,10 +96,10 @@ bool sharpTurnInPlan(const Vec3& a, const Vec3& b) {
 
 // Runs of consecutive plain G1 moves in the range, split where the path turns back in XY (the
 // end of a raster pass) and at sharp corners (a step-over), around which a spline would swing.
-// Points drawn taut soften a corner within their tube like any other point, so for them only
-// a corner seen from above ends a run, not one in Z.
+// A path drawn taut or rounded softens a corner within its tube like any other point, so for
+// them only a corner seen from above ends a run, not one in Z.
 std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std::vector<std::string_view>& lines,
-                                               LineRange range, bool drawnTaut) {
+                                               LineRange range, bool cornersInZKept) {
   std::vector<std::vector<std::size_t>> runs;
   std::vector<std::size_t> run;
   auto close = [&] {
@@ -117,7 +123,7 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
       const Vec3 b = (m.end - program.startOf(i)).normalized();
       const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
       const bool consecutive = m.line == previous.line + 1;
-      const bool corner = drawnTaut ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
+      const bool corner = cornersInZKept ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
       const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
       if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
     }
@@ -281,7 +287,15 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
                    const OptimizeOptions& options, FittedBox& fitted) {
   std::vector<Vec3> points = {program.startOf(run.front())};
   for (std::size_t i : run) points.push_back(program.moves[i].end);
-  points = drawnTaut(points, options.tautening);
+  // Per segment of `points`, the move of the run it stands for.
+  std::vector<std::size_t> moveOf(points.size() - 1);
+  std::iota(moveOf.begin(), moveOf.end(), std::size_t{0});
+  if (options.shape == PathShape::DrawnTaut) points = drawnTaut(points, options.maximumDeviation);
+  if (options.shape == PathShape::CornersRounded) {
+    RoundedPath rounded = roundedCorners(points, options.maximumDeviation, kRoundedPieceTurn);
+    points = std::move(rounded.points);
+    moveOf = std::move(rounded.oldSegment);
+  }
   const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
   // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
   // interval): a spline across an interval's boundary, where spacing or curvature jumps,
@@ -292,8 +306,8 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   std::vector<std::size_t> dataIndex(points.size(), 0);
   for (const ConstantSpeedInterval& interval : partition.intervals) {
     const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-    // Points drawn taut have used the deviation a fit would be allowed: they are not fitted.
-    const std::vector<Vec3> piece = options.tautening > 0 ? own : refitInterval(own, options);
+    // A path drawn taut or rounded has used the deviation a fit would be allowed: it is not fitted.
+    const std::vector<Vec3> piece = options.shape != PathShape::Fitted ? own : refitInterval(own, options);
     const std::size_t offset = plan.points.size() - 1;
     plan.points.insert(plan.points.end(), piece.begin() + 1, piece.end());
     for (std::size_t i = interval.first, j = 0; i <= interval.last; ++i) {
@@ -307,7 +321,7 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   plan.sourceLines.assign(plan.points.size(), 0);
   for (std::size_t i = 0; i + 1 < points.size(); ++i)
     for (std::size_t k = dataIndex[i] + 1; k <= dataIndex[i + 1] && k < plan.points.size(); ++k)
-      plan.sourceLines[k] = program.moves[run[i]].line;
+      plan.sourceLines[k] = program.moves[run[moveOf[i]]].line;
   const double feed = program.moves[run.front()].feed;
   plan.feeds = options.programmedFeed
                    ? std::vector<double>(partition.intervals.size(),
@@ -330,7 +344,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
-  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, options.tautening > 0);
+  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, options.shape != PathShape::Fitted);
   runs.erase(std::remove_if(runs.begin(), runs.end(), [&](const auto& r) { return r.size() < options.minimumMoves; }),
              runs.end());
   if (runs.empty())
@@ -350,8 +364,11 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   };
   // First every pass is re-fitted and its interval feeds planned; then the feeds are planned
   // across passes; then the passes are written.
-  const std::string how = options.tautening > 0 ? fmt::format("points drawn taut within {:g} mm", options.tautening)
-                                                 : std::string("Akima spline in arc length");
+  const std::string how = options.shape == PathShape::DrawnTaut
+                             ? fmt::format("points drawn taut within {:g} mm", options.maximumDeviation)
+                         : options.shape == PathShape::CornersRounded
+                             ? fmt::format("corners rounded within {:g} mm", options.maximumDeviation)
+                             : std::string("Akima spline in arc length");
   std::vector<PassFeeds> plans;
   for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
   result.fittedLower = fittedBox.lower;

@@ -50,9 +50,9 @@ ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source
 std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line);
 
 // What the closed loop chooses for, among candidates no figure of which is worse by more than
-// kWorseningAllowed. Balanced: the first such candidate that is not slower (the paper's plan
-// first). Time: the fastest of them that is not slower. Quality: the one whose figures improve
-// most, even if it takes up to kQualitySlowdownAllowed longer.
+// kWorseningAllowed. Balanced: of those not slower, the one whose figures and time improve most
+// together. Time: the fastest of them that is not slower. Quality: the one whose figures
+// improve most, even if it takes up to kQualitySlowdownAllowed longer.
 enum class Objective { Balanced, Time, Quality };
 
 // How much longer (relative) the program may take under Objective::Quality.
@@ -77,8 +77,9 @@ struct RegionOptimisation {
   double timeBefore = 0, timeAfter = 0;    // s, machining time of the whole program
   double maxPathDistance = 0;              // mm, new path to old over the region
   // The new program is kept only when it is no slower, its path moved no more than
-  // kPathMoveAllowed and no figure, of the region or of the whole program, is worse by more
-  // than kWorseningAllowed; otherwise `reason` says which, and the program stays as it was.
+  // kPathMoveAllowed, no figure, of the region or of the whole program, is worse by more than
+  // kWorseningAllowed, and it helps: its time or a figure of the region is better by at least
+  // kGainRequired; otherwise `reason` says why, and the program stays as it was.
   bool kept = true;
   std::string reason;
   std::string plan;  // the candidate reported: how its interval feeds were planned
@@ -100,13 +101,17 @@ constexpr double kWorseningAllowed = 0.02;
 // mm: how far the new programmed path may lie from the old one for the new program to be kept.
 constexpr double kPathMoveAllowed = 0.01;
 
-// Why the new program is worse than the old one by the rule above (the time allowed depends on
-// r.objective), or nothing when it is not.
-std::optional<std::string> worsening(const RegionOptimisation& r);
+// How much better (relative) the time or a figure of the region must get for the new program
+// to be kept: a change smaller than what a figure may lose is no gain worth a new program.
+constexpr double kGainRequired = kWorseningAllowed;
+
+// Why the new program is not kept by the rule above (the time allowed depends on
+// r.objective), or nothing when it is.
+std::optional<std::string> whyNotKept(const RegionOptimisation& r);
 
 // `text` is the program's source, `program` its interpretation, `before` its run on `machine`.
 // Progress: 0..1 over re-fitting and simulating the new program. The candidate is simulated and
-// judged (`worsening`); one that is worse is reported, not kept (`kept`, `reason`).
+// judged (`whyNotKept`); one that is worse is reported, not kept (`kept`, `reason`).
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
                                   const Machine& machine, const RegionRequest& request,
                                   const ProgressCallback& progress = {});

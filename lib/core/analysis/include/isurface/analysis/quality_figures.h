@@ -40,4 +40,8 @@ double percentileOf(std::vector<double>& values, double percent);
 // figure, naming the figure and both values; empty when it is not.
 std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed);
 
+// How `after` is better than `before` by at least `required` on any figure, naming the first
+// such figure and both values; empty when none is.
+std::string betterFigure(const QualityFigures& before, const QualityFigures& after, double required);
+
 }  // namespace isurface

@@ -2,7 +2,8 @@
 // Region re-optimisation (the loop of the paper's Figure 6): the G1 moves of a line range are
 // split into passes, each pass is fitted by an Akima spline in arc length and resampled into
 // G1 moves within a chord tolerance, and every constant speed interval gets one feed; or,
-// instead of the fit, its points are drawn taut (taut_path.h) and it keeps the program's feed.
+// instead of the fit, its points are drawn taut or its corners rounded (PathShape) and it keeps
+// the program's feed.
 // Every line outside the changed passes is kept byte for byte; new blocks carry comments naming
 // the lines they replace.
 #include <cstdint>
@@ -25,6 +26,13 @@ enum class CrossPassRule {
   Envelope,  // an interval runs at the slowest feed of the passes around it
 };
 
+// How a pass's path is drawn anew.
+enum class PathShape {
+  Fitted,          // an Akima spline through the program's own points (the paper's steps)
+  DrawnTaut,       // its points drawn taut within maximumDeviation (taut_path.h), not fitted
+  CornersRounded,  // its corners cut by arcs within maximumDeviation (rounded_corners.h), not fitted
+};
+
 // mm: how far a chord of the new G1 moves may stray from the fitted spline unless the user
 // says otherwise (`--tolerance`).
 constexpr double kDefaultChordTolerance = 0.005;
@@ -43,10 +51,7 @@ struct OptimizeOptions {
   // (feed_ramps.h); 0: one step at the interval's end.
   double rampAcceleration = 0;
   CrossPassRule crossPass = CrossPassRule::None;
-  // mm: how far each point of a pass may move toward a taut path (taut_path.h) instead of being
-  // fitted; at most `maximumDeviation`. 0: the fit goes through the program's own points (the
-  // paper's steps).
-  double tautening = 0;
+  PathShape shape = PathShape::Fitted;
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
   // (where it already runs at its own limits at every point, one feed per interval is slower),
   // but no faster than `feedCap` (mm/min, whole; 0: no cap).
