@@ -193,7 +193,7 @@ Command optimizeCommand() {
       o->machine.addTo(sub, "machine description (JSON)");
       o->gapLimit.addTo(sub);
       sub.add_option("--objective", o->objective,
-                     "balanced: no figure worse, time not longer (first such candidate); time: the fastest such "
+                     "balanced: no figure worse, time not longer (the best figures and time together); time: the fastest such "
                      "candidate; quality: the candidate that improves the region most, up to 5 % longer")
           ->transform(CLI::CheckedTransformer(kObjectives, CLI::ignore_case))
           ->default_str("balanced");

@@ -76,6 +76,24 @@ TEST(roundedCorners, EachNewSegmentNamesTheOldOneItLiesAlong) {
   }
 }
 
+TEST(roundedCorners, ASharpCornersSmallArcIsCutIntoFewerLongerChords) {
+  // 1.2 rad: within 8 um of the corner the arc is about 45 um long; chords of 0.1 rad would be
+  // 4 um, shorter than the 0.25 um of a program's last decimal can aim.
+  const double turn = 1.2;
+  const std::vector<Vec3> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1 + std::cos(turn), 0, std::sin(turn))};
+  const RoundedPath r = roundedCorners(corner, 0.008, 0.1);
+  ASSERT_GT(r.points.size(), 3u);
+  EXPECT_LT(r.points.size(), 7u);
+  for (std::size_t k = 1; k + 1 < r.points.size(); ++k) {
+    if (k > 1) {
+      EXPECT_GE((r.points[k] - r.points[k - 1]).norm(), 0.02) << k;  // mm, a chord of the arc
+    }
+  }
+  EXPECT_LE(polylineDistance(corner, r.points), 0.008 + 1e-9);
+  EXPECT_LE(polylineDistance(r.points, corner), 0.008 + 1e-9);
+  EXPECT_GT(polylineDistance(corner, r.points), 0.006);
+}
+
 TEST(roundedCorners, ShortLegsAndSlightCornersAreLeftTheirShape) {
   // Legs of 10 um: the arc takes less than half of each, so no two points coincide and the
   // corner is cut by less than the tube.

@@ -188,7 +188,7 @@ void drawOptimiseDialog(Inspector::State& s) {
     }
   }
   // As `optimize --objective`: what the closed loop chooses among candidates no figure of which is worse.
-  static const char* const kObjectiveHelp[] = {"no figure worse, time not longer: the first such candidate",
+  static const char* const kObjectiveHelp[] = {"no figure worse, time not longer: the best figures and time together",
                                                 "no figure worse, time not longer: the fastest such candidate",
                                                 "no figure worse, up to 5 % longer: the best figures"};
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);

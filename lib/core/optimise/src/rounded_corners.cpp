@@ -14,6 +14,10 @@ namespace {
 constexpr double kLegShare = 0.45;
 // rad: a corner sharper than this is a turn back, whose arc within the tube would be a point.
 constexpr double kSharpestCorner = 2.8;
+// mm: no chord of an arc is shorter, unless the arc is. The 4 or 5 decimals a program is written
+// with blur a shorter chord's direction (0.25 um across 10 um is 0.025 rad), and the NC would
+// see the noise as corners; finer chords would also only multiply lines.
+constexpr double kShortestChord = 0.02;
 
 struct Arc {
   Vec3 centre, fromCentreStart, fromCentreEnd;
@@ -35,13 +39,19 @@ Arc arcAt(const Vec3& before, const Vec3& corner, const Vec3& after, double tube
   const Vec3 u = in / inLength, w = out / outLength;
   const double turn = std::acos(std::clamp(u.dot(w), -1.0, 1.0));
   if (turn <= pieceTurn || turn > kSharpestCorner) return arc;
-  const int pieces = static_cast<int>(std::ceil(turn / pieceTurn));
   // The corner lies R / cos(turn / 2) from the centre; the chord nearest it, R cos(turn / pieces
   // / 2) (its middle, with an odd count) or R (a point on the bisector, with an even one).
-  const double nearest = pieces % 2 == 0 ? 1.0 : std::cos(0.5 * turn / pieces);
-  double radius = tube / (1.0 / std::cos(0.5 * turn) - nearest);
-  const double tangent = std::min({radius * std::tan(0.5 * turn), kLegShare * inLength, kLegShare * outLength});
-  radius = tangent / std::tan(0.5 * turn);
+  auto radiusFor = [&](int pieces) {
+    const double nearest = pieces % 2 == 0 ? 1.0 : std::cos(0.5 * turn / pieces);
+    const double radius = tube / (1.0 / std::cos(0.5 * turn) - nearest);
+    const double tangent = std::min({radius * std::tan(0.5 * turn), kLegShare * inLength, kLegShare * outLength});
+    return tangent / std::tan(0.5 * turn);
+  };
+  int pieces = static_cast<int>(std::ceil(turn / pieceTurn));
+  double radius = radiusFor(pieces);
+  const int longChords = std::max(1, static_cast<int>(radius * turn / kShortestChord));
+  if (longChords < pieces) radius = radiusFor(pieces = longChords);
+  const double tangent = radius * std::tan(0.5 * turn);
   const Vec3 start = corner - tangent * u, end = corner + tangent * w;
   const Vec3 bisector = (w - u).normalized();
   arc.centre = corner + bisector * (radius / std::cos(0.5 * turn));

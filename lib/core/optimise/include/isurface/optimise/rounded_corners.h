@@ -1,7 +1,8 @@
 #pragma once
 // A pass's corners cut by arcs inside a tube around it. A corner the path turns by theta at is
 // replaced by an arc tangent to both legs whose chords pass no further than `tube` (mm) from the
-// corner, written as chords that each turn the path by at most `pieceTurn` (rad). The machine
+// corner, written as chords that each turn the path by at most `pieceTurn` (rad), or fewer where
+// they would be shorter than 0.02 mm (a small arc at a sharp corner). The machine
 // then turns the corner along a curve instead of a velocity step, which a jerk-limited
 // interpolator passes by braking to a speed at which the step fits its jerk budget.
 // Unlike a spline through the points (which keeps every point, so its bulges between points grow
