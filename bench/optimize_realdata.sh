@@ -8,7 +8,7 @@
 # It exits 1 when a run fails or cameo.nc exceeds its bound.
 # With --every-mode it runs instead the never-worse property test (tests/cli/
 # region_optimizer_cli_test.cpp) on cameo.nc and stellabee1.ngc in every mode and objective,
-# the part CI leaves out (about 14 minutes of CPU).
+# the part CI leaves out (about 13 minutes here).
 # Usage: bench/optimize_realdata.sh [BUILD_DIR [PROGRAM...]]   (default: build, cameo.nc)
 #        bench/optimize_realdata.sh --every-mode [BUILD_DIR]
 set -euo pipefail

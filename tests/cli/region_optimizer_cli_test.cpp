@@ -186,8 +186,8 @@ TEST(regionOptimizer, NoModeWritesAWorseProgram) {
 // The same on the programs of ../shared/realdata, written by others, in every mode and
 // objective. The small ones in one test. cameo.nc (196 min) --all and --auto, stellabee1.ngc
 // (inch, 142 min) --auto here (one test each, so that they run beside the others); the rest of
-// those two takes about 14 minutes of CPU (each objective other than balanced simulates every
-// candidate; stellabee1.ngc --all about a minute and a quarter) and is run by
+// those two takes about 13 minutes (every objective simulates every candidate; stellabee1.ngc
+// --all about a minute and a quarter) and is run by
 // bench/optimize_realdata.sh --every-mode (the DISABLED_ tests below). Of the small programs, the LinuxCNC examples other than
 // linuxcnc_test.ngc have no finishing passes (or are inverse-time) and the NIST programs use a
 // word iSurface refuses: those are refused with an error, the others never, but for a region

@@ -3,6 +3,8 @@
 // tests/cli/optimise_difference_panel_cli_test.cpp.)
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <cmath>
 
 #include "isurface/panels/inspector.h"
@@ -57,4 +59,8 @@ TEST(optimiseDifferencePanel, TheRegionsPassesAreComparedWithTheirReplacements) 
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
   EXPECT_NE(inspector.optimisedDifference(), nullptr);
+  // The comparison still shown says it is the earlier one, of the lines it was made for.
+  const nlohmann::json shown = nlohmann::json::parse(inspector.describe())["optimised"];
+  EXPECT_EQ(shown["lines"], nlohmann::json::array({105, 400}));
+  EXPECT_EQ(shown["superseded_by"], "optimising lines 1-5 failed");
 }

@@ -137,6 +137,8 @@ void Inspector::State::takeJobResult() {
   // The reason a dump was not joined goes with the program that opens by itself next, and
   // with nothing else.
   const std::string notice = std::exchange(joinNotice, std::string());
+  if (result && result->optimisation && comparison && (job.wasCancelled() || !job.error().empty()))
+    comparison->supersededBy = job.label() + (job.wasCancelled() ? " was cancelled" : " failed");
   if (job.wasCancelled()) {
     status = job.label() + ": cancelled";
     return;

@@ -95,7 +95,14 @@ std::string Inspector::describe() const {
            {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"},
            {"vertices", doc->map.mesh ? doc->map.mesh->vertexSample.size() : 0},
            {"close_up", closeUpJson(s.refinement)}};
+  nlohmann::json optimised;  // the re-optimisation shown beside the map
+  if (s.comparison)
+    optimised = {{"lines", {s.comparison->first, s.comparison->last}},
+                 {"kept", s.comparison->kept},
+                 {"summary", s.comparison->summary},
+                 {"superseded_by", s.comparison->supersededBy}};
   const nlohmann::json out = {{"documents", documents},
+                              {"optimised", optimised},
                               {"map", map},
                               {"view_text", map.empty() ? emptyViewText(s) : std::string()},
                               {"length_unit", s.units().lengthUnit()},

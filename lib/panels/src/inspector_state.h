@@ -98,6 +98,9 @@ struct Comparison {
   vis::QualityMap differenceMap;
   std::shared_ptr<vis::QualityScene> differenceScene;
   bool showDifference = false;
+  // Set when a later re-optimisation was cancelled or failed: this one is still shown, and says
+  // it is the earlier result, not what was last asked for.
+  std::string supersededBy;
 };
 
 // A second run of the active document's program (a Biip dump: another simulation, a machine's
@@ -116,6 +119,7 @@ struct RunComparisonView {
 // What a background job hands over to the UI thread when it ends.
 struct JobResult {
   std::shared_ptr<Comparison> comparison;   // a re-optimised region
+  bool optimisation = false;                 // the job re-optimises a region (even if it ends in nothing)
   std::shared_ptr<RunComparisonView> runComparison;  // a second run compared
   std::unique_ptr<Document> document;        // a newly loaded document
   std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)

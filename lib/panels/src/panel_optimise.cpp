@@ -80,6 +80,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
+  result->optimisation = true;
   pending = result;
   const std::string path = doc->programPath;
   std::shared_ptr<const Program> program = doc->program;
@@ -148,7 +149,9 @@ void drawOptimiseDialog(Inspector::State& s) {
     ImGui::EndPopup();
     return;
   }
-  ImGui::TextWrapped("Constant speed intervals, Akima fitting and one feed per interval, for the G1 moves of the lines:");
+  ImGui::TextWrapped("The paper's constant speed intervals and Akima fitting first, then other plans (corners rounded, "
+                     "points drawn taut, feeds capped); each simulated, and kept only when no figure is worse. The G1 "
+                     "moves of the lines:");
   ImGui::InputInt("first line", &s.optimiseFirst);
   ImGui::InputInt("last line", &s.optimiseLast);
   // The box only stands for the region while the lines are still its own.
@@ -232,7 +235,11 @@ bool endBesidePanel(Inspector::State& s, bool close) {
 
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
   Comparison& c = *s.comparison;
-  beginBesidePanel("After re-optimisation", c.summary, x, y, w, h);
+  beginBesidePanel("After re-optimisation",
+                   c.supersededBy.empty() ? c.summary
+                                          : fmt::format("Earlier result, lines {}-{} ({}): {}", c.first, c.last,
+                                                        c.supersededBy, c.summary),
+                   x, y, w, h);
   if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (speed after - before)"))
     s.showOptimisedDifference(*difference);
   if (c.kept) {
