@@ -127,6 +127,36 @@ TEST(regionOptimisation, TheFiguresJudgeEveryFigureByTheSameRule) {
   }
 }
 
+TEST(regionOptimisation, ACandidateThatHelpsByLessThanTwoPercentIsNotWritten) {
+  QualityFigures figures;
+  figures.samples = 1000, figures.speedFluctuation = 100, figures.inconsistencyP99 = 200, figures.inconsistencyMean = 20,
+  figures.jerkP99 = 1e4, figures.deviationP99 = 5, figures.hasDeviation = true;
+  RegionOptimisation r;
+  r.regionBefore = r.regionAfter = r.wholeBefore = r.wholeAfter = figures;
+  r.timeBefore = 100, r.timeAfter = 99;  // s: 1 % faster
+  r.maxPathDistance = 0.005;             // mm
+  r.regionAfter.speedFluctuation = 99;   // 1 % evener
+  const auto why = whyNotKept(r);
+  ASSERT_TRUE(why.has_value());
+  EXPECT_NE(why->find("it would help nothing"), std::string::npos) << *why;
+  // A figure of the region 3 % better, or the time 2.1 % shorter, is a gain worth writing.
+  RegionOptimisation evener = r;
+  evener.regionAfter.jerkP99 = 0.97e4;
+  EXPECT_FALSE(whyNotKept(evener).has_value());
+  RegionOptimisation faster = r;
+  faster.timeAfter = 97.9;
+  EXPECT_FALSE(whyNotKept(faster).has_value());
+  for (double QualityFigures::*figure : {&QualityFigures::speedFluctuation, &QualityFigures::inconsistencyP99,
+                                         &QualityFigures::inconsistencyMean, &QualityFigures::jerkP99,
+                                         &QualityFigures::deviationP99}) {
+    QualityFigures better = figures, slightly = figures;
+    better.*figure *= 0.97;
+    slightly.*figure *= 0.99;
+    EXPECT_NE(betterFigure(figures, better, kGainRequired), "");
+    EXPECT_EQ(betterFigure(figures, slightly, kGainRequired), "");
+  }
+}
+
 TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedAgain) {
   // Every interval of the transition's worst region is planned at the programmed feed, so the
   // feeds planned across passes change nothing: those candidates are the paper's plan again.
