@@ -203,3 +203,39 @@ TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
     EXPECT_NE(r.text.find(inch ? "\nF40.00\n" : "\nF1000\n"), std::string::npos) << r.text;
   }
 }
+
+TEST(regionOptimizer, RoundedCornersNameTheLineTheyStandFor) {
+  for (const bool inch : {false, true}) {
+    const std::string text = steppedRaster(inch);
+    const InterpretResult original = interpretGcode(text, "stepped.nc");
+    ASSERT_TRUE(original.ok()) << original.errors.front().str();
+    OptimizeOptions options;
+    options.shape = PathShape::CornersRounded;
+    options.programmedFeed = true;
+    const OptimizeResult r = optimizeRegion(text, original.program, LineRange{1, 200}, defaultMachine(), options);
+    EXPECT_EQ(r.passes.size(), 4u) << r.text;
+    EXPECT_NE(r.text.find("re-fitted: corners rounded within 0.008 mm, feed F"), std::string::npos) << r.text;
+    const InterpretResult reread = interpretGcode(r.text, "stepped-new.nc");
+    ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+    // Each new move's end lies on (within the tube of) the old line it names.
+    const double tube = options.maximumDeviation + (inch ? 0.0003 : 0.0001);  // mm, and the last decimal
+    for (const OptimizedPass& pass : r.passes) {
+      ASSERT_EQ(pass.sourceLines.size(), pass.newMoves);
+      EXPECT_GT(pass.newMoves, pass.oldMoves);  // the corners' arcs
+      for (std::size_t k = 0; k < pass.newMoves; ++k) {
+        const std::uint32_t newLine = pass.newFirstLine + 1 + static_cast<std::uint32_t>(k);
+        const auto newMove = std::find_if(reread.program.moves.begin(), reread.program.moves.end(),
+                                          [&](const Move& m) { return m.line == newLine; });
+        const auto oldMove = std::find_if(original.program.moves.begin(), original.program.moves.end(),
+                                          [&](const Move& m) { return m.line == pass.sourceLines[k]; });
+        ASSERT_NE(newMove, reread.program.moves.end()) << newLine;
+        ASSERT_NE(oldMove, original.program.moves.end()) << pass.sourceLines[k];
+        const Vec3 a = original.program.startOf(static_cast<std::size_t>(oldMove - original.program.moves.begin()));
+        const Vec3 leg = oldMove->end - a;
+        const double along = std::clamp((newMove->end - a).dot(leg) / leg.squaredNorm(), 0.0, 1.0);
+        EXPECT_LE((newMove->end - (a + along * leg)).norm(), tube)
+            << (inch ? "inch" : "mm") << " new line " << newLine << " names old line " << pass.sourceLines[k];
+      }
+    }
+  }
+}

@@ -77,21 +77,33 @@ TEST(roundedCorners, EachNewSegmentNamesTheOldOneItLiesAlong) {
 }
 
 TEST(roundedCorners, ASharpCornersSmallArcIsCutIntoFewerLongerChords) {
-  // 1.2 rad: within 8 um of the corner the arc is about 45 um long; chords of 0.1 rad would be
-  // 4 um, shorter than the 0.25 um of a program's last decimal can aim.
-  const double turn = 1.2;
-  const std::vector<Vec3> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1 + std::cos(turn), 0, std::sin(turn))};
-  const RoundedPath r = roundedCorners(corner, 0.008, 0.1);
-  ASSERT_GT(r.points.size(), 3u);
-  EXPECT_LT(r.points.size(), 7u);
-  for (std::size_t k = 1; k + 1 < r.points.size(); ++k) {
-    if (k > 1) {
-      EXPECT_GE((r.points[k] - r.points[k - 1]).norm(), 0.02) << k;  // mm, a chord of the arc
+  // At 1.2 rad the arc within 8 um of the corner is about 45 um long: chords of 0.1 rad would be
+  // 4 um, shorter than the 0.25 um of a program's last decimal can aim. Every corner sharper
+  // than a few tenths of a radian has such a short arc.
+  for (const double turn : {0.35, 0.6, 0.95, 1.2, 1.3, 2.0, 2.7}) {
+    const std::vector<Vec3> corner = {Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(1 + std::cos(turn), 0, std::sin(turn))};
+    const RoundedPath r = roundedCorners(corner, 0.008, 0.1);
+    ASSERT_GT(r.points.size(), 3u) << turn;
+    // Chords of 20 um or more; a corner so sharp that its whole arc is shorter is one chord.
+    for (std::size_t k = 2; r.points.size() > 4 && k + 1 < r.points.size(); ++k) {
+      EXPECT_GE((r.points[k] - r.points[k - 1]).norm(), 0.02 - 1e-12) << turn << " " << k;  // mm
     }
+    EXPECT_LE(polylineDistance(corner, r.points), 0.008 + 1e-9) << turn;
+    EXPECT_LE(polylineDistance(r.points, corner), 0.008 + 1e-9) << turn;
+    EXPECT_GT(polylineDistance(corner, r.points), 0.006) << turn;
   }
-  EXPECT_LE(polylineDistance(corner, r.points), 0.008 + 1e-9);
-  EXPECT_LE(polylineDistance(r.points, corner), 0.008 + 1e-9);
-  EXPECT_GT(polylineDistance(corner, r.points), 0.006);
+}
+
+TEST(roundedCorners, ArcsThatShareAShortLegMeetInItsMiddle) {
+  // Legs of 0.06 mm turning by 0.5 rad in turn: each arc wants more than half of each leg.
+  std::vector<Vec3> zig;
+  for (int k = 0; k < 8; ++k) zig.emplace_back(0.06 * k, 0.0, (k % 2) * 0.015);
+  const RoundedPath r = roundedCorners(zig, 0.008, 0.1);
+  for (std::size_t k = 1; k < r.points.size(); ++k)
+    EXPECT_GT((r.points[k] - r.points[k - 1]).norm(), 0.005) << k;  // no sliver, no doubled point
+  EXPECT_EQ(r.oldSegment.size(), r.points.size() - 1);
+  EXPECT_LE(polylineDistance(zig, r.points), 0.008 + 1e-9);
+  EXPECT_LE(polylineDistance(r.points, zig), 0.008 + 1e-9);
 }
 
 TEST(roundedCorners, ShortLegsAndSlightCornersAreLeftTheirShape) {

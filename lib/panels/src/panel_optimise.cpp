@@ -115,8 +115,10 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               c->scene = std::make_shared<vis::QualityScene>(c->map.data, c->map.style);
               control.progress(0.9);
               c->difference = compareOptimizedRuns(*before, *c->samples, r.result);
+              control.progress(0.95);
               buildDifferenceView(vis::regionDifferenceMapRequest(c->difference, *before, LineRange{first, last}), request,
                                   *before, program.get(), c->differenceMap, c->differenceScene);
+              control.progress(1.0);  // a Cancel pressed while the maps were made still cancels
               c->timeBefore = r.timeBefore;
               c->timeAfter = r.timeAfter;
               c->kept = r.kept;
@@ -149,9 +151,9 @@ void drawOptimiseDialog(Inspector::State& s) {
     ImGui::EndPopup();
     return;
   }
-  ImGui::TextWrapped("The paper's constant speed intervals and Akima fitting first, then other plans (corners rounded, "
-                     "points drawn taut, feeds capped); each simulated, and kept only when no figure is worse. The G1 "
-                     "moves of the lines:");
+  ImGui::TextWrapped("%s", "The paper's constant speed intervals and Akima fitting first, then other plans (corners rounded, "
+                     "points drawn taut, feeds capped); each simulated, and kept only when no figure is worse by more "
+                     "than 2 % and the time or a figure is better by 2 % or more. The G1 moves of the lines:");
   ImGui::InputInt("first line", &s.optimiseFirst);
   ImGui::InputInt("last line", &s.optimiseLast);
   // The box only stands for the region while the lines are still its own.
@@ -210,12 +212,35 @@ void drawOptimiseDialog(Inspector::State& s) {
   ImGui::EndPopup();
 }
 
+namespace {
+
+// The text wrapped at its spaces only: ImGui's own wrapping also breaks a line after a full stop,
+// inside a number too ("34." then "0 mm/min").
+void textWrappedAtSpaces(const std::string& text, float width) {
+  const float space = ImGui::CalcTextSize(" ").x;
+  std::string line;
+  float lineWidth = 0;
+  std::istringstream words(text);
+  for (std::string word; words >> word;) {
+    const float w = ImGui::CalcTextSize(word.c_str()).x;
+    if (!line.empty() && lineWidth + space + w > width) {
+      ImGui::TextUnformatted(line.c_str());
+      line.clear();
+      lineWidth = 0;
+    }
+    if (!line.empty()) line += ' ', lineWidth += space;
+    line += word;
+    lineWidth += w;
+  }
+  if (!line.empty()) ImGui::TextUnformatted(line.c_str());
+}
+
+}  // namespace
+
 void beginBesidePanel(const char* name, const std::string& summary, float x, float y, float w, float h) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
   beginPanel(name, x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + w - 10);
-  ImGui::TextUnformatted(summary.c_str());
-  ImGui::PopTextWrapPos();
+  textWrappedAtSpaces(summary, w - 10 - ImGui::GetCursorPosX());
 }
 
 bool endBesidePanel(Inspector::State& s, bool close) {
@@ -248,10 +273,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
     ImGui::SameLine();
     if (ImGui::Button("Save program") && s.savePath[0]) s.save(s.savePath, c.text, "re-optimised program");
     ImGui::SameLine();
-  } else {
-    // Nothing to save: the program stays as it is, for the reason the summary gives.
-    ImGui::TextWrapped("Not kept (the reason ends the text above): the program stays as it is.");
-  }
+  }  // else nothing to save: the summary ends with why the program stays as it is
   const bool close = ImGui::Button("Close");
   if (endBesidePanel(s, close)) s.comparison.reset();
 }

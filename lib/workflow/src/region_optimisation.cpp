@@ -149,6 +149,15 @@ std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
 
 namespace {
 
+// s: how long the samples spend on the lines of `range`.
+double timeOnLines(const Trajectory& samples, LineRange range) {
+  std::size_t count = 0;
+  samples.line.forEachRun([&](std::uint32_t line, std::size_t begin, std::size_t end) {
+    if (line >= range.first && line <= range.last) count += end - begin;
+  });
+  return double(count) * samples.cycle;
+}
+
 bool slower(const RegionOptimisation& r) {
   // Half a cycle of slack: the two runs are whole numbers of cycles.
   const double cycle = r.after.samples ? r.after.samples->cycle : 0.0;
@@ -219,6 +228,8 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
       polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
   r.timeBefore = machiningTime(*before.run.samples);
   r.timeAfter = machiningTime(*r.after.samples);
+  r.regionTimeBefore = timeOnLines(*before.run.samples, request.lines);
+  r.regionTimeAfter = timeOnLines(*r.after.samples, r.result.newRange);
   if (const auto why = whyNotKept(r)) {
     r.kept = false;
     r.reason = *why;
@@ -238,10 +249,12 @@ double qualityScore(const RegionOptimisation& r) {
   return sum / (a.hasDeviation ? 5.0 : 4.0);
 }
 
-// The machining time after over before added to the quality score, so that the time weighs as
+// The region's time after over before added to the quality score, so that the time weighs as
 // much as the figures together: how Objective::Balanced ranks the candidates it keeps, none of
 // them slower.
-double balancedScore(const RegionOptimisation& r) { return qualityScore(r) + r.timeAfter / r.timeBefore; }
+double balancedScore(const RegionOptimisation& r) {
+  return qualityScore(r) + (r.regionTimeBefore > 0 ? r.regionTimeAfter / r.regionTimeBefore : 1.0);
+}
 
 // Whether `r` (kept) is a better choice than `best` (kept) for the objective.
 bool betterFor(Objective objective, const RegionOptimisation& r, const RegionOptimisation& best) {
@@ -379,7 +392,8 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // more than before (the smooth new path is run faster through bends where the old one braked
   // at every point), characteristic points at a finer scale, so that a bend between long moves is an interval
   // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
-  // Then a little below the plan, and last the points drawn taut (taut_path.h). Each distinct
+  // Then a little below the plan, and last the corners rounded and the points drawn taut
+  // (rounded_corners.h, taut_path.h), each with its speed peaks trimmed. Each distinct
   // candidate is simulated and judged; the objective chooses among those no worse than the
   // program. When none is, the first one's figures and reason are reported.
   Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), std::nullopt};
@@ -426,11 +440,11 @@ std::optional<std::string> whyNotKept(const RegionOptimisation& r) {
     return "in the region, " + worse;
   if (const std::string worse = worseFigure(r.wholeBefore, r.wholeAfter, kWorseningAllowed); !worse.empty())
     return "over the whole program, " + worse;
-  if (r.timeAfter > r.timeBefore * (1 - kGainRequired) &&
+  if (r.regionTimeAfter > r.regionTimeBefore * (1 - kGainRequired) &&
       betterFigure(r.regionBefore, r.regionAfter, kGainRequired).empty())
-    return fmt::format("it would help nothing: neither the time ({:.3f} -> {:.3f} s) nor any figure of the region is "
-                       "better by {:g} % or more",
-                       r.timeBefore, r.timeAfter, 100 * kGainRequired);
+    return fmt::format("it would help nothing: neither the time on the region's lines ({:.3f} -> {:.3f} s) nor any "
+                       "figure of the region is better by {:g} % or more",
+                       r.regionTimeBefore, r.regionTimeAfter, 100 * kGainRequired);
   return std::nullopt;
 }
 

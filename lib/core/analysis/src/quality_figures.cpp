@@ -113,19 +113,19 @@ std::array<NamedFigure, 5> namedFigures(const QualityFigures& before, const Qual
   }};
 }
 
-std::string named(const NamedFigure& f) { return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit); }
+std::string describeChange(const NamedFigure& f) { return fmt::format("{} {:.1f} -> {:.1f} {}", f.name, f.before, f.after, f.unit); }
 
 }  // namespace
 
 std::string worseFigure(const QualityFigures& before, const QualityFigures& after, double allowed) {
   for (const NamedFigure& f : namedFigures(before, after))
-    if (f.after > f.before * (1 + allowed) + f.floor) return named(f);
+    if (f.after > f.before * (1 + allowed) + f.floor) return describeChange(f);
   return {};
 }
 
 std::string betterFigure(const QualityFigures& before, const QualityFigures& after, double required) {
   for (const NamedFigure& f : namedFigures(before, after))
-    if (f.after < f.before * (1 - required) - f.floor) return named(f);
+    if (f.after < f.before * (1 - required) - f.floor) return describeChange(f);
   return {};
 }
 

@@ -99,7 +99,7 @@ bool sharpTurnInPlan(const Vec3& a, const Vec3& b) {
 // A path drawn taut or rounded softens a corner within its tube like any other point, so for
 // them only a corner seen from above ends a run, not one in Z.
 std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std::vector<std::string_view>& lines,
-                                               LineRange range, bool cornersInZKept) {
+                                               LineRange range, bool onlyCornersInPlanEndRuns) {
   std::vector<std::vector<std::size_t>> runs;
   std::vector<std::size_t> run;
   auto close = [&] {
@@ -123,7 +123,7 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
       const Vec3 b = (m.end - program.startOf(i)).normalized();
       const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
       const bool consecutive = m.line == previous.line + 1;
-      const bool corner = cornersInZKept ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
+      const bool corner = onlyCornersInPlanEndRuns ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
       const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
       if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
     }
@@ -194,7 +194,9 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
 // deviates from a path where it bends, so the whole bend is held alike, whichever way the pass
 // runs (a pass and its neighbour, cut the other way, then slow over the same stretch). A long
 // straight move's corners are the planner's: slowing the whole move would only cost time.
+// `moveOf`: per segment of the pass's points, the move of the run it stands for.
 std::vector<double> bendCeilings(const OptimizeOptions& options, const Program& program, const std::vector<std::size_t>& run,
+                                 const std::vector<std::size_t>& moveOf,
                                  const std::vector<ConstantSpeedInterval>& intervals) {
   constexpr double kLongMove = 1.0;  // mm
   const double none = std::numeric_limits<double>::infinity();
@@ -209,7 +211,7 @@ std::vector<double> bendCeilings(const OptimizeOptions& options, const Program& 
     double lowest = none;
     for (std::size_t k = begin; k < end; ++k)
       for (std::size_t i = intervals[k].first; i < intervals[k].last; ++i) {
-        const std::uint32_t line = program.moves[run[i]].line;
+        const std::uint32_t line = program.moves[run[moveOf[i]]].line;
         if (line < options.lineFeedCeiling.size() && options.lineFeedCeiling[line] > 0)
           lowest = std::min(lowest, mmPerMinToMmPerS(options.lineFeedCeiling[line]));
       }
@@ -220,7 +222,7 @@ std::vector<double> bendCeilings(const OptimizeOptions& options, const Program& 
 }
 
 std::vector<double> intervalFeeds(const OptimizeOptions& options, const Program& program, const std::vector<std::size_t>& run,
-                                  const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
+                                  const std::vector<std::size_t>& moveOf, const std::vector<Vec3>& points, const std::vector<std::size_t>& dataIndex,
                                   const IntervalPartition& partition, double feed, const Machine& machine) {
   Program probe;
   probe.start = points.front();
@@ -243,7 +245,7 @@ std::vector<double> intervalFeeds(const OptimizeOptions& options, const Program&
     if (s.move > 0) atPoint[s.move] = std::min(feedMmS, s.entryLimit);
   }
   const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
-  const std::vector<double> ceilings = bendCeilings(options, program, run, partition.intervals);
+  const std::vector<double> ceilings = bendCeilings(options, program, run, moveOf, partition.intervals);
   std::vector<double> feeds;
   for (std::size_t k = 0; k < partition.intervals.size(); ++k) {
     const ConstantSpeedInterval& interval = partition.intervals[k];
@@ -326,7 +328,7 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   plan.feeds = options.programmedFeed
                    ? std::vector<double>(partition.intervals.size(),
                                          options.feedCap > 0 ? std::clamp(std::floor(options.feedCap), 1.0, feed) : feed)
-                   : intervalFeeds(options, program, run, plan.points, dataIndex, partition, feed, machine);
+                   : intervalFeeds(options, program, run, moveOf, plan.points, dataIndex, partition, feed, machine);
   return plan;
 }
 

@@ -9,15 +9,18 @@ namespace isurface {
 
 namespace {
 
-// Of each leg, the most an arc may take: a little less than half, so that the arcs at both ends
-// of a short leg leave a piece of it between them instead of meeting in a doubled point.
-constexpr double kLegShare = 0.45;
+// Of each leg, the most an arc may take: half, so that the arcs at both ends of a short leg meet
+// in its middle (the doubled point is written once) rather than leave a sliver of it between
+// them, whose direction the program's last decimal would blur.
+constexpr double kLegShare = 0.5;
 // rad: a corner sharper than this is a turn back, whose arc within the tube would be a point.
 constexpr double kSharpestCorner = 2.8;
 // mm: no chord of an arc is shorter, unless the arc is. The 4 or 5 decimals a program is written
 // with blur a shorter chord's direction (0.25 um across 10 um is 0.025 rad), and the NC would
 // see the noise as corners; finer chords would also only multiply lines.
 constexpr double kShortestChord = 0.02;
+// mm: two arcs that each took half of the leg between them end and start this close.
+constexpr double kJoinedArcs = 1e-6;
 
 struct Arc {
   Vec3 centre, fromCentreStart, fromCentreEnd;
@@ -49,8 +52,7 @@ Arc arcAt(const Vec3& before, const Vec3& corner, const Vec3& after, double tube
   };
   int pieces = static_cast<int>(std::ceil(turn / pieceTurn));
   double radius = radiusFor(pieces);
-  const int longChords = std::max(1, static_cast<int>(radius * turn / kShortestChord));
-  if (longChords < pieces) radius = radiusFor(pieces = longChords);
+  while (pieces > 1 && 2.0 * radius * std::sin(0.5 * turn / pieces) < kShortestChord) radius = radiusFor(--pieces);
   const double tangent = radius * std::tan(0.5 * turn);
   const Vec3 start = corner - tangent * u, end = corner + tangent * w;
   const Vec3 bisector = (w - u).normalized();
@@ -76,9 +78,12 @@ RoundedPath roundedCorners(const std::vector<Vec3>& points, double tube, double 
       rounded.oldSegment.push_back(k - 1);
       continue;
     }
-    // The arc's first half stands for the leg into the corner, its second for the leg out.
+    // The arc's first half stands for the leg into the corner, its second for the leg out. Its
+    // start is the end of the arc before when both took half of the leg between them.
     for (int piece = 0; piece <= arc.pieces; ++piece) {
-      rounded.points.push_back(arc.at(piece));
+      const Vec3 p = arc.at(piece);
+      if (piece == 0 && (p - rounded.points.back()).norm() < kJoinedArcs) continue;
+      rounded.points.push_back(p);
       rounded.oldSegment.push_back(2 * piece <= arc.pieces ? k - 1 : k);
     }
   }

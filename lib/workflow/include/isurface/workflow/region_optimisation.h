@@ -75,11 +75,15 @@ struct RegionOptimisation {
   QualityFigures regionBefore, regionAfter;  // in the box, on the region's lines
   QualityFigures wholeBefore, wholeAfter;    // over the whole program
   double timeBefore = 0, timeAfter = 0;    // s, machining time of the whole program
+  // s, time spent on the region's lines (the old ones, then their replacement): what a region's
+  // gain in time is measured by, a small region's being lost in the whole program's time.
+  double regionTimeBefore = 0, regionTimeAfter = 0;
   double maxPathDistance = 0;              // mm, new path to old over the region
   // The new program is kept only when it is no slower, its path moved no more than
   // kPathMoveAllowed, no figure, of the region or of the whole program, is worse by more than
-  // kWorseningAllowed, and it helps: its time or a figure of the region is better by at least
-  // kGainRequired; otherwise `reason` says why, and the program stays as it was.
+  // kWorseningAllowed, and it helps: the time spent on the region's lines or a figure of the
+  // region is better by at least kGainRequired; otherwise `reason` says why, and the program
+  // stays as it was.
   bool kept = true;
   std::string reason;
   std::string plan;  // the candidate reported: how its interval feeds were planned

@@ -40,7 +40,9 @@ constexpr double kDefaultChordTolerance = 0.005;
 struct OptimizeOptions {
   IntervalThresholds thresholds;
   double chordTolerance = kDefaultChordTolerance;  // mm, resampling of the spline into G1 moves
-  double maximumDeviation = 0.008; // mm, a fit that strays further from the old path is not used
+  // mm: a fit that strays further from the old path is not used; a path drawn taut or rounded
+  // stays within it.
+  double maximumDeviation = 0.008;
   double maxTurn = 0.01;          // rad, largest turn of the path between two new G1 moves
   std::size_t minimumMoves = 4;   // shorter runs of moves are left as they are
   double feedScale = 1.0;         // share of each interval's planned feed that is programmed
@@ -51,7 +53,7 @@ struct OptimizeOptions {
   // (feed_ramps.h); 0: one step at the interval's end.
   double rampAcceleration = 0;
   CrossPassRule crossPass = CrossPassRule::None;
-  PathShape shape = PathShape::Fitted;
+  PathShape shape = PathShape::Fitted;  // how each pass's path is drawn anew
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
   // (where it already runs at its own limits at every point, one feed per interval is slower),
   // but no faster than `feedCap` (mm/min, whole; 0: no cap).
