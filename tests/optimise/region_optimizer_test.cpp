@@ -173,18 +173,30 @@ std::string steppedRaster(bool inch) {
   return text + "M2\n";
 }
 
+// The stepped raster's path drawn anew in `shape` at the program's feed, capped at `feedCap`.
+struct SteppedRun {
+  InterpretResult original;
+  OptimizeOptions options;
+  OptimizeResult result;
+};
+SteppedRun drawnAnew(bool inch, PathShape shape, double feedCap = 0) {
+  SteppedRun run;
+  run.original = interpretGcode(steppedRaster(inch), "stepped.nc");
+  run.options.shape = shape;
+  run.options.programmedFeed = true;
+  run.options.feedCap = feedCap;
+  run.result = optimizeRegion(steppedRaster(inch), run.original.program, LineRange{1, 200}, defaultMachine(), run.options);
+  return run;
+}
+
 }  // namespace
 
 TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
   for (const bool inch : {false, true}) {
-    const std::string text = steppedRaster(inch);
-    const InterpretResult original = interpretGcode(text, "stepped.nc");
+    const SteppedRun run = drawnAnew(inch, PathShape::DrawnTaut, 700.4);  // mm/min
+    const InterpretResult& original = run.original;
     ASSERT_TRUE(original.ok()) << original.errors.front().str();
-    OptimizeOptions options;
-    options.shape = PathShape::DrawnTaut;
-    options.programmedFeed = true;
-    options.feedCap = 700.4;  // mm/min
-    const OptimizeResult r = optimizeRegion(text, original.program, LineRange{1, 200}, defaultMachine(), options);
+    const OptimizeResult& r = run.result;
     // A pass ends at a step-over (a corner seen from above), however its points step in Z; the
     // plunge joins no pass.
     EXPECT_EQ(r.passes.size(), 4u) << r.text;
@@ -206,13 +218,11 @@ TEST(regionOptimizer, PointsDrawnTautStayInTheirPassesAndTube) {
 
 TEST(regionOptimizer, RoundedCornersNameTheLineTheyStandFor) {
   for (const bool inch : {false, true}) {
-    const std::string text = steppedRaster(inch);
-    const InterpretResult original = interpretGcode(text, "stepped.nc");
+    const SteppedRun run = drawnAnew(inch, PathShape::CornersRounded);
+    const InterpretResult& original = run.original;
     ASSERT_TRUE(original.ok()) << original.errors.front().str();
-    OptimizeOptions options;
-    options.shape = PathShape::CornersRounded;
-    options.programmedFeed = true;
-    const OptimizeResult r = optimizeRegion(text, original.program, LineRange{1, 200}, defaultMachine(), options);
+    const OptimizeOptions& options = run.options;
+    const OptimizeResult& r = run.result;
     EXPECT_EQ(r.passes.size(), 4u) << r.text;
     EXPECT_NE(r.text.find("re-fitted: corners rounded within 0.008 mm, feed F"), std::string::npos) << r.text;
     const InterpretResult reread = interpretGcode(r.text, "stepped-new.nc");
