@@ -155,7 +155,8 @@ struct Inspector::State {
   bool optimiseDialog = false, optimiseDialogOpen = false;
   int optimiseFirst = 1, optimiseLast = 1;
   int optimiseObjective = 0;
-  std::string optimiseProblem;  // why the open dialog cannot optimise, if it cannot  // index into Objective: balanced, time, quality
+  std::string optimiseProblem;  // why the open dialog cannot optimise, if it cannot
+  std::string optimiseNotice;   // why the region asked for in the dialog was not chosen
   // The rectangle last dragged over the view to choose the region, and what it holds; shown
   // while the dialog is open, and the region's figures are taken inside it.
   std::optional<app_model::BoxSelection> optimiseBox;

@@ -59,8 +59,10 @@ void chooseWorstRegion(Inspector::State& s) {
     s.optimiseLast = static_cast<int>(worst.lines.last);
     s.optimiseBox = app_model::BoxSelection{worst.lines, worst.lower, worst.upper, worst.vertices};
     s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
+    s.optimiseNotice.clear();
+    s.status = fmt::format("worst predicted region: lines {}-{}", worst.lines.first, worst.lines.last);
   } catch (const InputError& e) {
-    s.status = e.what();
+    s.status = s.optimiseNotice = e.what();
   }
 }
 
@@ -139,6 +141,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   s.optimiseDialogOpen = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (!s.optimiseDialogOpen) {
     s.optimiseBox.reset();  // a box chosen for a dialog that was closed
+    s.optimiseNotice.clear();
     return;
   }
   Document* doc = s.activeDocument();
@@ -178,8 +181,10 @@ void drawOptimiseDialog(Inspector::State& s) {
       s.optimiseLast = static_cast<int>(all.lines.last);
       s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};
       s.optimiseBoxOnView = {};
+      s.optimiseNotice.clear();
+      s.status = fmt::format("whole program: lines {}-{}", all.lines.first, all.lines.last);
     } catch (const InputError& e) {
-      s.status = e.what();
+      s.status = s.optimiseNotice = e.what();
     }
   }
   ImGui::SameLine();
@@ -188,10 +193,14 @@ void drawOptimiseDialog(Inspector::State& s) {
     if (const auto pass = passOfLine(run, *s.selection.current().line)) {
       s.optimiseFirst = static_cast<int>(pass->first);
       s.optimiseLast = static_cast<int>(pass->last);
+      s.optimiseNotice.clear();
     } else {
-      s.status = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
+      s.status = s.optimiseNotice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
     }
   }
+  // Said here too, where the user looks: the lines above are still those chosen before.
+  if (!s.optimiseNotice.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s (the lines above are unchanged)", s.optimiseNotice.c_str());
   // As `optimize --objective`: what the closed loop chooses among candidates no figure of which is worse.
   static const char* const kObjectiveHelp[] = {"no figure worse, time not longer: the best figures and time together",
                                                 "no figure worse, time not longer: the fastest such candidate",
