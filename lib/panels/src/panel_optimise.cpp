@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include <fmt/format.h>
 
@@ -35,6 +36,14 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
   return fmt::format(". Simulated, the tool runs within {:.4f} mm of where it ran before; speed after - before up to "
                      "{:+.0f} mm/min",
                      apart, speedChange);
+}
+
+// The summary's last sentence, whether the new program is kept and why, put first: the panel
+// shows the start of a long summary and scrolls the rest.
+std::string verdictFirst(const std::string& summary, bool kept) {
+  const std::size_t at = summary.rfind(kept ? ". Kept: " : ". Not kept: ");
+  if (at == std::string::npos) return summary;
+  return summary.substr(at + 2) + ". " + summary.substr(0, at);  // the next sentence ends it
 }
 
 std::string whyNotOptimisable(const Document* doc) {
@@ -124,7 +133,12 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               c->timeBefore = r.timeBefore;
               c->timeAfter = r.timeAfter;
               c->kept = r.kept;
-              c->summary = regionSummary(r) + passDifferenceText(c->difference, r.result);
+              // The difference map's colours span its 1-99 % range, not the largest difference
+              // the text gives: said, so that a colour at the end of the bar is not read as the most.
+              const auto& colours = c->differenceMap.style.range;
+              c->summary = verdictFirst(regionSummary(r), r.kept) + passDifferenceText(c->difference, r.result) +
+                           fmt::format(" (the difference map's colours span {:+.0f} .. {:+.0f} mm/min)", colours.lo,
+                                       colours.hi);
               result->comparison = c;
             });
 }
@@ -223,33 +237,38 @@ void drawOptimiseDialog(Inspector::State& s) {
 
 namespace {
 
-// The text wrapped at its spaces only: ImGui's own wrapping also breaks a line after a full stop,
-// inside a number too ("34." then "0 mm/min").
-void textWrappedAtSpaces(const std::string& text, float width) {
+// The text's lines wrapped at its spaces only: ImGui's own wrapping also breaks a line after a
+// full stop, inside a number too ("34." then "0 mm/min").
+std::vector<std::string> wrappedAtSpaces(const std::string& text, float width) {
   const float space = ImGui::CalcTextSize(" ").x;
-  std::string line;
+  std::vector<std::string> lines(1);
   float lineWidth = 0;
   std::istringstream words(text);
   for (std::string word; words >> word;) {
     const float w = ImGui::CalcTextSize(word.c_str()).x;
-    if (!line.empty() && lineWidth + space + w > width) {
-      ImGui::TextUnformatted(line.c_str());
-      line.clear();
-      lineWidth = 0;
-    }
-    if (!line.empty()) line += ' ', lineWidth += space;
-    line += word;
+    if (!lines.back().empty() && lineWidth + space + w > width) lines.emplace_back(), lineWidth = 0;
+    if (!lines.back().empty()) lines.back() += ' ', lineWidth += space;
+    lines.back() += word;
     lineWidth += w;
   }
-  if (!line.empty()) ImGui::TextUnformatted(line.c_str());
+  return lines;
 }
+
+// Of the panel's height, the most its summary takes: the rest is the map's, and the summary
+// scrolls.
+constexpr float kSummaryShare = 0.35f;
 
 }  // namespace
 
 void beginBesidePanel(const char* name, const std::string& summary, float x, float y, float w, float h) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(4, 4));
   beginPanel(name, x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
-  textWrappedAtSpaces(summary, w - 10 - ImGui::GetCursorPosX());
+  const float width = ImGui::GetContentRegionAvail().x;
+  const std::vector<std::string> lines = wrappedAtSpaces(summary, width - ImGui::GetStyle().ScrollbarSize);
+  const float needed = float(lines.size()) * ImGui::GetTextLineHeightWithSpacing();
+  ImGui::BeginChild("summary", ImVec2(width, std::min(needed, kSummaryShare * h)));
+  for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
+  ImGui::EndChild();
 }
 
 bool endBesidePanel(Inspector::State& s, bool close) {
