@@ -68,6 +68,7 @@ void expectCancelStops(const std::string& script, const std::string& pidFile) {
   EXPECT_TRUE(job.wasCancelled());
   EXPECT_LT(std::chrono::steady_clock::now() - start, std::chrono::seconds(10));
   EXPECT_TRUE(gone(pid)) << "the child " << pid << " still runs or was not reaped";
+  std::remove(pidFile.c_str());
 }
 
 }  // namespace
