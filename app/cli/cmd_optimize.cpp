@@ -76,12 +76,6 @@ void renderSpeed(const SurfaceRun& run, const Program& program, const std::strin
 const std::map<std::string, Objective> kObjectives = {
     {"balanced", Objective::Balanced}, {"time", Objective::Time}, {"quality", Objective::Quality}};
 
-std::string objectiveName(Objective objective) {
-  for (const auto& [name, value] : kObjectives)
-    if (value == objective) return name;
-  return "";
-}
-
 // "X0,Y0,X1,Y1" in mm.
 std::pair<Vec3, Vec3> parseBox(const std::string& text) {
   double v[4];

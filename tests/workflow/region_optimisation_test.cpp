@@ -251,7 +251,7 @@ TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
   ASSERT_TRUE(r.kept) << r.reason;
   EXPECT_EQ(r.plan.find("the program's feed capped at "), 0u) << r.plan;
   EXPECT_NE(r.plan.find("points drawn taut within 0.008 mm"), std::string::npos) << r.plan;
-  EXPECT_NE(regionSummary(r).find(". Kept: not slower, no figure worse by more than 2 %"), std::string::npos);
+  EXPECT_NE(regionSummary(r).find(". Kept (balanced): not slower, no figure worse by more than 2 %"), std::string::npos);
   EXPECT_LT(r.timeAfter, 0.8 * r.timeBefore);
   EXPECT_LT(r.maxPathDistance, 0.01);
   const auto uncapped = std::find_if(r.candidates.begin(), r.candidates.end(), [](const RegionOptimisation::Outcome& c) {

@@ -180,8 +180,11 @@ void Inspector::State::takeJobResult() {
     showOptimisedDifference(comparison->showDifference);
     view.refit();
     if (Document* doc = activeDocument()) {
-      const std::string base = doc->programPath.substr(0, doc->programPath.rfind('.'));
-      std::snprintf(savePath, sizeof savePath, "%s-optimized.nc", base.c_str());
+      const std::string suggested = doc->programPath.substr(0, doc->programPath.rfind('.')) + "-optimized.nc";
+      const bool typed = savePath[0] && suggestedSavePath != savePath;
+      if (!typed || savePathProgram != doc->programPath) std::snprintf(savePath, sizeof savePath, "%s", suggested.c_str());
+      suggestedSavePath = suggested;
+      savePathProgram = doc->programPath;
     }
     status = comparison->summary;
     return;

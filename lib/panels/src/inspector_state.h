@@ -162,6 +162,9 @@ struct Inspector::State {
   std::optional<app_model::BoxSelection> optimiseBox;
   app_model::ScreenRectangle optimiseBoxOnView;
   char savePath[1024] = "";
+  // The path suggested for the last result and its program: a path typed over the suggestion
+  // stays for the next result of the same program.
+  std::string suggestedSavePath, savePathProgram;
   std::optional<PendingSave> overwriteQuestion;
   // Where the named controls were drawn last (window pixels: x0, y0, x1, y1), for tests and
   // scripts that drive the window.

@@ -41,7 +41,7 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
 // The summary's last sentence, whether the new program is kept and why, put first: the panel
 // shows the start of a long summary and scrolls the rest.
 std::string verdictFirst(const std::string& summary, bool kept) {
-  const std::size_t at = summary.rfind(kept ? ". Kept: " : ". Not kept: ");
+  const std::size_t at = summary.rfind(kept ? ". Kept (" : ". Not kept (");
   if (at == std::string::npos) return summary;
   return summary.substr(at + 2) + ". " + summary.substr(0, at);  // the next sentence ends it
 }

@@ -64,6 +64,14 @@ const Curve::Shown& shownPart(Curve& curve, std::size_t first, std::size_t last,
   return *curve.shown;
 }
 
+// Text over the curve on a patch of the plot's own background, so that the trace does not run
+// through it.
+void textOnBacking(ImDrawList* draw, ImVec2 at, ImU32 colour, const char* text) {
+  const ImVec2 extent = ImGui::CalcTextSize(text);
+  draw->AddRectFilled(ImVec2(at.x - 2, at.y), ImVec2(at.x + extent.x + 2, at.y + extent.y), IM_COL32(24, 26, 30, 210));
+  draw->AddText(at, colour, text);
+}
+
 void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit, const Trajectory& t,
                ImVec2 origin, ImVec2 size) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
@@ -78,14 +86,11 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   const float span = (std::isfinite(lo) && std::isfinite(hi) && hi > lo) ? hi - lo : 1.0f;
   auto toY = [&](float v) { return end.y - 2 - (v - (std::isfinite(lo) ? lo : 0)) / span * (size.y - 4); };
   draw->PushClipRect(origin, end, true);
-  // Round values across, faint, with their numbers at the right edge.
-  for (double tick : niceTicks(lo, hi, std::max(2, static_cast<int>(size.y / 22)))) {
+  // Round values across, faint, with their numbers at the right edge (drawn over the curve).
+  const std::vector<double> ticks = niceTicks(lo, hi, std::max(2, static_cast<int>(size.y / 22)));
+  for (double tick : ticks) {
     const float py = toY(static_cast<float>(tick));
     draw->AddLine(ImVec2(origin.x, py), ImVec2(end.x, py), IM_COL32(70, 74, 82, 255));
-    char label[32];
-    std::snprintf(label, sizeof label, "%g", tick);
-    draw->AddText(ImVec2(end.x - ImGui::CalcTextSize(label).x - 3, py - ImGui::GetTextLineHeight()),
-                  IM_COL32(150, 155, 165, 255), label);
   }
   for (int c = 0; c < columns; ++c) {
     const float a = static_cast<float>(envelope.low[c] * scale), b = static_cast<float>(envelope.high[c] * scale);
@@ -94,16 +99,24 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
     draw->AddLine(ImVec2(px, std::max(toY(b), origin.y)), ImVec2(px, std::min(toY(a) + 1, end.y)),
                   IM_COL32(110, 200, 255, 255));
   }
-  draw->PopClipRect();
   char label[160];
+  for (double tick : ticks) {
+    const float py = toY(static_cast<float>(tick));
+    std::snprintf(label, sizeof label, "%g", tick);
+    // Above its line, or below it where that would leave the plot.
+    const float lineHeight = ImGui::GetTextLineHeight();
+    const float top = py - lineHeight < origin.y ? py + 1 : py - lineHeight;
+    textOnBacking(draw, ImVec2(end.x - ImGui::CalcTextSize(label).x - 3, top), IM_COL32(150, 155, 165, 255), label);
+  }
+  draw->PopClipRect();
   std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), unit, lo, hi);
-  draw->AddText(ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
+  textOnBacking(draw, ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
   const app_model::Selection& sel = s.selection.current();
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, end.y), IM_COL32(255, 210, 40, 255), 1.5f);
     std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample) * scale, t.timeAt(*sel.sample));
-    draw->AddText(ImVec2(std::min(px + 4, end.x - 150), end.y - 16), IM_COL32(255, 210, 40, 255), label);
+    textOnBacking(draw, ImVec2(std::min(px + 4, end.x - 150), end.y - 16), IM_COL32(255, 210, 40, 255), label);
   }
   ImGui::SetCursorScreenPos(origin);
   ImGui::InvisibleButton(curve.label.c_str(), size);

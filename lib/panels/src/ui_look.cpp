@@ -36,6 +36,8 @@ void applyTheme(const std::string& theme, float scale) {
   style.Colors[ImGuiCol_Header] = ImVec4(0.26f, 0.59f, 0.98f, 0.85f);
   style.Colors[ImGuiCol_HeaderHovered] = ImVec4(0.26f, 0.59f, 0.98f, 0.30f);
   style.Colors[ImGuiCol_HeaderActive] = ImVec4(0.26f, 0.59f, 0.98f, 1.00f);
+  // A dialog over the map is read, not looked through: the map behind made its text hard to read.
+  style.Colors[ImGuiCol_PopupBg].w = 1.0f;
   style.ScaleAllSizes(scale);
   ImGui::GetStyle() = style;
   ImGui::GetIO().FontGlobalScale = scale;

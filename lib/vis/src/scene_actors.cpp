@@ -175,8 +175,11 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const MapSt
   legend->SetLabelFormat("%.4g");
   legend->SetMaximumWidthInPixels(130);
   legend->SetBarRatio(0.25);
-  // Far enough from the right edge that a title wider than the bar, centred over it, stays inside.
-  legend->GetPositionCoordinate()->SetValue(0.86, 0.1);
+  // Far enough from the right edge that a title wider than the bar, centred over the legend,
+  // stays inside a view half the window wide (the maps side by side).
+  legend->GetPositionCoordinate()->SetValue(0.84, 0.1);
+  // Room between the title's last line and the top label, which it touched.
+  legend->SetVerticalTitleSeparation(6);
   legend->SetWidth(0.11);
   legend->SetHeight(0.8);
   for (vtkTextProperty* text : {legend->GetTitleTextProperty(), legend->GetLabelTextProperty()}) {

@@ -448,6 +448,15 @@ std::optional<std::string> whyNotKept(const RegionOptimisation& r) {
   return std::nullopt;
 }
 
+const char* objectiveName(Objective objective) {
+  switch (objective) {
+    case Objective::Time: return "time";
+    case Objective::Quality: return "quality";
+    case Objective::Balanced: break;
+  }
+  return "balanced";
+}
+
 std::string regionSummary(const RegionOptimisation& r) {
   const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
   return fmt::format(
@@ -461,12 +470,12 @@ std::string regionSummary(const RegionOptimisation& r) {
           ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} \u00b5m", a.deviationP99, b.deviationP99)
           : "",
       r.maxPathDistance, r.plan) +
-         (r.kept ? fmt::format(". Kept: {}no figure worse by more than {:g} %",
+         (r.kept ? fmt::format(". Kept ({}): {}no figure worse by more than {:g} %", objectiveName(r.objective),
                                r.objective == Objective::Quality
                                    ? fmt::format("at most {:g} % slower, ", 100 * kQualitySlowdownAllowed)
                                    : std::string("not slower, "),
                                100 * kWorseningAllowed)
-                 : ". Not kept: " + r.reason + "; the program is left as it was");
+                 : fmt::format(". Not kept ({}): {}; the program is left as it was", objectiveName(r.objective), r.reason));
 }
 
 }  // namespace isurface

@@ -55,6 +55,9 @@ std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line);
 // improve most, even if it takes up to kQualitySlowdownAllowed longer.
 enum class Objective { Balanced, Time, Quality };
 
+// As the command line and the window name it: "balanced", "time", "quality".
+const char* objectiveName(Objective objective);
+
 // How much longer (relative) the program may take under Objective::Quality.
 constexpr double kQualitySlowdownAllowed = 0.05;
 
