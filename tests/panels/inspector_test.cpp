@@ -7,6 +7,8 @@
 #include <filesystem>
 #include <fstream>
 
+#include <nlohmann/json.hpp>
+
 #include "dump_fixtures.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/panels/inspector.h"
@@ -88,6 +90,38 @@ TEST(inspector, OptimisedRegionStandsBesideTheOriginal) {
   inspector.optimise(1, 5);  // the header: no G1 moves to re-fit
   inspector.waitUntilIdle();
   EXPECT_EQ(inspector.statusText().rfind("error:", 0), 0u) << inspector.statusText();
+}
+
+// Another document chosen while a job runs: its result goes to the document it was made for.
+TEST(inspector, AColouringEndingAfterAnotherDocumentWasChosenColoursItsOwn) {
+  panels::Inspector inspector(noContext(), app_model::Settings{});
+  inspector.open({sourcePath("samples/wuzhishan.nc"), sourcePath("samples/transition-surface.nc")});
+  inspector.waitUntilIdle();
+  ASSERT_EQ(inspector.documentCount(), 2u);
+  inspector.colourBy("accel");  // the transition surface, shown last opened
+  inspector.showDocument(0);    // while its map is being made
+  inspector.waitUntilIdle();
+  const nlohmann::json state = nlohmann::json::parse(inspector.describe());
+  EXPECT_EQ(state["active"], 0);
+  EXPECT_EQ(state["documents"][0]["map_quantity"], "Path speed") << state["documents"].dump();
+  EXPECT_EQ(state["documents"][1]["map_quantity"], "Tangential acceleration") << state["documents"].dump();
+  EXPECT_EQ(state["map"]["quantity"], "Path speed");
+}
+
+TEST(inspector, ARegionOptimisedWhileAnotherDocumentWasChosenIsShownWithItsOwn) {
+  panels::Inspector inspector(noContext(), app_model::Settings{});
+  inspector.open({sourcePath("samples/wuzhishan.nc"), sourcePath("samples/transition-surface.nc")});
+  inspector.waitUntilIdle();
+  // The first time, the document's feedback is loaded first, and the optimisation waits for it.
+  for (int time = 0; time < 2; ++time) {
+    inspector.optimise(105, 400);  // lines of the transition surface
+    inspector.showDocument(0);
+    inspector.waitUntilIdle();
+  }
+  const nlohmann::json state = nlohmann::json::parse(inspector.describe());
+  EXPECT_EQ(state["active"], 1) << inspector.statusText();
+  ASSERT_FALSE(state["optimised"].is_null()) << inspector.statusText();
+  EXPECT_NE(state["optimised"]["summary"].get<std::string>().find("passes re-fitted"), std::string::npos);
 }
 
 // A slow tool servo path written as a dump opens alone and is coloured by its error channels.

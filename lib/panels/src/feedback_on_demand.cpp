@@ -39,7 +39,12 @@ void Inspector::State::attachLoadedFeedback(JobResult& result) {
     const_cast<Trajectory&>(*doc.samples).attachFeedback(std::move(*result.feedback));
     doc.feedbackSupply = {};
     status = fmt::format("{}: feedback loaded ({} samples)", doc.name, doc.samples->size());
-    if (k == active && result.afterFeedback) result.afterFeedback();
+    // What waited for the feedback (a colouring, a re-optimisation) was asked of this
+    // document: it is shown again for it, though another was chosen meanwhile.
+    if (result.afterFeedback) {
+      if (k != active) activate(k);
+      result.afterFeedback();
+    }
     return;
   }
   status = "the feedback was loaded for a document since closed";

@@ -87,6 +87,7 @@ void Inspector::State::startRecolour() {
   request.pickable = true;
   request.caption = mapCaption(*doc);
   auto result = std::make_shared<JobResult>();
+  result->madeFor = doc->samples;
   pending = result;
   std::shared_ptr<const Trajectory> samples = doc->samples;
   std::shared_ptr<const Program> program = doc->program;
@@ -149,7 +150,9 @@ void Inspector::State::takeJobResult() {
     // A map made again with a new gap between passes failed: the gap is the map's that stays.
     if (const Document* doc = activeDocument(); doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
     // A document still without a map: the view says why it has none now, at the gap typed.
-    if (Document* doc = activeDocument(); doc && !doc->scene && result && !result->mapRefused.empty()) {
+    if (const std::size_t k = result ? documentOf(result->madeFor) : documents.size();
+        k < documents.size() && !documents[k]->scene && !result->mapRefused.empty()) {
+      Document* doc = documents[k].get();
       auto& w = doc->warnings;
       w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.rfind("no map: ", 0) == 0; }), w.end());
       w.push_back("no map: " + result->mapRefused);
@@ -166,6 +169,7 @@ void Inspector::State::takeJobResult() {
     save(result->reportPath, std::move(result->report), "report");
     return;
   }
+  if ((result->runComparison || result->comparison) && !showDocumentOf(*result)) return;
   if (result->runComparison) {
     comparison.reset();
     runComparison = result->runComparison;
@@ -211,18 +215,36 @@ void Inspector::State::takeJobResult() {
     }
     view.refit();  // a new map fills the view it is shown in
   } else if (result->scene) {
-    Document* doc = activeDocument();
-    if (!doc) return;
+    const std::size_t k = documentOf(result->madeFor);
+    if (k == documents.size()) return;
+    Document* doc = documents[k].get();
     const bool firstMap = !doc->scene;
     doc->map = std::move(result->map);
     doc->scene = result->scene;
-    view.setScene(doc->scene, doc->map.rayIndex);
     doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
-    if (firstMap) view.refit();  // a map made after the gap between passes was raised
-    shownGeneration = ~std::uint64_t(0);
     status = doc->name + ": coloured by " +
              (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);
+    if (k != active) return;  // shown when that document is chosen again
+    view.setScene(doc->scene, doc->map.rayIndex);
+    if (firstMap) view.refit();  // a map made after the gap between passes was raised
+    shownGeneration = ~std::uint64_t(0);
   }
+}
+
+std::size_t Inspector::State::documentOf(const std::shared_ptr<const Trajectory>& samples) const {
+  for (std::size_t k = 0; k < documents.size(); ++k)
+    if (samples && documents[k]->samples == samples) return k;
+  return documents.size();
+}
+
+bool Inspector::State::showDocumentOf(const JobResult& result) {
+  const std::size_t k = documentOf(result.madeFor);
+  if (k == documents.size()) {
+    status = "the result was made for a document since closed";
+    return false;
+  }
+  if (k != active) activate(k);
+  return true;
 }
 
 void Inspector::State::activate(std::size_t index) {
@@ -365,6 +387,10 @@ bool Inspector::busy() const {
 }
 bool Inspector::refining() const { return state_->refinement.pending(); }
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }
+
+void Inspector::showDocument(std::size_t index) {
+  if (index < state_->documents.size() && index != state_->active) state_->activate(index);
+}
 
 void Inspector::waitUntilIdle() {
   do {

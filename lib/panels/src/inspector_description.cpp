@@ -58,6 +58,7 @@ std::string Inspector::describe() const {
                                                                  : "none";
     if (doc->samples && doc->samples->size() > 1)
       d["duration_s"] = doc->samples->timeAt(doc->samples->size() - 1) - doc->samples->timeAt(0);
+    d["map_quantity"] = doc->scene ? doc->map.style.quantityLabel : "";  // what its map is coloured by
     documents.push_back(d);
   }
   const app_model::Selection& sel = s.selection.current();

@@ -124,7 +124,10 @@ struct JobResult {
   std::unique_ptr<Document> document;        // a newly loaded document
   std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
   std::string programAlone;                  // a program whose dump was refused, to open by itself next
-  std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of the active one
+  std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of a document
+  // The samples of the document a colouring, a re-optimisation or a comparison was made for:
+  // another may be shown by the time it ends.
+  std::shared_ptr<const Trajectory> madeFor;
   vis::QualityMap map;
   std::string mapRefused;                    // why that colouring made no map
   std::string reportPath, report;            // or a report to save (File > Export)
@@ -235,6 +238,10 @@ struct Inspector::State {
   void startQueuedLoad();
 
   Document* activeDocument() { return active < documents.size() ? documents[active].get() : nullptr; }
+  // The index of the document holding these samples; documents.size() when none does.
+  std::size_t documentOf(const std::shared_ptr<const Trajectory>& samples) const;
+  // Shows the document a finished job was made for, if another is shown; false when it is gone.
+  bool showDocumentOf(const JobResult& result);
   // How lengths are shown: the user's choice, or as the active program is written.
   DisplayUnits units() const {
     if (persistent.units != "auto") return DisplayUnits{persistent.units == "inch"};

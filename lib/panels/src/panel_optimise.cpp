@@ -91,6 +91,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
+  result->madeFor = doc->samples;
   result->optimisation = true;
   pending = result;
   const std::string path = doc->programPath;

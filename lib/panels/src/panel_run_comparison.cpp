@@ -71,6 +71,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   auto result = std::make_shared<JobResult>();
+  result->madeFor = doc->samples;
   pending = result;
   std::shared_ptr<const Trajectory> a = doc->samples;
   std::shared_ptr<const Program> program = doc->program;

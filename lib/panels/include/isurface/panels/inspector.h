@@ -41,6 +41,8 @@ class Inspector {
   // are wanted though no input comes.
   bool refining() const;
   std::size_t documentCount() const;
+  // Shows the open document `index` (0 the first opened), as a click on its name does.
+  void showDocument(std::size_t index);
   // Lets background work finish and takes over its results (for snapshots and tests).
   void waitUntilIdle();
 
