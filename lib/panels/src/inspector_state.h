@@ -300,6 +300,8 @@ struct Inspector::State {
 // bottom-up, and without blending, since where VTK blended translucent glow its alpha is
 // below one and the panel behind must not show through.
 void drawViewFrame(unsigned int texture, ImVec2 size);
+// A scale bar at a view's lower right (see panel_view.cpp); what it shows.
+Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.
 std::string emptyViewText(const Inspector::State& s);
 

@@ -90,6 +90,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
     return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
+  request.caption = mapCaption(*doc);         // simulated with the document's machine, as the map beside
   auto result = std::make_shared<JobResult>();
   result->madeFor = doc->samples;
   result->optimisation = true;
@@ -275,9 +276,13 @@ void beginBesidePanel(const char* name, const std::string& summary, float x, flo
 bool endBesidePanel(Inspector::State& s, bool close) {
   // Seen from where the map beside it is seen.
   if (s.view.scene() && s.afterView.scene()) s.afterView.copyCameraFrom(s.view);
+  const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
   const unsigned int texture = s.afterView.render(static_cast<int>(size.x), static_cast<int>(size.y));
-  if (texture) drawViewFrame(texture, size);
+  if (texture) {
+    drawViewFrame(texture, size);
+    drawScaleBar(s.units(), s.afterView.millimetresPerPixel(), ImGui::GetWindowDrawList(), origin, size);
+  }
   ImGui::End();
   ImGui::PopStyleVar();
   if (close) {

@@ -100,12 +100,16 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
                   IM_COL32(110, 200, 255, 255));
   }
   char label[160];
+  const float lineHeight = ImGui::GetTextLineHeight();
+  std::vector<float> labelTops;  // of the tick labels drawn: one that would cover another is left out
   for (double tick : ticks) {
     const float py = toY(static_cast<float>(tick));
-    std::snprintf(label, sizeof label, "%g", tick);
     // Above its line, or below it where that would leave the plot.
-    const float lineHeight = ImGui::GetTextLineHeight();
     const float top = py - lineHeight < origin.y ? py + 1 : py - lineHeight;
+    if (std::any_of(labelTops.begin(), labelTops.end(), [&](float other) { return std::fabs(other - top) < lineHeight; }))
+      continue;
+    labelTops.push_back(top);
+    std::snprintf(label, sizeof label, "%g", tick);
     textOnBacking(draw, ImVec2(end.x - ImGui::CalcTextSize(label).x - 3, top), IM_COL32(150, 155, 165, 255), label);
   }
   draw->PopClipRect();

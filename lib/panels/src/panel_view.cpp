@@ -31,29 +31,6 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
   s.optimiseDialog = true;
 }
 
-// A bar of a round length (1, 2 or 5 times a power of ten) about a sixth of the view wide, at
-// its lower right, for the scale at the focal point.
-void drawScaleBar(Inspector::State& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  const double mmPerPixel = s.view.millimetresPerPixel();
-  if (!(mmPerPixel > 0) || !std::isfinite(mmPerPixel)) return;
-  const DisplayUnits u = s.units();
-  const double wanted = u.length(mmPerPixel * size.x / 6);  // in display units
-  const double power = std::pow(10.0, std::floor(std::log10(wanted)));
-  const double length = power * (wanted / power < 2 ? 1 : wanted / power < 5 ? 2 : 5);
-  const float pixels = static_cast<float>(length / u.length(mmPerPixel));
-  const ImVec2 right(origin.x + size.x * 0.82f, origin.y + size.y - 14);
-  const ImVec2 left(right.x - pixels, right.y);
-  const ImU32 ink = IM_COL32(30, 30, 36, 255);
-  draw->AddLine(left, right, ink, 2.0f);
-  draw->AddLine(ImVec2(left.x, left.y - 5), ImVec2(left.x, left.y + 1), ink, 2.0f);
-  draw->AddLine(ImVec2(right.x, right.y - 5), ImVec2(right.x, right.y + 1), ink, 2.0f);
-  char label[48];
-  std::snprintf(label, sizeof label, "%g %s", length, u.lengthUnit());
-  const ImVec2 extent = ImGui::CalcTextSize(label);
-  draw->AddText(ImVec2((left.x + right.x - extent.x) / 2, left.y - extent.y - 3), ink, label);
-  s.scaleBar = {length, u.lengthUnit(), pixels};
-}
-
 // A pick while measuring: the first end, then the second; a third starts a new distance.
 void measurePick(Inspector::State& s, const Vec3& point) {
   if (!s.measureA || s.measureB) {
@@ -125,6 +102,27 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
 
 }  // namespace
 
+// A bar of a round length (1, 2 or 5 times a power of ten) about a sixth of the view wide, at
+// its lower right, for the scale at the focal point of a view `mmPerPixel` (mm) at it.
+Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  if (!(mmPerPixel > 0) || !std::isfinite(mmPerPixel)) return {};
+  const double wanted = u.length(mmPerPixel * size.x / 6);  // in display units
+  const double power = std::pow(10.0, std::floor(std::log10(wanted)));
+  const double length = power * (wanted / power < 2 ? 1 : wanted / power < 5 ? 2 : 5);
+  const float pixels = static_cast<float>(length / u.length(mmPerPixel));
+  const ImVec2 right(origin.x + size.x * 0.82f, origin.y + size.y - 14);
+  const ImVec2 left(right.x - pixels, right.y);
+  const ImU32 ink = IM_COL32(30, 30, 36, 255);
+  draw->AddLine(left, right, ink, 2.0f);
+  draw->AddLine(ImVec2(left.x, left.y - 5), ImVec2(left.x, left.y + 1), ink, 2.0f);
+  draw->AddLine(ImVec2(right.x, right.y - 5), ImVec2(right.x, right.y + 1), ink, 2.0f);
+  char label[48];
+  std::snprintf(label, sizeof label, "%g %s", length, u.lengthUnit());
+  const ImVec2 extent = ImGui::CalcTextSize(label);
+  draw->AddText(ImVec2((left.x + right.x - extent.x) / 2, left.y - extent.y - 3), ink, label);
+  return {length, u.lengthUnit(), pixels};
+}
+
 // What the view says where no map stands: why the open document has none (passes too far
 // apart, no cutting moves), so that the user is not told to open what is open.
 std::string emptyViewText(const Inspector::State& s) {
@@ -182,7 +180,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
       draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
     }
     drawMeasure(s, draw, origin);
-    drawScaleBar(s, draw, origin, size);
+    s.scaleBar = drawScaleBar(s.units(), s.view.millimetresPerPixel(), draw, origin, size);
     if (s.refinement.building.valid())
       draw->AddText(ImVec2(origin.x + size.x * 0.45f, origin.y + size.y - 2 * ImGui::GetTextLineHeightWithSpacing()),
                     IM_COL32(30, 30, 36, 255), "refining the surface in sight...");
