@@ -264,3 +264,22 @@ TEST(regionOptimisation, ATautPathsSpeedPeaksAreTrimmedUntilNoFigureIsWorse) {
   EXPECT_LE(r.regionAfter.speedFluctuation, r.regionBefore.speedFluctuation * (1 + kWorseningAllowed));
   EXPECT_LT(r.regionAfter.inconsistencyP99, r.regionBefore.inconsistencyP99);
 }
+
+// A line range without a box: every candidate is measured where the first (the paper's steps)
+// re-fits the path, so that the objective compares figures of the same samples.
+TEST(regionOptimisation, WithoutABoxEveryCandidateIsMeasuredInTheFirstOnesBox) {
+  const std::string text = noisyRelief(false);
+  const Program program = interpretGcode(text, "scattered-relief.nc").program;
+  const RegionOptimisation r = optimiseWhole(text, program);
+  ASSERT_TRUE(r.kept) << r.reason;
+  ASSERT_NE(r.plan, r.candidates.front().plan);  // a later candidate is the one chosen
+  const OptimizeResult paper = optimizeRegion(text, program, r.lines, defaultMachine(), OptimizeOptions{});
+  EXPECT_EQ(r.lower, paper.fittedLower);
+  EXPECT_EQ(r.upper, paper.fittedUpper);
+  OptimizeOptions chosenShape;
+  chosenShape.shape = r.plan.find("drawn taut") != std::string::npos ? PathShape::DrawnTaut : PathShape::CornersRounded;
+  chosenShape.programmedFeed = true;
+  const OptimizeResult chosen = optimizeRegion(text, program, r.lines, defaultMachine(), chosenShape);
+  EXPECT_TRUE(chosen.fittedLower != paper.fittedLower || chosen.fittedUpper != paper.fittedUpper)
+      << "the chosen candidate re-fits the same box: nothing is shown " << r.plan << " " << chosen.fittedUpper.transpose();
+}

@@ -179,8 +179,8 @@ struct Baseline {
   }
 };
 
-// The box a candidate is judged in and the program's own figures there: where the defect was
-// found (a box), else where the path was re-fitted; a re-fitted part that holds no surface
+// The box a candidate is judged in and the program's own figures there: the box asked for (or
+// the first candidate's, see ClosedLoop::judge), else where the path was re-fitted; a re-fitted part that holds no surface
 // sample (one pass, a flat box) gives way to the region. InputError where nothing between
 // passes can be measured there (the candidate would be judged on nothing).
 void measureBefore(RegionOptimisation& r, Baseline& before, const RegionRequest& request) {
@@ -310,6 +310,9 @@ class ClosedLoop {
   // when it was simulated.
   const RegionOptimisation* judge(const Candidate& c, bool evenIfRepeated = false) {
     RegionRequest candidate = request_;
+    // Every candidate is measured in one box, so that their figures compare: the one asked
+    // for, else the first candidate's (where the paper's steps re-fit the path).
+    if (!candidate.box) candidate.box = judgedBox_;
     candidate.options.feedScale = request_.options.feedScale * c.share;
     candidate.options.crossPass = c.rule;
     candidate.options.lineFeedCeiling = c.ceilings;
@@ -328,6 +331,7 @@ class ClosedLoop {
     last_ = RegionOptimisation{};  // its run is let go (unless kept as the best) before the next one is made
     last_ = evaluateCandidate(std::move(result), baseline_, machine_, candidate, progressStage(progress_, at, at + step));
     last_.plan = describe(c, candidate.options.maximumDeviation);
+    if (!judgedBox_) judgedBox_ = std::make_pair(last_.lower, last_.upper);
     if (!repeated) outcomes_.push_back({last_.plan, last_.kept, last_.reason, last_.timeAfter, last_.regionAfter, last_.wholeAfter});
     if (last_.kept && (!best_ || betterFor(request_.objective, last_, *best_))) best_ = last_;
     // The first candidate is reported only when none is kept: its run is not held beside them.
@@ -353,6 +357,7 @@ class ClosedLoop {
   std::vector<RegionOptimisation::Outcome> outcomes_;
   RegionOptimisation last_;
   std::optional<RegionOptimisation> best_, first_;
+  std::optional<std::pair<Vec3, Vec3>> judgedBox_;  // mm, where the candidates are measured
 };
 
 Candidate shapeCandidate(PathShape shape, double feedCap = 0) {
