@@ -102,6 +102,7 @@ int runRender(const RenderOptions& o) {
   const Trajectory& samples = *run.samples;
   ProgressLine building("building the surface");
   vis::QualityMap map = vis::buildQualityMap(samples, run.program.get(), request);
+  if (map.mesh->foldedStrips > 0) std::fprintf(stderr, "warning: %s: %s\n", samples.source.c_str(), foldedPasses(map.mesh->foldedStrips).c_str());
   map.style.fontSize = vis::fontSizeForHeight(height);
   building.finish();
   vis::QualityScene scene(map.data, map.style);

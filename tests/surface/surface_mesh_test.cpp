@@ -373,3 +373,63 @@ TEST(surface_mesh, PassSpacingIsMeasuredAcrossThePasses) {
   }
   EXPECT_EQ(medianPassSpacing({}, SurfaceMesh{}), 0.0);
 }
+
+namespace {
+
+// A Koch snowflake at Z 0 (as linuxcnc_flowsnake.ngc engraves one), 1 sample every 5 um, its
+// three sides given as three passes: pieces of one curve, no surface between them.
+Grid kochSnowflake(int level) {
+  std::vector<Vec3> corners = {Vec3(0.25, 1.0, 0), Vec3(3.75, 1.0, 0), Vec3(2.0, 3.95, 0), Vec3(0.25, 1.0, 0)};
+  for (int l = 0; l < level; ++l) {
+    std::vector<Vec3> finer = {corners.front()};
+    for (std::size_t i = 0; i + 1 < corners.size(); ++i) {
+      const Vec3 a = corners[i], b = corners[i + 1], d = b - a;
+      const Vec3 tip = (a + b) / 2 + Vec3(d.y(), -d.x(), 0) / std::sqrt(12.0);
+      finer.insert(finer.end(), {a + d / 3, tip, a + 2 * d / 3, b});
+    }
+    corners = std::move(finer);
+  }
+  Grid g;
+  g.passes.pattern = PathPattern::ContourParallel;
+  const std::size_t perSide = (corners.size() - 1) / 3;
+  for (int side = 0; side < 3; ++side) {
+    const std::size_t begin = g.samples.x.size();
+    for (std::size_t i = side * perSide; i < (side + 1) * perSide; ++i) {
+      const Vec3 a = corners[i], b = corners[i + 1];
+      const int steps = std::max(1, static_cast<int>((b - a).norm() / 0.005));
+      for (int s = 0; s < steps; ++s) {
+        const Vec3 p = a + (b - a) * (double(s) / steps);
+        g.samples.x.push_back(p.x()), g.samples.y.push_back(p.y()), g.samples.z.push_back(p.z());
+      }
+    }
+    g.passes.passes.push_back({begin, g.samples.x.size()});
+  }
+  const std::size_t n = g.samples.x.size();
+  g.samples.line.assign(n, 0);
+  g.samples.time.resize(n);
+  for (std::size_t i = 0; i < n; ++i) g.samples.time[i] = 0.001 * double(i);
+  return g;
+}
+
+}  // namespace
+
+// Passes that cross and double back over each other are no surface: no triangles between them,
+// and the reason says so rather than that they lie too far apart.
+TEST(surfaceMesh, PiecesOfOneEngravedCurveMakeNoSurface) {
+  const Grid koch = kochSnowflake(4);
+  const SurfaceMesh mesh = buildSurfaceMesh(koch.samples, koch.passes);
+  EXPECT_EQ(mesh.foldedStrips, 2u);
+  EXPECT_TRUE(mesh.triangles.empty()) << mesh.triangles.size();
+  for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
+    EXPECT_EQ(mesh.nextPassNeighbour[v], kNoVertex);
+    EXPECT_EQ(mesh.previousPassNeighbour[v], kNoVertex);
+  }
+  EXPECT_NE(whyNoTriangles(koch.passes, 2.0, mesh.foldedStrips).find("cross and double back"), std::string::npos);
+  // Passes side by side, flat or curved, zig-zag or one way, fold nowhere.
+  for (const bool zigZag : {true, false}) {
+    const Grid relief = planeGrid(20, 200, 0.1, 0.3, zigZag, [](double x, double y) { return std::sin(x) * std::cos(y); });
+    const SurfaceMesh surface = buildSurfaceMesh(relief.samples, relief.passes);
+    EXPECT_EQ(surface.foldedStrips, 0u);
+    EXPECT_EQ(surface.triangles.size(), 2u * 19 * 199);
+  }
+}

@@ -95,6 +95,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   // curves and rows are there, and the reason stands beside the file's own warnings.
   try {
     doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
+    if (doc->map.mesh->foldedStrips > 0) doc->warnings.push_back(foldedPasses(doc->map.mesh->foldedStrips));
     control.progress(0.75);
     doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
   } catch (const InputError& e) {

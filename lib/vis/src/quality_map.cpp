@@ -152,7 +152,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,
-                                whyNoTriangles(map.passes, request.gapLimit)});
+                                whyNoTriangles(map.passes, request.gapLimit, map.mesh->foldedStrips)});
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();

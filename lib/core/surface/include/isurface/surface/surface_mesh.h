@@ -20,6 +20,7 @@ struct SurfaceMesh {
   // Nearest vertex on the previous / next pass (the one the strip matched), kNoVertex if none.
   std::vector<std::uint32_t> previousPassNeighbour, nextPassNeighbour;
   std::vector<std::size_t> passFirstVertex;             // first vertex of each pass, plus the end
+  std::size_t foldedStrips = 0;  // neighbouring passes not joined: they fold over each other
 };
 
 struct MeshOptions {
@@ -35,9 +36,11 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
 
 // Why there is no surface where no cutting pass was found.
 inline constexpr const char* kNoCuttingPasses = "no cutting passes found to build a surface on";
-// Why passes made no triangle: none, a single pass (which no gap joins to another), or passes
-// too far apart.
-std::string whyNoTriangles(const PassSet& passes, double gapLimit);
+// Why passes made no triangle: none, a single pass (which no gap joins to another), passes
+// that fold over each other (SurfaceMesh::foldedStrips), or passes too far apart.
+std::string whyNoTriangles(const PassSet& passes, double gapLimit, std::size_t foldedStrips = 0);
+// What a mesh's folded strips mean, for a note beside a map.
+std::string foldedPasses(std::size_t foldedStrips);
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
 std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);
