@@ -21,6 +21,14 @@ struct Grid {
   PassSet passes;
 };
 
+// Line 0 and one sample a millisecond, for samples given as positions alone.
+void timeEveryMillisecond(Trajectory& samples) {
+  const std::size_t n = samples.x.size();
+  samples.line.assign(n, 0);
+  samples.time.resize(n);
+  for (std::size_t i = 0; i < n; ++i) samples.time[i] = 0.001 * double(i);
+}
+
 Grid planeGrid(int passes, int points, double spacing, double step, bool zigZag,
                const std::function<double(double, double)>& z = {}) {
   Grid g;
@@ -36,10 +44,7 @@ Grid planeGrid(int passes, int points, double spacing, double step, bool zigZag,
     }
     g.passes.passes.push_back({begin, g.samples.x.size()});
   }
-  const std::size_t n = g.samples.x.size();
-  g.samples.line.assign(n, 0);
-  g.samples.time.resize(n);
-  for (std::size_t i = 0; i < n; ++i) g.samples.time[i] = 0.001 * double(i);
+  timeEveryMillisecond(g.samples);
   return g;
 }
 
@@ -404,10 +409,7 @@ Grid kochSnowflake(int level) {
     }
     g.passes.passes.push_back({begin, g.samples.x.size()});
   }
-  const std::size_t n = g.samples.x.size();
-  g.samples.line.assign(n, 0);
-  g.samples.time.resize(n);
-  for (std::size_t i = 0; i < n; ++i) g.samples.time[i] = 0.001 * double(i);
+  timeEveryMillisecond(g.samples);
   return g;
 }
 
