@@ -193,7 +193,8 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   } else {
     ImGui::Dummy(size);
     ImGui::SetCursorScreenPos(ImVec2(origin.x + 20, origin.y + 20));
-    ImGui::PushTextWrapPos(origin.x + size.x - 40);
+    // The wrap position is the window's own, not the screen's: 20 px short of the view's right.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + size.x - 40);
     ImGui::TextDisabled("%s", emptyViewText(s).c_str());
     ImGui::PopTextWrapPos();
   }
