@@ -436,3 +436,22 @@ TEST(workingDay, DraggingTurnsTheCameraByTheTrackballsAngle) {
   const double turned = std::acos(std::clamp(before.dot(direction()), -1.0, 1.0)) * 180.0 / M_PI;
   EXPECT_NEAR(turned, 200.0 * dx / width, 4.0);
 }
+
+// Optimise opened with a line selected starts at that line's pass; a range chosen stays.
+TEST(workingDay, OptimiseStartsAtTheSelectedLinesPass) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  tapLetter(*ui, 'P');
+  nlohmann::json state = described(*ui);
+  ASSERT_TRUE(state["windows"]["optimise"].get<bool>());
+  const auto lines = state["optimise_lines"].get<std::vector<int>>();
+  EXPECT_LE(lines[0], 2000);
+  EXPECT_GE(lines[1], 2000);
+  EXPECT_GT(lines[1], lines[0]) << "a whole pass, not one line";
+  tap(*ui, ImGuiKey_Escape);
+  ASSERT_FALSE(described(*ui)["windows"]["optimise"].get<bool>());
+  ASSERT_TRUE(ui->inspector().selectLine(20));
+  tapLetter(*ui, 'P');
+  ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
+  EXPECT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), lines) << "the range chosen before stays";
+}

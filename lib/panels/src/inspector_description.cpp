@@ -119,6 +119,7 @@ std::string Inspector::describe() const {
                               {"theme", s.persistent.theme},
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
+                              {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
                               {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}}
                                                       : nlohmann::json()},

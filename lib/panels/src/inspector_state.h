@@ -300,6 +300,9 @@ struct Inspector::State {
 // bottom-up, and without blending, since where VTK blended translucent glow its alpha is
 // below one and the panel behind must not show through.
 void drawViewFrame(unsigned int texture, ImVec2 size);
+// Whether Esc, pressed in a dialog while no field is being typed in, closes it (Esc in a field
+// first lets the field go, as ImGui does).
+inline bool escapeCloses(Inspector::State& s) { return !ImGui::GetIO().WantTextInput && s.takeEscape(); }
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
 Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.

@@ -185,7 +185,7 @@ void drawExportDialog(Inspector::State& s) {
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Close") || escapeCloses(s)) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

@@ -26,7 +26,7 @@ constexpr KeyHelp kKeys[] = {
     {"P", "re-optimise a region and compare the maps"},
     {"Ctrl+E", "export the view (PNG), the map's figures (JSON) or samples (CSV)"},
     {"Up / Down, PgUp / PgDn, Home / End", "step through the rows of the G-code pane or the data bar"},
-    {"Esc", "cancel the running job, end measuring"},
+    {"Esc", "close the dialog or window it is pressed in, else cancel the running job or end measuring"},
     {"H", "this window"},
     {"Ctrl+Q", "quit"},
     {"mouse", "left drag turns, right drag zooms, middle drag pans, wheel zooms, click picks; rest to see the value"},

@@ -105,7 +105,7 @@ void drawOpenDialog(Inspector::State& s) {
   noteControl(s, "open.open");
   if ((open || enter) && s.openPath[0]) openTyped(s);
   ImGui::SameLine();
-  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Close") || escapeCloses(s)) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

@@ -151,8 +151,23 @@ void Inspector::State::showOptimisedDifference(bool difference) {
   afterView.setScene(difference ? comparison->differenceScene : comparison->scene);
 }
 
+// A dialog opened with no range chosen yet (nor a box dragged) starts at the pass of the
+// selected line, where the user was looking, rather than at line 1.
+void startAtTheSelectedPass(Inspector::State& s) {
+  const Document* doc = s.activeDocument();
+  const auto& line = s.selection.current().line;
+  if (s.optimiseBox || s.optimiseFirst != 1 || s.optimiseLast != 1 || !line || !doc || !doc->samples) return;
+  if (const auto pass = passOfLine(SurfaceRun{doc->samples, doc->map.passes, nullptr}, *line)) {
+    s.optimiseFirst = static_cast<int>(pass->first);
+    s.optimiseLast = static_cast<int>(pass->last);
+  }
+}
+
 void drawOptimiseDialog(Inspector::State& s) {
-  if (s.optimiseDialog) ImGui::OpenPopup("Optimise region");
+  if (s.optimiseDialog) {
+    startAtTheSelectedPass(s);
+    ImGui::OpenPopup("Optimise region");
+  }
   s.optimiseDialog = false;
   s.optimiseDialogOpen = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (!s.optimiseDialogOpen) {
@@ -166,7 +181,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   if (!why.empty()) {
     // Nothing to optimise: say why here, where the user looks, and offer only Close.
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", why.c_str());
-    if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+    if (ImGui::Button("Close") || escapeCloses(s)) ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     return;
   }
@@ -233,7 +248,7 @@ void drawOptimiseDialog(Inspector::State& s) {
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Close") || escapeCloses(s)) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 

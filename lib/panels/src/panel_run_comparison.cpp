@@ -115,7 +115,7 @@ void drawCompareDialog(Inspector::State& s) {
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
-  if (ImGui::Button("Close")) ImGui::CloseCurrentPopup();
+  if (ImGui::Button("Close") || escapeCloses(s)) ImGui::CloseCurrentPopup();
   ImGui::EndPopup();
 }
 
