@@ -286,6 +286,19 @@ TEST(surface_mesh, WaterlineWallsFaceOutwards) {
 
 // Strips made on two threads give the mesh made one strip after another: the same triangles,
 // facing the same way (a wall's strips follow each other across the halves), and neighbours.
+namespace {
+
+// Edges that two triangles run the same way: where strips meet facing opposite ways.
+std::size_t directedEdgesUsedTwice(const SurfaceMesh& mesh) {
+  std::vector<std::pair<std::uint32_t, std::uint32_t>> edges;
+  for (const auto& t : mesh.triangles)
+    for (int e = 0; e < 3; ++e) edges.emplace_back(t[e], t[(e + 1) % 3]);
+  std::sort(edges.begin(), edges.end());
+  return static_cast<std::size_t>(edges.end() - std::unique(edges.begin(), edges.end()));
+}
+
+}  // namespace
+
 TEST(surface_mesh, StripsMadeSideBySideGiveTheSameMesh) {
   const Trajectory walls = stackedSquareLoops(8, 800);
   const Grid wave = planeGrid(40, 301, 0.05, 0.3, true, [](double x, double y) { return std::sin(x) * std::cos(y); });
@@ -308,6 +321,7 @@ TEST(surface_mesh, StripsMadeSideBySideGiveTheSameMesh) {
     EXPECT_EQ(a.nextPassNeighbour, b.nextPassNeighbour);
     EXPECT_EQ(a.previousPassNeighbour, b.previousPassNeighbour);
     EXPECT_EQ(a.vertexSample, b.vertexSample);
+    EXPECT_EQ(directedEdgesUsedTwice(a), 0u) << "neighbouring strips face opposite ways";
   }
 }
 
@@ -417,7 +431,7 @@ Grid kochSnowflake(int level) {
 
 // Passes that cross and double back over each other are no surface: no triangles between them,
 // and the reason says so rather than that they lie too far apart.
-TEST(surfaceMesh, PiecesOfOneEngravedCurveMakeNoSurface) {
+TEST(surface_mesh, PiecesOfOneEngravedCurveMakeNoSurface) {
   const Grid koch = kochSnowflake(4);
   const SurfaceMesh mesh = buildSurfaceMesh(koch.samples, koch.passes);
   EXPECT_EQ(mesh.foldedStrips, 2u);

@@ -276,10 +276,6 @@ TEST(regionOptimisation, WithoutABoxEveryCandidateIsMeasuredInTheFirstOnesBox) {
   const OptimizeResult paper = optimizeRegion(text, program, r.lines, defaultMachine(), OptimizeOptions{});
   EXPECT_EQ(r.lower, paper.fittedLower);
   EXPECT_EQ(r.upper, paper.fittedUpper);
-  OptimizeOptions chosenShape;
-  chosenShape.shape = r.plan.find("drawn taut") != std::string::npos ? PathShape::DrawnTaut : PathShape::CornersRounded;
-  chosenShape.programmedFeed = true;
-  const OptimizeResult chosen = optimizeRegion(text, program, r.lines, defaultMachine(), chosenShape);
-  EXPECT_TRUE(chosen.fittedLower != paper.fittedLower || chosen.fittedUpper != paper.fittedUpper)
-      << "the chosen candidate re-fits the same box: nothing is shown " << r.plan << " " << chosen.fittedUpper.transpose();
+  EXPECT_TRUE(r.result.fittedLower != r.lower || r.result.fittedUpper != r.upper)
+      << "the chosen candidate re-fits the first one's box: the test shows nothing";
 }

@@ -1,5 +1,6 @@
 // Loading a document on a background thread: program text, the program and its samples (one
 // workflow call: read and joined, or simulated), the quality map and its scene, the curves.
+#include <algorithm>
 #include <filesystem>
 #include <future>
 
@@ -57,6 +58,13 @@ std::string mapCaption(const Document& doc) {
   return caption;
 }
 
+void noteFoldedPasses(Document& doc) {
+  auto& w = doc.warnings;
+  w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.find(kFoldedPassesNote) != std::string::npos; }),
+          w.end());
+  if (doc.map.mesh && doc.map.mesh->foldedStrips > 0) w.push_back(foldedPasses(doc.map.mesh->foldedStrips));
+}
+
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
                                        const vis::QualityMapRequest& request, const Machine& machine,
                                        bool unitsOfProgram, app_model::JobControl& control) {
@@ -95,7 +103,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   // curves and rows are there, and the reason stands beside the file's own warnings.
   try {
     doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
-    if (doc->map.mesh->foldedStrips > 0) doc->warnings.push_back(foldedPasses(doc->map.mesh->foldedStrips));
+    noteFoldedPasses(*doc);
     control.progress(0.75);
     doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
   } catch (const InputError& e) {

@@ -221,6 +221,7 @@ void Inspector::State::takeJobResult() {
     const bool firstMap = !doc->scene;
     doc->map = std::move(result->map);
     doc->scene = result->scene;
+    noteFoldedPasses(*doc);
     doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
     status = doc->name + ": coloured by " +
              (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);

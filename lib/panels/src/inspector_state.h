@@ -368,5 +368,8 @@ inline std::string sampleName(const Trajectory& samples, std::size_t i) {
 
 // The first line of a document's map captions: its machine, and its thinning if it is thinned.
 std::string mapCaption(const Document& doc);
+// The document's warning of passes not joined as they fold over each other, as its map now has
+// them (a map made again with another gap may fold elsewhere).
+void noteFoldedPasses(Document& doc);
 
 }  // namespace isurface::panels

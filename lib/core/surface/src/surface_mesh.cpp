@@ -279,6 +279,7 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
   shape.end = triangles.size();
   shape.normal = normal;
   shape.areaSum = areaSum;
+  shape.reversedB = b.reversed;
   if (folds(triangles, shape)) {
     // Not a surface between these passes: its triangles and its matches are let go.
     triangles.resize(shape.begin);
@@ -344,14 +345,15 @@ std::string passesTooFarApart(double gapLimit) {
 std::string whyNoTriangles(const PassSet& passes, double gapLimit, std::size_t foldedStrips) {
   if (passes.passes.empty()) return kNoCuttingPasses;
   if (passes.passes.size() < 2) return "a single cutting pass makes no surface (a surface lies between passes)";
-  if (foldedStrips > 0) return foldedPasses(foldedStrips) + ", and no others lie side by side: the path makes no surface";
-  return passesTooFarApart(gapLimit);
+  // Every neighbouring pair folds: no gap would join them into a surface.
+  if (foldedStrips + 1 >= passes.passes.size()) return foldedPasses(foldedStrips) + ": the path makes no surface";
+  return (foldedStrips > 0 ? foldedPasses(foldedStrips) + "; " : std::string()) + passesTooFarApart(gapLimit);
 }
 
 std::string foldedPasses(std::size_t foldedStrips) {
-  return fmt::format("{} pair{} of neighbouring passes cross and double back over each other, as pieces of one "
-                     "engraved curve do, instead of lying side by side over a surface: not joined",
-                     foldedStrips, foldedStrips == 1 ? "" : "s");
+  return fmt::format("{} pair{} of neighbouring passes {}, as pieces of one engraved curve do, instead of lying side "
+                     "by side over a surface: not joined",
+                     foldedStrips, foldedStrips == 1 ? "" : "s", kFoldedPassesNote);
 }
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options) {

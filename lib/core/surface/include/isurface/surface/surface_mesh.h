@@ -39,8 +39,10 @@ inline constexpr const char* kNoCuttingPasses = "no cutting passes found to buil
 // Why passes made no triangle: none, a single pass (which no gap joins to another), passes
 // that fold over each other (SurfaceMesh::foldedStrips), or passes too far apart.
 std::string whyNoTriangles(const PassSet& passes, double gapLimit, std::size_t foldedStrips = 0);
-// What a mesh's folded strips mean, for a note beside a map.
+// What a mesh's folded strips mean, for a note beside a map; every such note holds
+// kFoldedPassesNote.
 std::string foldedPasses(std::size_t foldedStrips);
+inline constexpr const char* kFoldedPassesNote = "cross and double back over each other";
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
 std::size_t strideWithin(const PassSet& passes, std::size_t maxVertices);
