@@ -3,6 +3,7 @@
 // window are opened; settings and recent files are kept between runs.
 #define GL_GLEXT_PROTOTYPES 1
 #define GLFW_INCLUDE_GLEXT
+#include <algorithm>
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
@@ -155,6 +156,16 @@ int run(int argc, char** argv) {
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 2);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GL_TRUE);
+  // No larger than the screen's work area (a size remembered from a larger screen, or the
+  // default on a laptop's): a window beyond the screen hides its right and lower panels.
+  if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+    int x = 0, y = 0, width = 0, height = 0;
+    glfwGetMonitorWorkarea(monitor, &x, &y, &width, &height);
+    if (width > 0 && height > 0) {
+      settings.windowWidth = std::min(settings.windowWidth, width);
+      settings.windowHeight = std::min(settings.windowHeight, height);
+    }
+  }
   GLFWwindow* window = glfwCreateWindow(settings.windowWidth, settings.windowHeight, "iSurface", nullptr, nullptr);
   if (!window) {
     std::fprintf(stderr, "isurface: cannot create an OpenGL 3.2 window\n");

@@ -106,6 +106,10 @@ TEST(inspector, AColouringEndingAfterAnotherDocumentWasChosenColoursItsOwn) {
   EXPECT_EQ(state["documents"][0]["map_quantity"], "Path speed") << state["documents"].dump();
   EXPECT_EQ(state["documents"][1]["map_quantity"], "Tangential acceleration") << state["documents"].dump();
   EXPECT_EQ(state["map"]["quantity"], "Path speed");
+  // The Colour panel says what the map shown is coloured by, and a map beside it is made alike.
+  EXPECT_EQ(state["colour"]["quantity"], "Path speed");
+  inspector.showDocument(1);
+  EXPECT_EQ(nlohmann::json::parse(inspector.describe())["colour"]["quantity"], "Tangential acceleration");
 }
 
 TEST(inspector, ARegionOptimisedWhileAnotherDocumentWasChosenIsShownWithItsOwn) {

@@ -258,8 +258,14 @@ void Inspector::State::activate(std::size_t index) {
   selection.clear();
   view.setScene(doc ? doc->scene : nullptr, doc ? doc->map.rayIndex : nullptr);
   if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
-  // The Colour panel shows, and a colouring made again keeps, the gap of the map shown.
-  if (doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
+  // The Colour panel shows what the map shown is coloured by, on which surface, at which gap:
+  // a colouring made again, or a re-optimised map beside it, is made alike.
+  if (doc && doc->scene) {
+    settings.quantity = doc->map.request.quantity;
+    settings.channel = doc->map.request.channel;
+    settings.feedbackSurface = doc->map.request.feedbackSurface;
+    settings.gapLimit = doc->map.request.gapLimit;
+  }
   view.invalidate();
   curveFirst = 0;
   curveLast = doc && doc->samples ? doc->samples->size() : 0;

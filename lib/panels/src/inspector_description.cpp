@@ -107,7 +107,9 @@ std::string Inspector::describe() const {
                               {"map", map},
                               {"view_text", map.empty() ? emptyViewText(s) : std::string()},
                               {"length_unit", s.units().lengthUnit()},
-                              {"colour", {{"unit", s.settings.channel.empty()
+                              {"colour", {{"quantity", s.settings.channel.empty() ? quantityInfo(s.settings.quantity).label
+                                                                                   : s.settings.channel},
+                                          {"unit", s.settings.channel.empty()
                                                        ? s.units().unitOf(quantityInfo(s.settings.quantity).unit)
                                                        : ""},
                                           {"range_mode", s.settings.rangeMode},

@@ -190,9 +190,14 @@ void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h)
   for (std::size_t i = 0; i < s.documents.size(); ++i) {
     Document& doc = *s.documents[i];
     ImGui::PushID(static_cast<int>(i));
-    const ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | (i == s.active ? ImGuiTreeNodeFlags_Selected : 0);
+    // A click on the name shows the document; the arrow (or a double click) opens and closes it.
+    const ImGuiTreeNodeFlags flags = ImGuiTreeNodeFlags_DefaultOpen | ImGuiTreeNodeFlags_OpenOnArrow |
+                                     ImGuiTreeNodeFlags_OpenOnDoubleClick | (i == s.active ? ImGuiTreeNodeFlags_Selected : 0);
     const bool open = ImGui::TreeNodeEx(doc.name.c_str(), flags);
-    if (ImGui::IsItemClicked() && i != s.active) s.activate(i);
+    if (ImGui::IsItemClicked() && i != s.active) {
+      s.activate(i);
+      s.status = "showing " + s.documents[i]->name;  // not what the document shown before said last
+    }
     if (open) {
       bool changed = false;
       if (doc.program) {
