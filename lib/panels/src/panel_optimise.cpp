@@ -193,10 +193,13 @@ void drawOptimiseDialog(Inspector::State& s) {
   // The box only stands for the region while the lines are still its own.
   const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
                      s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
+  // Always a line here, so that the buttons below stay where they were when a box is chosen.
   if (boxed) {
     const app_model::BoxSelection& b = *s.optimiseBox;
     ImGui::TextWrapped("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
+  } else {
+    ImGui::TextWrapped("%s", "No box: the figures are taken where the first plan re-fits the path");
   }
   if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
     // The regions are judged on the predicted deviation too, as `optimize --auto` judges them.
@@ -314,7 +317,7 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
                                           : fmt::format("Earlier result, lines {}-{} ({}): {}", c.first, c.last,
                                                         c.supersededBy, c.summary),
                    x, y, w, h);
-  if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (speed after - before)"))
+  if (const auto difference = drawDifferenceToggle(c.showDifference, "Difference (after - before)"))
     s.showOptimisedDifference(*difference);
   if (c.kept) {
     ImGui::SetNextItemWidth(w * 0.5f);

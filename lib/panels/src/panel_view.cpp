@@ -82,7 +82,9 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
     s.hoverSample.reset();
     return;
   }
-  if (++s.hoverRestFrames == kHoverRestFrames) {
+  // Picked again every so many frames at rest: the map under a resting pointer can change (a
+  // new map, the view split for one beside it).
+  if (++s.hoverRestFrames % kHoverRestFrames == 0) {
     s.hoverSample.reset();
     if (const auto hit = s.view.pick(mx, my)) s.hoverSample = sampleAtHit(*doc->samples, *doc->map.mesh, *hit);
   }
@@ -249,6 +251,9 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   } else if (ImGui::IsWindowHovered() && texture) {
     s.view.mouseMove(mx, my);
     drawHoverValue(s, mx, my);
+  } else {
+    s.hoverSample.reset();  // the pointer left the view
+    s.hoverRestFrames = 0;
   }
   ImGui::End();
   ImGui::PopStyleVar();
