@@ -41,6 +41,7 @@ void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRe
   request.view = like.view;
   request.coarseVertices = like.coarseVertices;
   request.gapLimit = like.gapLimit;  // the passes joined as on the map it is the difference of
+  if (request.caption.empty()) request.caption = like.caption;  // the machine both runs were made with
   map = vis::buildQualityMap(a, program, request);
   scene = std::make_shared<vis::QualityScene>(map.data, map.style);
 }
