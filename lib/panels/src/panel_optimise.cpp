@@ -38,14 +38,6 @@ std::string passDifferenceText(const RunComparison& difference, const OptimizeRe
                      apart, speedChange);
 }
 
-// The summary's last sentence, whether the new program is kept and why, put first: the panel
-// shows the start of a long summary and scrolls the rest.
-std::string verdictFirst(const std::string& summary, bool kept) {
-  const std::size_t at = summary.rfind(kept ? ". Kept (" : ". Not kept (");
-  if (at == std::string::npos) return summary;
-  return summary.substr(at + 2) + ". " + summary.substr(0, at);  // the next sentence ends it
-}
-
 std::string whyNotOptimisable(const Document* doc) {
   if (!doc) return "Optimise needs a G-code program: open one first";
   if (!doc->program || doc->programPath.empty())
@@ -138,7 +130,8 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               // The difference map's colours span its 1-99 % range, not the largest difference
               // the text gives: said, so that a colour at the end of the bar is not read as the most.
               const auto& colours = c->differenceMap.style.range;
-              c->summary = verdictFirst(regionSummary(r), r.kept) + passDifferenceText(c->difference, r.result) +
+              // Whether it is kept first: the panel shows the start of a long summary and scrolls the rest.
+              c->summary = regionVerdict(r) + ". " + regionFigures(r) + passDifferenceText(c->difference, r.result) +
                            fmt::format(" (the difference map's colours span {:+.0f} .. {:+.0f} mm/min)", colours.lo,
                                        colours.hi);
               result->comparison = c;

@@ -462,7 +462,7 @@ const char* objectiveName(Objective objective) {
   return "balanced";
 }
 
-std::string regionSummary(const RegionOptimisation& r) {
+std::string regionFigures(const RegionOptimisation& r) {
   const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
   return fmt::format(
       "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
@@ -474,13 +474,18 @@ std::string regionSummary(const RegionOptimisation& r) {
       a.hasDeviation && b.hasDeviation
           ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} \u00b5m", a.deviationP99, b.deviationP99)
           : "",
-      r.maxPathDistance, r.plan) +
-         (r.kept ? fmt::format(". Kept ({}): {}no figure worse by more than {:g} %", objectiveName(r.objective),
-                               r.objective == Objective::Quality
-                                   ? fmt::format("at most {:g} % slower, ", 100 * kQualitySlowdownAllowed)
-                                   : std::string("not slower, "),
-                               100 * kWorseningAllowed)
-                 : fmt::format(". Not kept ({}): {}; the program is left as it was", objectiveName(r.objective), r.reason));
+      r.maxPathDistance, r.plan);
 }
+
+std::string regionVerdict(const RegionOptimisation& r) {
+  return r.kept ? fmt::format("Kept ({}): {}no figure worse by more than {:g} %", objectiveName(r.objective),
+                              r.objective == Objective::Quality
+                                  ? fmt::format("at most {:g} % slower, ", 100 * kQualitySlowdownAllowed)
+                                  : std::string("not slower, "),
+                              100 * kWorseningAllowed)
+                : fmt::format("Not kept ({}): {}; the program is left as it was", objectiveName(r.objective), r.reason);
+}
+
+std::string regionSummary(const RegionOptimisation& r) { return regionFigures(r) + ". " + regionVerdict(r); }
 
 }  // namespace isurface

@@ -100,6 +100,7 @@ struct StripShape {
   std::size_t begin = 0, end = 0;
   Vec3 normal = Vec3::Zero();  // sum of the triangles' (doubled) area vectors
   double areaSum = 0;
+  double facingUp = 0, facingDown = 0;  // of the doubled area, |z| of the triangles facing +Z, -Z as made
   bool reversedB = false;      // the walk ran pass B backward
   bool folded = false;         // its triangles folded over one another: none kept (see folds)
   bool wall() const { return !(std::fabs(normal.z()) >= 0.5 * areaSum); }
@@ -140,15 +141,9 @@ class StripBuilder {
   // over each other (pieces of one engraved curve, a wire figure), and the triangles between
   // them are no surface. Between the passes of a finishing program, every triangle faces the
   // same way as made.
-  bool folds(const std::vector<Triangle>& triangles, const StripShape& strip) const {
-    double up = 0, down = 0;
-    for (std::size_t q = strip.begin; q < strip.end; ++q) {
-      const Vec3 p0 = pos(triangles[q][0]), p1 = pos(triangles[q][1]), p2 = pos(triangles[q][2]);
-      const double z = (p1 - p0).cross(p2 - p0).z();
-      (z > 0 ? up : down) += std::fabs(z);
-    }
-    const double facing = up + down;
-    return facing > kFacingShare * strip.areaSum && std::min(up, down) > kFoldedShare * facing;
+  static bool folds(const StripShape& strip) {
+    const double facing = strip.facingUp + strip.facingDown;
+    return facing > kFacingShare * strip.areaSum && std::min(strip.facingUp, strip.facingDown) > kFoldedShare * facing;
   }
   // Whether triangle t = {a, next on one pass, b} (its cross-pass edges `across` and `other`
   // long, squared) joins passes within the gap limit: both edges within it, or, where the step
@@ -271,6 +266,7 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
       if (area2 > 1e-24 * scale * scale && area2 > 0) {
         triangles.push_back(t);
         normal += n;
+        (n.z() > 0 ? shape.facingUp : shape.facingDown) += std::fabs(n.z());
         areaSum += std::sqrt(area2);
       }
     }
@@ -280,7 +276,7 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
   shape.normal = normal;
   shape.areaSum = areaSum;
   shape.reversedB = b.reversed;
-  if (folds(triangles, shape)) {
+  if (folds(shape)) {
     // Not a surface between these passes: its triangles and its matches are let go.
     triangles.resize(shape.begin);
     shape = StripShape{shape.begin, shape.begin};

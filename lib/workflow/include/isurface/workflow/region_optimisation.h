@@ -124,7 +124,10 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
                                   const ProgressCallback& progress = {});
 
 // One line of figures: machining time, speed fluctuation, inconsistency, jerk (mm/min, mm/s^3),
-// and, for a candidate that was not kept, why.
+// and, for a candidate that was not kept, why: regionFigures(r) + ". " + regionVerdict(r).
 std::string regionSummary(const RegionOptimisation& r);
+std::string regionFigures(const RegionOptimisation& r);
+// Whether the candidate is kept, under which objective, and why ("Kept (balanced): ...").
+std::string regionVerdict(const RegionOptimisation& r);
 
 }  // namespace isurface
