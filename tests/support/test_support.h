@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <sys/wait.h>
 
@@ -26,14 +27,32 @@ inline std::string readFile(const std::string& path) {
   return s.str();
 }
 
-// A fresh scratch folder per test binary run.
-inline std::filesystem::path scratchDir() {
-  static std::filesystem::path dir = [] {
+// A fresh scratch folder per test process, removed when the process ends (each test runs in a
+// process of its own, so a folder left behind per test fills /tmp run after run). Set
+// ISURFACE_KEEP_TEST_FILES to keep them for a look after a failure.
+class ScratchFolder {
+ public:
+  ScratchFolder() {
     char tmpl[] = "/tmp/isurface-test-XXXXXX";
-    const char* made = mkdtemp(tmpl);
-    return std::filesystem::path(made ? made : "/tmp");
-  }();
-  return dir;
+    if (const char* made = mkdtemp(tmpl)) path_ = made;
+  }
+  ~ScratchFolder() {
+    if (path_.empty() || std::getenv("ISURFACE_KEEP_TEST_FILES")) return;
+    std::error_code ignored;
+    std::filesystem::remove_all(path_, ignored);
+  }
+  ScratchFolder(const ScratchFolder&) = delete;
+  ScratchFolder& operator=(const ScratchFolder&) = delete;
+  const std::filesystem::path& path() const { return path_; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+inline std::filesystem::path scratchDir() {
+  static const ScratchFolder folder;
+  if (folder.path().empty()) throw std::runtime_error("cannot make a scratch folder in /tmp");
+  return folder.path();
 }
 
 #ifdef ISURFACE_CLI  // only tests/cli runs the command line
