@@ -157,3 +157,41 @@ TEST(feedRamps, RoundingAndTightBendsDoNotStopTheMachine) {
   EXPECT_EQ(plain.points.size(), pass.points.size());
   for (const double f : plain.feeds) EXPECT_NEAR(f, 2000, 1e-9);
 }
+
+// Ramps asked for inside a box (where a region's figures are taken) run at their acceleration on
+// the moves that reach into it, and faster on the others.
+TEST(feedRamps, OutsideTheBoxAskedForRampsRunFaster) {
+  RampOptions options;
+  options.programmedFeed = 2500;
+  options.rampAcceleration = 100;
+  options.outsideAcceleration = 1000;
+  options.within = std::make_pair(Vec3(21, -1, -1), Vec3(23, 1, 10));  // the fillet's end and the slope's start
+  const FeedPerMove m = feedPerMove(planeFilletSlope(), options);
+  // Into the fillet from the plane: from 1200 to 2500 mm/min within 0.67 mm at 1000 mm/s^2.
+  EXPECT_EQ(feedAt(m, 19.0), 2500);
+  EXPECT_GT(feedAt(m, 19.9), 1300);
+  EXPECT_LT(feedAt(m, 19.9), 2000);
+  EXPECT_EQ(feedAt(m, 21.0), 1200);
+  // Out of it onto the slope, whose move reaches into the box: 100 mm/s^2 until done (6.7 mm).
+  EXPECT_LT(feedAt(m, 23.0), 1500);
+  EXPECT_LT(feedAt(m, 26.0), 2500);
+  EXPECT_GT(feedAt(m, 26.0), feedAt(m, 23.0));
+  EXPECT_EQ(feedAt(m, 35.0), 2500);
+  // Without a box, 100 mm/s^2 on both sides.
+  options.within.reset();
+  EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);
+}
+
+// A long move at whose end the ramp reaches it less than a step below its feed runs at its feed:
+// the top of the ramp is cut off near its end, not the whole move slowed by a step.
+TEST(feedRamps, ALongMoveARampEndsOnKeepsItsFeed) {
+  PassFeeds pass = planeFilletSlope();
+  pass.feeds = {2500, 2490, 2500};
+  RampOptions options;
+  options.programmedFeed = 2500;
+  options.rampAcceleration = 100;
+  const FeedPerMove m = feedPerMove(pass, options);
+  EXPECT_EQ(feedAt(m, 10.0), 2500);
+  EXPECT_EQ(feedAt(m, 19.9), 2500);
+  EXPECT_EQ(feedAt(m, 30.0), 2500);
+}

@@ -30,7 +30,7 @@ constexpr double kServoBoundShare = 0.95;
 
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster one costs less time, the gentler one changes the speed more evenly.
-constexpr double kRampAccelerations[] = {200.0, 100.0};
+constexpr double kRampAccelerations[] = {250.0, 200.0, 100.0};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -290,6 +290,7 @@ std::string describe(const Candidate& c, double tube) {
                          : "",
                      c.ramp > 0 ? fmt::format(", ramps of {:g} mm/s^2", c.ramp) : "",
                      c.shape == PathShape::DrawnTaut        ? fmt::format(", points drawn taut within {:g} mm", tube)
+                     : c.shape == PathShape::Eased          ? fmt::format(", bends eased in and out within {:g} mm", tube)
                      : c.shape == PathShape::CornersRounded ? fmt::format(", corners rounded within {:g} mm", tube)
                                                             : "",
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
@@ -313,6 +314,8 @@ class ClosedLoop {
     // Every candidate is measured in one box, so that their figures compare: the one asked
     // for, else the first candidate's (where the paper's steps re-fit the path).
     if (!candidate.box) candidate.box = judgedBox_;
+    // Ramps are laid where the figures are taken; elsewhere the NC's own changes of speed are quicker.
+    candidate.options.rampBox = candidate.box;
     candidate.options.feedScale = request_.options.feedScale * c.share;
     candidate.options.crossPass = c.rule;
     candidate.options.lineFeedCeiling = c.ceilings;
@@ -384,6 +387,20 @@ void judgeShapeCandidates(ClosedLoop& loop, PathShape shape) {
   }
 }
 
+// The bends eased in and out (eased_path.h), the program's feed kept but no bend run faster than
+// `limit` (mm/s^2), with ramps of `ramp`. The servo deviates in proportion to the normal
+// acceleration, and eased bends, which it enters without a step, leave it below what the
+// program deviated: where that run was slower, the bound is raised once by the room left.
+void judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
+  const RegionOptimisation* eased = loop.judge({CrossPassRule::None, 1.0, false, {}, limit, ramp, PathShape::Eased, true});
+  if (!eased || !slower(*eased) || !eased->regionAfter.hasDeviation) return;
+  auto room = [](const QualityFigures& before, const QualityFigures& after) {
+    return after.deviationP99 > 0 ? before.deviationP99 / after.deviationP99 : 1.0;
+  };
+  const double raise = std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter));
+  if (raise > 1 + kGainRequired) loop.judge({CrossPassRule::None, 1.0, false, {}, limit * raise, ramp, PathShape::Eased, true});
+}
+
 }  // namespace
 
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
@@ -415,6 +432,8 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // A run that deviated by nothing (feedback equal to the command) gives no bound to plan to.
   if (std::isfinite(limit) && limit > 0)
     for (const double ramp : kRampAccelerations) loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
+  if (std::isfinite(limit) && limit > 0)
+    for (const double ramp : kRampAccelerations) judgeEasedBends(loop, limit, ramp);
   const RegionOptimisation* fine = loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {
     const double target = std::min(fine->regionBefore.deviationP99, fine->wholeBefore.deviationP99);

@@ -49,15 +49,16 @@ void limitNormalAcceleration(const std::vector<Vec3>& points, double limit, doub
 }
 
 // The ramp's speed at every point (mm/s): no more than the feeds of the moves it joins, and
-// reachable from its neighbours at the ramp's acceleration, both ways along the pass.
-std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::vector<double>& feeds, double a) {
+// reachable from its neighbours at each move's ramp acceleration `a` (mm/s^2), both ways along
+// the pass.
+std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::vector<double>& feeds, const std::vector<double>& a) {
   const std::size_t n = points.size();
   std::vector<double> u(n);
   for (std::size_t k = 0; k < n; ++k) u[k] = std::min(feeds[k > 0 ? k - 1 : 0], feeds[std::min(k, feeds.size() - 1)]);
   for (std::size_t k = 0; k + 1 < n; ++k)
-    u[k + 1] = std::min(u[k + 1], std::sqrt(u[k] * u[k] + 2 * a * (points[k + 1] - points[k]).norm()));
+    u[k + 1] = std::min(u[k + 1], std::sqrt(u[k] * u[k] + 2 * a[k] * (points[k + 1] - points[k]).norm()));
   for (std::size_t k = n - 1; k > 0; --k)
-    u[k - 1] = std::min(u[k - 1], std::sqrt(u[k] * u[k] + 2 * a * (points[k] - points[k - 1]).norm()));
+    u[k - 1] = std::min(u[k - 1], std::sqrt(u[k] * u[k] + 2 * a[k - 1] * (points[k] - points[k - 1]).norm()));
   return u;
 }
 
@@ -66,16 +67,20 @@ std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::ve
 std::vector<double> rampBreaks(double length, double feed, double atStart, double atEnd, double a, double step) {
   std::vector<double> breaks;
   for (const auto& [from, mirrored] : {std::pair{atStart, false}, std::pair{atEnd, true}})
-    for (double level = (std::floor(from / step) + 1) * step; level < feed; level += step) {
+    // Up to the move's feed itself: where the ramp reaches it, the rest of the move holds it.
+    for (double level = (std::floor(from / step) + 1) * step; level <= feed * (1 + 1e-9); level += step) {
       const double s = (level * level - from * from) / (2 * a);
       if (s >= length) break;
       breaks.push_back(mirrored ? length - s : s);
     }
+  // A break nearer an end than the shortest piece moves away from it rather than being left
+  // out: left out, the whole long move before it would run at the step below.
+  if (length < 2 * kShortestRampPiece) return {};
+  for (double& s : breaks) s = std::clamp(s, kShortestRampPiece, length - kShortestRampPiece);
   std::sort(breaks.begin(), breaks.end());
   std::vector<double> kept;
   for (const double s : breaks)
-    if (s >= kShortestRampPiece && s <= length - kShortestRampPiece && (kept.empty() || s - kept.back() >= kShortestRampPiece))
-      kept.push_back(s);
+    if (kept.empty() || s - kept.back() >= kShortestRampPiece) kept.push_back(s);
   return kept;
 }
 
@@ -95,7 +100,17 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
   // Ramps need a step to cut them at: none without a programmed feed.
   const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
   const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
-  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, a) : std::vector<double>{};
+  // Per move, the ramp's acceleration: outside the box asked for, the faster of the two.
+  std::vector<double> accel(feeds.size(), a);
+  if (options.within)
+    for (std::size_t k = 0; k < accel.size(); ++k) {
+      const auto& [lower, upper] = *options.within;
+      auto inside = [&](const Vec3& p) {
+        return p.x() >= lower.x() && p.x() <= upper.x() && p.y() >= lower.y() && p.y() <= upper.y();
+      };
+      if (!inside(pass.points[k]) && !inside(pass.points[k + 1])) accel[k] = std::max(a, options.outsideAcceleration);
+    }
+  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, accel) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
     const Vec3 &from = pass.points[k], &to = pass.points[k + 1];
     const std::uint32_t line = k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0;
@@ -104,11 +119,14 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
       continue;
     }
     const double length = (to - from).norm();
+    // The speeds the ramps running into the move hold at its ends (where none runs, the move's
+    // own feed: the NC steps there at its own limits).
+    const double atStart = u[k], atEnd = u[k + 1], a = accel[k];
     // The ramp's speed at a distance s into the move; the lowest over a piece is at one of its ends.
     auto envelope = [&](double s) {
-      return std::min({feeds[k], std::sqrt(u[k] * u[k] + 2 * a * s), std::sqrt(u[k + 1] * u[k + 1] + 2 * a * (length - s))});
+      return std::min({feeds[k], std::sqrt(atStart * atStart + 2 * a * s), std::sqrt(atEnd * atEnd + 2 * a * (length - s))});
     };
-    std::vector<double> cuts = rampBreaks(length, feeds[k], u[k], u[k + 1], a, step);
+    std::vector<double> cuts = rampBreaks(length, feeds[k], atStart, atEnd, a, step);
     cuts.push_back(length);
     double s0 = 0;
     for (const double s1 : cuts) {

@@ -19,6 +19,7 @@
 #include "isurface/fitting/interval_speed_plan.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/optimise/cross_pass_feeds.h"
+#include "isurface/optimise/eased_path.h"
 #include "isurface/optimise/feed_ramps.h"
 #include "isurface/optimise/rounded_corners.h"
 #include "isurface/optimise/taut_path.h"
@@ -30,6 +31,9 @@ namespace {
 // rad: each chord of a rounded corner turns the path by no more. The NC passes such a junction
 // at the speeds of finishing without braking for its jerk; finer pieces only multiply lines.
 constexpr double kRoundedPieceTurn = 0.1;
+
+// Of the machine's acceleration (its slowest axis), the ramps' outside the region's box.
+constexpr double kOutsideRampShare = 0.5;
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
@@ -185,6 +189,17 @@ std::vector<Vec3> refitInterval(const std::vector<Vec3>& own, const OptimizeOpti
   return out;
 }
 
+// The pass's points fitted interval by interval, as the paper fits them.
+std::vector<Vec3> fittedPath(const std::vector<Vec3>& points, const OptimizeOptions& options) {
+  std::vector<Vec3> out = {points.front()};
+  for (const ConstantSpeedInterval& interval : partitionConstantSpeedIntervals(points, options.thresholds).intervals) {
+    const std::vector<Vec3> piece =
+        refitInterval(std::vector<Vec3>(points.begin() + interval.first, points.begin() + interval.last + 1), options);
+    out.insert(out.end(), piece.begin() + 1, piece.end());
+  }
+  return out;
+}
+
 // One feed per constant speed interval: the paper's planned speed from the interval's average
 // curvature (interval_speed_plan.h), but no more than the NC allows over most of the new
 // points (the median of its limits), so that the machine holds it rather than braking and
@@ -298,6 +313,13 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
     points = std::move(rounded.points);
     moveOf = std::move(rounded.oldSegment);
   }
+  if (options.shape == PathShape::Eased) {
+    EasedPath eased = easedPath(fittedPath(points, options), points, options.maximumDeviation, options.chordTolerance, options.maxTurn);
+    std::vector<std::size_t> moves;
+    for (const std::size_t segment : eased.oldSegment) moves.push_back(moveOf[segment]);
+    points = std::move(eased.points);
+    moveOf = std::move(moves);
+  }
   const IntervalPartition partition = partitionConstantSpeedIntervals(points, options.thresholds);
   // Each constant speed interval is fitted on its own (as the paper fits the CL points of an
   // interval): a spline across an interval's boundary, where spacing or curvature jumps,
@@ -308,7 +330,8 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
   std::vector<std::size_t> dataIndex(points.size(), 0);
   for (const ConstantSpeedInterval& interval : partition.intervals) {
     const std::vector<Vec3> own(points.begin() + interval.first, points.begin() + interval.last + 1);
-    // A path drawn taut or rounded has used the deviation a fit would be allowed: it is not fitted.
+    // A path drawn taut, rounded or eased has used the deviation a fit would be allowed: it is
+    // not fitted (again).
     const std::vector<Vec3> piece = options.shape != PathShape::Fitted ? own : refitInterval(own, options);
     const std::size_t offset = plan.points.size() - 1;
     plan.points.insert(plan.points.end(), piece.begin() + 1, piece.end());
@@ -346,7 +369,8 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
-  std::vector<std::vector<std::size_t>> runs = findRuns(program, lines, range, options.shape != PathShape::Fitted);
+  std::vector<std::vector<std::size_t>> runs =
+      findRuns(program, lines, range, options.shape == PathShape::DrawnTaut || options.shape == PathShape::CornersRounded);
   runs.erase(std::remove_if(runs.begin(), runs.end(), [&](const auto& r) { return r.size() < options.minimumMoves; }),
              runs.end());
   if (runs.empty())
@@ -370,7 +394,11 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
                              ? fmt::format("points drawn taut within {:g} mm", options.maximumDeviation)
                          : options.shape == PathShape::CornersRounded
                              ? fmt::format("corners rounded within {:g} mm", options.maximumDeviation)
+                         : options.shape == PathShape::Eased
+                             ? fmt::format("Akima spline in arc length, bends eased in and out within {:g} mm", options.maximumDeviation)
                              : std::string("Akima spline in arc length");
+  double slowestAxisAcceleration = INFINITY;  // mm/s^2
+  for (const AxisLimits& axis : machine.axes) slowestAxisAcceleration = std::min(slowestAxisAcceleration, axis.maxAcceleration);
   std::vector<PassFeeds> plans;
   for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
   result.fittedLower = fittedBox.lower;
@@ -381,7 +409,8 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
     const double feed = first.feed;
-    const FeedPerMove moves = feedPerMove(plans[r], {feed, options.normalAccelerationLimit, options.rampAcceleration});
+    const FeedPerMove moves = feedPerMove(plans[r], {feed, options.normalAccelerationLimit, options.rampAcceleration,
+                                                     options.rampBox, kOutsideRampShare * slowestAxisAcceleration});
     const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;

@@ -7,6 +7,8 @@
 // function of the position on the path, is the same whichever way a pass runs: a pass and its
 // neighbour cut the other way slow down over the same stretch of the surface.
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <vector>
 
 #include "isurface/base/geometry.h"
@@ -31,6 +33,10 @@ struct RampOptions {
   // slowed below a fifth of the programmed feed, as no interval is.
   double normalAccelerationLimit = 0;
   double rampAcceleration = 0;  // mm/s^2, the ramps' tangential acceleration; 0: steps
+  // XY, mm: the ramps run at rampAcceleration on the moves that reach inside, and at
+  // outsideAcceleration (if faster) on the others. None: rampAcceleration everywhere.
+  std::optional<std::pair<Vec3, Vec3>> within;
+  double outsideAcceleration = 0;  // mm/s^2
 };
 
 // No move's feed is above its interval's; a ramp lies in the faster stretch and changes the

@@ -7,6 +7,8 @@
 // Every line outside the changed passes is kept byte for byte; new blocks carry comments naming
 // the lines they replace.
 #include <cstdint>
+#include <optional>
+#include <utility>
 #include <string>
 #include <vector>
 
@@ -31,6 +33,7 @@ enum class PathShape {
   Fitted,          // an Akima spline through the program's own points (the paper's steps)
   DrawnTaut,       // its points drawn taut within maximumDeviation (taut_path.h), not fitted
   CornersRounded,  // its corners cut by arcs within maximumDeviation (rounded_corners.h), not fitted
+  Eased,           // the Akima fit with its bends eased in and out within maximumDeviation (eased_path.h)
 };
 
 // mm: how far a chord of the new G1 moves may stray from the fitted spline unless the user
@@ -52,6 +55,11 @@ struct OptimizeOptions {
   // mm/s^2: changes of feed between intervals spread into ramps at this acceleration
   // (feed_ramps.h); 0: one step at the interval's end.
   double rampAcceleration = 0;
+  // XY, mm: where the region's figures are taken. Outside, ramps run at half the machine's
+  // acceleration (its slowest axis) instead, if that is faster (feed_ramps.h): gentle ramps are
+  // what evens the speed where it is judged, and cost time everywhere; a quick one still spares
+  // the servo the NC's full braking into a bend. None: rampAcceleration everywhere.
+  std::optional<std::pair<Vec3, Vec3>> rampBox;
   CrossPassRule crossPass = CrossPassRule::None;
   PathShape shape = PathShape::Fitted;  // how each pass's path is drawn anew
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
