@@ -251,13 +251,22 @@ TEST(regionOptimizer, DISABLED_NoRegionModeWritesAWorseLongRealProgram) {
 // are: the speed is then even and the same from one pass to the next (fluctuation and
 // inconsistency at most half of before), and every figure of the region is better; under
 // quality, whichever such candidate improves the region most, up to 5 % slower.
+// `optimize --auto` on the CAM-style program under `objective`: its report, the program kept.
+nlohmann::json camStyleOptimised(const std::string& objective, std::string& cam, std::string& out) {
+  cam = writeScratch("cam-" + objective + ".nc", isurface::testing::camStyleTransitionProgram());
+  out = (scratchDir() / ("cam-" + objective + "-out.nc")).string();
+  const std::string report = (scratchDir() / ("cam-" + objective + ".json")).string();
+  EXPECT_EQ(runCli("optimize " + cam + " --auto --objective " + objective + " -o " + out + " --report " + report).exitCode, 0);
+  nlohmann::json cmp = nlohmann::json::parse(readFile(report));
+  EXPECT_EQ(cmp["objective"], objective);
+  EXPECT_TRUE(cmp["kept"].get<bool>()) << cmp["reason"];
+  return cmp;
+}
+
 TEST(regionOptimizer, ObjectivesChooseAmongTheCandidatesNoneWorse) {
-  const std::string cam = writeScratch("cam-objectives.nc", isurface::testing::camStyleTransitionProgram());
-  const std::string out = (scratchDir() / "cam-out.nc").string(), report = (scratchDir() / "cam-report.json").string();
-  ASSERT_EQ(runCli("optimize " + cam + " --auto --objective quality -o " + out + " --report " + report).exitCode, 0);
-  const nlohmann::json cmp = nlohmann::json::parse(readFile(report));
-  EXPECT_EQ(cmp["objective"], "quality");
-  ASSERT_TRUE(cmp["kept"].get<bool>()) << cmp["reason"];
+  std::string cam, out;
+  const nlohmann::json cmp = camStyleOptimised("quality", cam, out);
+  ASSERT_TRUE(cmp["kept"].get<bool>());
   EXPECT_NE(cmp["plan"].get<std::string>().find("bends within the servo's deviation"), std::string::npos) << cmp["plan"];
   EXPECT_NE(cmp["plan"].get<std::string>().find("ramps of"), std::string::npos) << cmp["plan"];
   const nlohmann::json &before = cmp["region"]["before"], &after = cmp["region"]["after"];
@@ -282,20 +291,18 @@ TEST(regionOptimizer, ObjectivesChooseAmongTheCandidatesNoneWorse) {
 // the program is not slower; no figure, in the region or over the whole program, is worse by
 // more than 2 %, and the path moves by less than 0.01 mm.
 TEST(regionOptimizer, ACamStyleProgramRunsHalfAsUnevenlyInNoMoreTime) {
-  const std::string cam = writeScratch("cam-balanced.nc", isurface::testing::camStyleTransitionProgram());
-  const std::string out = (scratchDir() / "cam-balanced-out.nc").string(), report = (scratchDir() / "cam-balanced.json").string();
-  ASSERT_EQ(runCli("optimize " + cam + " --auto -o " + out + " --report " + report).exitCode, 0);
-  const nlohmann::json cmp = nlohmann::json::parse(readFile(report));
-  EXPECT_EQ(cmp["objective"], "balanced");
-  ASSERT_TRUE(cmp["kept"].get<bool>()) << cmp["reason"];
+  std::string cam, out;
+  const nlohmann::json cmp = camStyleOptimised("balanced", cam, out);
+  ASSERT_TRUE(cmp["kept"].get<bool>());
   EXPECT_NE(cmp["plan"].get<std::string>().find("bends eased in and out"), std::string::npos) << cmp["plan"];
   const nlohmann::json &before = cmp["region"]["before"], &after = cmp["region"]["after"];
   for (const char* figure : {"speed_fluctuation_mm_min", "speed_inconsistency_p99_mm_min"})
     EXPECT_LE(after[figure].get<double>(), 0.5 * before[figure].get<double>()) << figure;
   for (const char* part : {"region", "whole_program"})
-    for (const auto& [figure, value] : cmp[part]["before"].items())
-      if (figure != "samples")
-        EXPECT_LE(cmp[part]["after"][figure].get<double>(), 1.02 * value.get<double>()) << part << " " << figure;
+    for (const auto& [figure, value] : cmp[part]["before"].items()) {
+      if (figure == "samples") continue;
+      EXPECT_LE(cmp[part]["after"][figure].get<double>(), 1.02 * value.get<double>()) << part << " " << figure;
+    }
   EXPECT_LE(cmp["machining_time_s"]["after"].get<double>(), cmp["machining_time_s"]["before"].get<double>());
   EXPECT_LT(cmp["max_path_distance_mm"].get<double>(), 0.01);
 }
