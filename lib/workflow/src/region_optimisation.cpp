@@ -29,7 +29,7 @@ constexpr int kDeviationRounds = 3;
 constexpr double kServoBoundShare = 0.95;
 
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
-// faster one costs less time, the gentler one changes the speed more evenly.
+// faster ones cost less time, the gentler ones change the speed more evenly.
 constexpr double kRampAccelerations[] = {250.0, 200.0, 100.0};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
@@ -350,7 +350,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 21;
+  static constexpr std::size_t kExpectedCandidates = 28;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -391,14 +391,20 @@ void judgeShapeCandidates(ClosedLoop& loop, PathShape shape) {
 // `limit` (mm/s^2), with ramps of `ramp`. The servo deviates in proportion to the normal
 // acceleration, and eased bends, which it enters without a step, leave it below what the
 // program deviated: where that run was slower, the bound is raised once by the room left.
-void judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
+// Returns whether the program was slower for the objective either way (gentler ramps would only
+// take longer still).
+bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
   const RegionOptimisation* eased = loop.judge({CrossPassRule::None, 1.0, false, {}, limit, ramp, PathShape::Eased, true});
-  if (!eased || !slower(*eased) || !eased->regionAfter.hasDeviation) return;
+  if (!eased || !slower(*eased)) return false;
   auto room = [](const QualityFigures& before, const QualityFigures& after) {
     return after.deviationP99 > 0 ? before.deviationP99 / after.deviationP99 : 1.0;
   };
-  const double raise = std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter));
-  if (raise > 1 + kGainRequired) loop.judge({CrossPassRule::None, 1.0, false, {}, limit * raise, ramp, PathShape::Eased, true});
+  const double raise = eased->regionAfter.hasDeviation
+                           ? std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter))
+                           : 1.0;
+  if (!(raise > 1 + kGainRequired)) return true;
+  const RegionOptimisation* raised = loop.judge({CrossPassRule::None, 1.0, false, {}, limit * raise, ramp, PathShape::Eased, true});
+  return raised && slower(*raised);
 }
 
 }  // namespace
@@ -410,7 +416,8 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // simulation finds it worse, the feeds planned across passes (the median of the passes
   // around, then their slowest). Then every bend planned to the normal acceleration at which
   // the machine's servo deviates as much as the program's own run did, with ramps into and out
-  // of the bends (feed_ramps.h), a faster and a gentler one. Then, where the servo deviated
+  // of the bends (feed_ramps.h), from the fastest to the gentlest; the same with the bends eased
+  // in and out of their straights (eased_path.h) and the program's feed. Then, where the servo deviated
   // more than before (the smooth new path is run faster through bends where the old one braked
   // at every point), characteristic points at a finer scale, so that a bend between long moves is an interval
   // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
@@ -430,10 +437,16 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   }
   const double limit = deviationTarget ? kServoBoundShare * *deviationTarget / servoDeviationPerNormalAcceleration(machine) : 0.0;
   // A run that deviated by nothing (feedback equal to the command) gives no bound to plan to.
-  if (std::isfinite(limit) && limit > 0)
-    for (const double ramp : kRampAccelerations) loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
-  if (std::isfinite(limit) && limit > 0)
-    for (const double ramp : kRampAccelerations) judgeEasedBends(loop, limit, ramp);
+  // From the fastest ramps to the gentlest, until a run is slower than the objective allows:
+  // gentler ramps would only take longer still.
+  if (std::isfinite(limit) && limit > 0) {
+    for (const double ramp : kRampAccelerations) {
+      const RegionOptimisation* bends = loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
+      if (bends && slower(*bends)) break;
+    }
+    for (const double ramp : kRampAccelerations)
+      if (judgeEasedBends(loop, limit, ramp)) break;
+  }
   const RegionOptimisation* fine = loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {
     const double target = std::min(fine->regionBefore.deviationP99, fine->wholeBefore.deviationP99);
