@@ -177,6 +177,9 @@ TEST(feedRamps, OutsideTheBoxAskedForRampsRunFaster) {
   EXPECT_LT(feedAt(m, 26.0), 2500);
   EXPECT_GT(feedAt(m, 26.0), feedAt(m, 23.0));
   EXPECT_EQ(feedAt(m, 35.0), 2500);
+  // A move that crosses the box without an end in it reaches into it: the plane's, here.
+  options.within = std::make_pair(Vec3(5, -1, -1), Vec3(6, 1, 10));
+  EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);
   // Without a box, 100 mm/s^2 on both sides.
   options.within.reset();
   EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);
@@ -194,4 +197,7 @@ TEST(feedRamps, ALongMoveARampEndsOnKeepsItsFeed) {
   EXPECT_EQ(feedAt(m, 10.0), 2500);
   EXPECT_EQ(feedAt(m, 19.9), 2500);
   EXPECT_EQ(feedAt(m, 30.0), 2500);
+  // Nor does one whose feed lies between two steps of the ramp (25 mm/min on F2500).
+  pass.feeds = {2500, 1200, 2380};
+  EXPECT_EQ(feedAt(feedPerMove(pass, options), 35.0), 2380);
 }

@@ -314,7 +314,7 @@ class ClosedLoop {
     // Every candidate is measured in one box, so that their figures compare: the one asked
     // for, else the first candidate's (where the paper's steps re-fit the path).
     if (!candidate.box) candidate.box = judgedBox_;
-    // Ramps are laid where the figures are taken; elsewhere the NC's own changes of speed are quicker.
+    // Gentle ramps where the figures are taken; elsewhere quicker ones cost less time.
     candidate.options.rampBox = candidate.box;
     candidate.options.feedScale = request_.options.feedScale * c.share;
     candidate.options.crossPass = c.rule;
@@ -389,22 +389,25 @@ void judgeShapeCandidates(ClosedLoop& loop, PathShape shape) {
 
 // The bends eased in and out (eased_path.h), the program's feed kept but no bend run faster than
 // `limit` (mm/s^2), with ramps of `ramp`. The servo deviates in proportion to the normal
-// acceleration, and eased bends, which it enters without a step, leave it below what the
-// program deviated: where that run was slower, the bound is raised once by the room left.
-// Returns whether the program was slower for the objective either way (gentler ramps would only
-// take longer still).
+// acceleration, and eased bends, which it enters without a step, may leave it below what the
+// program deviated: the bound is then raised once by the room left (a faster program, figures
+// that may still hold). Returns whether the program was slower than the objective allows either
+// way: gentler ramps would take longer still.
 bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
-  const RegionOptimisation* eased = loop.judge({CrossPassRule::None, 1.0, false, {}, limit, ramp, PathShape::Eased, true});
-  if (!eased || !slower(*eased)) return false;
+  auto candidate = [&](double bound) { return Candidate{CrossPassRule::None, 1.0, false, {}, bound, ramp, PathShape::Eased, true}; };
+  const RegionOptimisation* eased = loop.judge(candidate(limit));
+  if (!eased) return false;
+  const bool easedSlower = slower(*eased);
   auto room = [](const QualityFigures& before, const QualityFigures& after) {
     return after.deviationP99 > 0 ? before.deviationP99 / after.deviationP99 : 1.0;
   };
   const double raise = eased->regionAfter.hasDeviation
                            ? std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter))
                            : 1.0;
-  if (!(raise > 1 + kGainRequired)) return true;
-  const RegionOptimisation* raised = loop.judge({CrossPassRule::None, 1.0, false, {}, limit * raise, ramp, PathShape::Eased, true});
-  return raised && slower(*raised);
+  if (!(raise > 1 + kGainRequired)) return easedSlower;
+  const RegionOptimisation* raised = loop.judge(candidate(limit * raise));
+  // A raised bound that binds nowhere writes the same program again: nothing more to learn.
+  return easedSlower && (!raised || slower(*raised));
 }
 
 }  // namespace

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "isurface/base/tolerances.h"
 #include "isurface/base/units.h"
@@ -65,23 +66,57 @@ std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::ve
 // Distances along one move (0..length, mm) where the ramp's speed crosses a whole multiple of
 // the step: rising from its start, falling towards its end.
 std::vector<double> rampBreaks(double length, double feed, double atStart, double atEnd, double a, double step) {
-  std::vector<double> breaks;
-  for (const auto& [from, mirrored] : {std::pair{atStart, false}, std::pair{atEnd, true}})
-    // Up to the move's feed itself: where the ramp reaches it, the rest of the move holds it.
-    for (double level = (std::floor(from / step) + 1) * step; level <= feed * (1 + 1e-9); level += step) {
-      const double s = (level * level - from * from) / (2 * a);
+  // Where the ramp reaches the move's feed a break must stay: the rest of the move holds the
+  // feed (dropped, the long piece beyond would run at the step below, and a feed between two
+  // steps always would).
+  struct Break {
+    double s;
+    bool reachesFeed;
+  };
+  std::vector<Break> breaks;
+  for (const auto& [from, mirrored] : {std::pair{atStart, false}, std::pair{atEnd, true}}) {
+    if (!(from < feed)) continue;
+    for (double level = (std::floor(from / step) + 1) * step;; level += step) {
+      const bool top = level >= feed * (1 - 1e-9);
+      const double reached = top ? feed : level;
+      const double s = (reached * reached - from * from) / (2 * a);
       if (s >= length) break;
-      breaks.push_back(mirrored ? length - s : s);
+      breaks.push_back({mirrored ? length - s : s, top});
+      if (top) break;
     }
+  }
   // A break nearer an end than the shortest piece moves away from it rather than being left
   // out: left out, the whole long move before it would run at the step below.
   if (length < 2 * kShortestRampPiece) return {};
-  for (double& s : breaks) s = std::clamp(s, kShortestRampPiece, length - kShortestRampPiece);
-  std::sort(breaks.begin(), breaks.end());
-  std::vector<double> kept;
-  for (const double s : breaks)
-    if (kept.empty() || s - kept.back() >= kShortestRampPiece) kept.push_back(s);
-  return kept;
+  for (Break& b : breaks) b.s = std::clamp(b.s, kShortestRampPiece, length - kShortestRampPiece);
+  std::sort(breaks.begin(), breaks.end(), [](const Break& x, const Break& y) { return x.s < y.s; });
+  std::vector<Break> kept;
+  for (const Break& b : breaks) {
+    if (kept.empty() || b.s - kept.back().s >= kShortestRampPiece) kept.push_back(b);
+    else if (b.reachesFeed && !kept.back().reachesFeed) kept.back() = b;
+  }
+  std::vector<double> at;
+  for (const Break& b : kept) at.push_back(b.s);
+  return at;
+}
+
+// Whether the segment from `a` to `b`, seen from above, meets the box (its XY; clipped to it
+// as Liang and Barsky do).
+bool reachesInto(const Vec3& a, const Vec3& b, const std::pair<Vec3, Vec3>& box) {
+  double enter = 0, leave = 1;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double d = b[axis] - a[axis], lower = box.first[axis], upper = box.second[axis];
+    if (std::fabs(d) < kLengthEpsilon) {
+      if (a[axis] < lower || a[axis] > upper) return false;
+      continue;
+    }
+    double t0 = (lower - a[axis]) / d, t1 = (upper - a[axis]) / d;
+    if (t0 > t1) std::swap(t0, t1);
+    enter = std::max(enter, t0);
+    leave = std::min(leave, t1);
+    if (enter > leave) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -100,16 +135,12 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
   // Ramps need a step to cut them at: none without a programmed feed.
   const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
   const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
-  // Per move, the ramp's acceleration: outside the box asked for, the faster of the two.
+  // Per move, the ramp's acceleration: on a move that does not reach into the box asked for, the
+  // faster of the two.
   std::vector<double> accel(feeds.size(), a);
   if (options.within)
-    for (std::size_t k = 0; k < accel.size(); ++k) {
-      const auto& [lower, upper] = *options.within;
-      auto inside = [&](const Vec3& p) {
-        return p.x() >= lower.x() && p.x() <= upper.x() && p.y() >= lower.y() && p.y() <= upper.y();
-      };
-      if (!inside(pass.points[k]) && !inside(pass.points[k + 1])) accel[k] = std::max(a, options.outsideAcceleration);
-    }
+    for (std::size_t k = 0; k < accel.size(); ++k)
+      if (!reachesInto(pass.points[k], pass.points[k + 1], *options.within)) accel[k] = std::max(a, options.outsideAcceleration);
   const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, accel) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
     const Vec3 &from = pass.points[k], &to = pass.points[k + 1];
@@ -119,8 +150,7 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
       continue;
     }
     const double length = (to - from).norm();
-    // The speeds the ramps running into the move hold at its ends (where none runs, the move's
-    // own feed: the NC steps there at its own limits).
+    // The speeds the ramps hold at the move's ends, and their acceleration on it.
     const double atStart = u[k], atEnd = u[k + 1], a = accel[k];
     // The ramp's speed at a distance s into the move; the lowest over a piece is at one of its ends.
     auto envelope = [&](double s) {

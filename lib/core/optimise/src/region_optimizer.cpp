@@ -34,6 +34,9 @@ constexpr double kRoundedPieceTurn = 0.1;
 
 // Of the machine's acceleration (its slowest axis), the ramps' outside the region's box.
 constexpr double kOutsideRampShare = 0.5;
+// Of the curvature at which the normal-acceleration bound holds the program's feed: where an
+// eased bend is written in short pieces.
+constexpr double kRampedBendShare = 0.25;
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
@@ -314,7 +317,13 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
     moveOf = std::move(rounded.oldSegment);
   }
   if (options.shape == PathShape::Eased) {
-    EasedPath eased = easedPath(fittedPath(points, options), points, options.maximumDeviation, options.chordTolerance, options.maxTurn);
+    EasingLimits limits{options.maximumDeviation, options.chordTolerance, options.maxTurn, INFINITY};
+    const double feed = mmPerMinToMmPerS(program.moves[run.front()].feed);  // mm/s
+    // The bound holds the feed below the program's where the curvature passes limit / F^2; the
+    // ramps into such a bend run where it is a few times gentler.
+    if (options.normalAccelerationLimit > 0 && feed > 0)
+      limits.bendCurvature = kRampedBendShare * options.normalAccelerationLimit / (feed * feed);
+    EasedPath eased = easedPath(fittedPath(points, options), points, limits);
     std::vector<std::size_t> moves;
     for (const std::size_t segment : eased.oldSegment) moves.push_back(moveOf[segment]);
     points = std::move(eased.points);
@@ -353,6 +362,14 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
                                          options.feedCap > 0 ? std::clamp(std::floor(options.feedCap), 1.0, feed) : feed)
                    : intervalFeeds(options, program, run, moveOf, plan.points, dataIndex, partition, feed, machine);
   return plan;
+}
+
+// How a pass's feeds are ramped: inside the region's box at the ramp's acceleration, outside at
+// half the machine's (its slowest axis), if that is faster. `feed`: the pass's, mm/min.
+RampOptions rampOptions(const OptimizeOptions& options, double feed, const Machine& machine) {
+  double slowestAxis = INFINITY;  // mm/s^2
+  for (const AxisLimits& axis : machine.axes) slowestAxis = std::min(slowestAxis, axis.maxAcceleration);
+  return {feed, options.normalAccelerationLimit, options.rampAcceleration, options.rampBox, kOutsideRampShare * slowestAxis};
 }
 
 }  // namespace
@@ -397,8 +414,6 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
                          : options.shape == PathShape::Eased
                              ? fmt::format("Akima spline in arc length, bends eased in and out within {:g} mm", options.maximumDeviation)
                              : std::string("Akima spline in arc length");
-  double slowestAxisAcceleration = INFINITY;  // mm/s^2
-  for (const AxisLimits& axis : machine.axes) slowestAxisAcceleration = std::min(slowestAxisAcceleration, axis.maxAcceleration);
   std::vector<PassFeeds> plans;
   for (const auto& run : runs) plans.push_back(planPass(program, run, machine, options, fittedBox));
   result.fittedLower = fittedBox.lower;
@@ -409,8 +424,7 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
     const double feed = first.feed;
-    const FeedPerMove moves = feedPerMove(plans[r], {feed, options.normalAccelerationLimit, options.rampAcceleration,
-                                                     options.rampBox, kOutsideRampShare * slowestAxisAcceleration});
+    const FeedPerMove moves = feedPerMove(plans[r], rampOptions(options, feed, machine));
     const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;
