@@ -146,8 +146,13 @@ FileKind fileKind(const std::string& path, std::size_t headBytes) {
   const std::vector<std::string> lines = firstLines(head, cut);
   if (looksLikeHalsampler(lines)) return FileKind::HalsamplerTrace;
   if (ext == ".csv" || looksLikeCsv(lines)) return FileKind::CsvTrace;
-  if (lines.empty() || std::any_of(lines.begin(), lines.end(), looksLikeGcode)) return FileKind::Program;
-  fail(path, "is not a G-code program: none of its first lines reads as G-code (a word such as G1, X10 or M3)");
+  // Most lines of a program read as G-code; a log or a note may have a few that do ("(done)",
+  // "% complete", "X1 Y2" quoted).
+  const auto gcodeLines = std::count_if(lines.begin(), lines.end(), looksLikeGcode);
+  if (lines.empty() || std::size_t(2 * gcodeLines) >= lines.size()) return FileKind::Program;
+  fail(path, fmt::format("is not a G-code program: {} of its first {} lines read as G-code (a word such as G1, X10 "
+                         "or M3), fewer than half",
+                         gcodeLines, lines.size()));
 }
 
 const char* fileKindName(FileKind kind) {
