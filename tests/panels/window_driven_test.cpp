@@ -307,3 +307,46 @@ TEST(drivenWindow, AReportIsExportedAndAnotherCancelled) {
   w.key("ctrl+q");
   EXPECT_EQ(w.exitCode(20), 0) << log();
 }
+
+// File > Open: a double click on a folder enters it and opens nothing, even where the new
+// listing puts a program under the pointer; a double click on a program opens it.
+TEST(drivenWindow, ADoubleClickOnAFolderOpensNothingInIt) {
+  if (!installed("Xvfb") || !installed("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+#ifdef ISURFACE_SANITIZED
+  GTEST_SKIP() << "the driven session needs the uninstrumented window's frame rate";
+#endif
+  const std::filesystem::path home = scratchDir() / "driven-open";
+  std::filesystem::remove_all(home);
+  std::filesystem::create_directories(home / "parts");
+  std::filesystem::copy_file(sourcePath("samples/transition-surface.nc"), home / "parts" / "a-part.nc");
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  DrivenWindow w(home, {program});
+  auto log = [&] { return readFile(w.logPath()) + "\nstate: " + w.state().dump().substr(0, 2000); };
+  ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1 && s["controls"].contains("surface"); },
+                        60))
+      << log();
+  w.key("o");
+  w.typeInto("open.path", home.string() + "/");
+  w.key("Return");
+  ASSERT_TRUE(w.waitFor([](const json& s) { return s["controls"].contains("open.entry:parts/"); }, 10)) << log();
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  const auto folder = w.state()["controls"]["open.entry:parts/"].get<std::array<double, 4>>();
+  w.xdotool("mousemove --sync " + std::to_string(int((folder[0] + folder[2]) / 2)) + " " +
+            std::to_string(int((folder[1] + folder[3]) / 2)) + " click --repeat 2 --delay 200 1");
+  // Anything opened by mistake would be read and shown by the time the window is idle again.
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  ASSERT_TRUE(w.waitFor(idle, 60)) << log();
+  std::this_thread::sleep_for(std::chrono::seconds(1));
+  EXPECT_EQ(w.state()["documents"].size(), 1u) << log();
+  // The folder was entered (its program at most chosen by the second click).
+  EXPECT_EQ(w.state()["open_path"].get<std::string>().rfind((home / "parts").string() + "/", 0), 0u) << w.state()["open_path"];
+  // The program listed there opens with a double click of its own.
+  const std::string entry = "open.entry:a-part.nc";
+  ASSERT_TRUE(w.waitFor([&](const json& s) { return s["controls"].contains(entry); }, 10)) << log();
+  const auto part = w.state()["controls"][entry].get<std::array<double, 4>>();
+  w.xdotool("mousemove --sync " + std::to_string(int((part[0] + part[2]) / 2)) + " " +
+            std::to_string(int((part[1] + part[3]) / 2)) + " click --repeat 2 --delay 60 1");
+  EXPECT_TRUE(w.waitFor([](const json& s) { return s["documents"].size() == 2; }, 60)) << log();
+  w.key("ctrl+q");
+  EXPECT_EQ(w.exitCode(20), 0) << log();
+}

@@ -122,6 +122,7 @@ std::string Inspector::describe() const {
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
                               {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
+                              {"open_path", s.openPath},  // the Open dialog's path, typed or chosen
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
                               {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}}
                                                       : nlohmann::json()},

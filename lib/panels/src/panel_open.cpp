@@ -53,9 +53,12 @@ void drawEntries(Inspector::State& s) {
     const bool chosen = !e.folder && full.string() == s.openPath;
     if (ImGui::Selectable(label.c_str(), chosen, ImGuiSelectableFlags_AllowDoubleClick | ImGuiSelectableFlags_DontClosePopups)) {
       if (e.folder) enter = full;
-      else if (ImGui::IsMouseDoubleClicked(0)) open = full.string();
+      // A double click opens the file its first click chose: the second click of a double
+      // click that entered a folder lands on whatever file the new listing puts there.
+      else if (ImGui::IsMouseDoubleClicked(0) && chosen) open = full.string();
       else std::snprintf(s.openPath, sizeof s.openPath, "%s", full.string().c_str());
     }
+    noteControl(s, "open.entry:" + label);
     if (!e.folder) {
       ImGui::SameLine(ImGui::GetFontSize() * 30);
       ImGui::TextDisabled("%s", kindLabel(e.kind));
