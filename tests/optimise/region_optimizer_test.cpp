@@ -12,6 +12,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/optimise/region_optimizer.h"
+#include "cam_style_transition.h"
 #include "test_support.h"
 
 using namespace isurface;
@@ -248,4 +249,54 @@ TEST(regionOptimizer, RoundedCornersNameTheLineTheyStandFor) {
       }
     }
   }
+}
+
+namespace {
+
+// The feed (mm/min) the new program runs at over x (mm) on the pass at y.
+double newFeedAt(const Program& program, double y, double x) {
+  for (std::size_t i = 0; i < program.moves.size(); ++i) {
+    const Vec3 from = program.startOf(i), to = program.moves[i].end;
+    if (std::fabs(from.y() - y) > 1e-6 || std::fabs(to.y() - y) > 1e-6) continue;
+    if (x >= std::min(from.x(), to.x()) && x <= std::max(from.x(), to.x())) return program.moves[i].feed;
+  }
+  return NAN;
+}
+
+}  // namespace
+
+// Two passes of a zig-zag over the same profile (plane, fillet by a 5 um chord tolerance, slope),
+// one each way: eased, they slow down and speed up at the same places, so that neither runs its
+// bend's ramps ahead of the other's.
+TEST(regionOptimizer, EasedPassesCutEachWaySlowAtTheSamePlaces) {
+  isurface::testing::CamStyleTransition part;
+  part.chordTolerance = 0.02;  // mm: three chords in the fillet
+  const auto profile = isurface::testing::camProfile(part, 0.0);
+  std::string text = "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z0 F500\n";
+  const std::uint32_t first = 5;
+  for (std::size_t k = 1; k < profile.size(); ++k)
+    text += fmt::format("G1 X{:.4f} Z{:.4f}{}\n", profile[k].first, profile[k].second, k == 1 ? " F2500" : "");
+  text += fmt::format("G1 Y0.5\n");
+  for (std::size_t k = profile.size() - 1; k-- > 0;) text += fmt::format("G1 X{:.4f} Z{:.4f}\n", profile[k].first, profile[k].second);
+  const std::uint32_t last = first + 2 * std::uint32_t(profile.size() - 1);
+  text += "G0 Z5\nM30\n";
+  const InterpretResult original = interpretGcode(text, "zigzag.nc");
+  ASSERT_TRUE(original.ok()) << original.errors.front().str();
+  OptimizeOptions options;
+  options.shape = PathShape::Eased;
+  options.programmedFeed = true;
+  options.normalAccelerationLimit = 60;  // mm/s^2: sqrt(60 * 5) = 1039 mm/min in the fillet
+  options.rampAcceleration = 250;
+  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{first, last}, defaultMachine(), options);
+  ASSERT_EQ(r.passes.size(), 2u) << r.text;
+  const InterpretResult reread = interpretGcode(r.text, "zigzag-new.nc");
+  ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+  double slowest = INFINITY;
+  for (double x = 15; x < 30; x += 0.01) {
+    const double there = newFeedAt(reread.program, 0.0, x), back = newFeedAt(reread.program, 0.5, x);
+    slowest = std::min(slowest, there);
+    // A step of the ramps (25 mm/min) at most, where x falls on a piece's end.
+    EXPECT_NEAR(there, back, 25.0 + 1e-9) << "x " << x;
+  }
+  EXPECT_LT(slowest, 1100);  // the bend is slowed
 }

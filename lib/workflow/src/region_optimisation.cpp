@@ -30,7 +30,7 @@ constexpr double kServoBoundShare = 0.95;
 
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster ones cost less time, the gentler ones change the speed more evenly.
-constexpr double kRampAccelerations[] = {250.0, 200.0, 100.0};
+constexpr double kRampAccelerations[] = {750.0, 500.0, 350.0, 250.0, 200.0, 100.0};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -401,13 +401,13 @@ bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
   auto room = [](const QualityFigures& before, const QualityFigures& after) {
     return after.deviationP99 > 0 ? before.deviationP99 / after.deviationP99 : 1.0;
   };
-  const double raise = eased->regionAfter.hasDeviation
+  const double scale = eased->regionAfter.hasDeviation
                            ? std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter))
                            : 1.0;
-  if (!(raise > 1 + kGainRequired)) return easedSlower;
-  const RegionOptimisation* raised = loop.judge(candidate(limit * raise));
+  if (!(std::fabs(scale - 1) > kGainRequired)) return easedSlower;
+  const RegionOptimisation* rescaled = loop.judge(candidate(limit * scale));
   // A raised bound that binds nowhere writes the same program again: nothing more to learn.
-  return easedSlower && (!raised || slower(*raised));
+  return easedSlower && (!rescaled || slower(*rescaled));
 }
 
 }  // namespace

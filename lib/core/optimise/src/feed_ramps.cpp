@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <utility>
 
 #include "isurface/base/tolerances.h"
@@ -16,13 +17,13 @@ constexpr double kShortestBendMove = 1e-3;   // mm: a turn beside a shorter move
 constexpr double kFeedStepShare = 0.01;      // of the programmed feed, from a ramp's move to the next
 constexpr double kLowestFeedShare = 0.2;     // of the programmed feed, no bend runs slower
 
-// The feed each move may run at before ramping: its interval's (mm/s).
+// The feed each move may run at before ramping: its interval's (mm/min).
 std::vector<double> intervalFeedPerMove(const PassFeeds& pass, double programmedFeed) {
   std::vector<double> feeds;
   std::size_t interval = 0;
   for (std::size_t k = 1; k < pass.points.size(); ++k) {
     while (interval + 1 < pass.intervalEnd.size() && k > pass.intervalEnd[interval]) ++interval;
-    feeds.push_back(mmPerMinToMmPerS(pass.feeds.empty() ? programmedFeed : pass.feeds[std::min(interval, pass.feeds.size() - 1)]));
+    feeds.push_back(pass.feeds.empty() ? programmedFeed : pass.feeds[std::min(interval, pass.feeds.size() - 1)]);
   }
   return feeds;
 }
@@ -41,21 +42,27 @@ std::vector<double> curvatureAtPoints(const std::vector<Vec3>& points) {
   return curvature;
 }
 
-void limitNormalAcceleration(const std::vector<Vec3>& points, double limit, double lowest, std::vector<double>& feeds) {
+// Per point, the speed the bound allows there (mm/s; infinite on a straight). A move is held to
+// the faster of its ends: the ramp from the slower end (speedAtPoints) covers the rest, so that
+// a bend easing out over a long chord lets the speed rise from where it begins, not its end.
+std::vector<double> limitNormalAcceleration(const std::vector<Vec3>& points, double limit, double lowest, std::vector<double>& feeds) {
   const std::vector<double> curvature = curvatureAtPoints(points);
-  for (std::size_t k = 0; k < feeds.size(); ++k) {
-    const double largest = std::max(curvature[k], curvature[k + 1]);
-    if (largest > kZeroCurvature) feeds[k] = std::min(feeds[k], std::max(lowest, std::sqrt(limit / largest)));
-  }
+  std::vector<double> atPoint(points.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < points.size(); ++k)
+    if (curvature[k] > kZeroCurvature) atPoint[k] = std::max(lowest, std::sqrt(limit / curvature[k]));
+  for (std::size_t k = 0; k < feeds.size(); ++k) feeds[k] = std::min(feeds[k], std::max(atPoint[k], atPoint[k + 1]));
+  return atPoint;
 }
 
 // The ramp's speed at every point (mm/s): no more than the feeds of the moves it joins, and
 // reachable from its neighbours at each move's ramp acceleration `a` (mm/s^2), both ways along
 // the pass.
-std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::vector<double>& feeds, const std::vector<double>& a) {
+std::vector<double> speedAtPoints(const std::vector<Vec3>& points, const std::vector<double>& feeds, const std::vector<double>& a,
+                                  const std::vector<double>& atPoint) {
   const std::size_t n = points.size();
   std::vector<double> u(n);
   for (std::size_t k = 0; k < n; ++k) u[k] = std::min(feeds[k > 0 ? k - 1 : 0], feeds[std::min(k, feeds.size() - 1)]);
+  for (std::size_t k = 0; k < n && k < atPoint.size(); ++k) u[k] = std::min(u[k], atPoint[k]);
   for (std::size_t k = 0; k + 1 < n; ++k)
     u[k + 1] = std::min(u[k + 1], std::sqrt(u[k] * u[k] + 2 * a[k] * (points[k + 1] - points[k]).norm()));
   for (std::size_t k = n - 1; k > 0; --k)
@@ -125,13 +132,16 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
   FeedPerMove out;
   if (pass.points.empty()) return out;
   const double programmed = std::isfinite(options.programmedFeed) && options.programmedFeed > 0 ? options.programmedFeed : 0.0;
-  std::vector<double> feeds = intervalFeedPerMove(pass, programmed);
+  const std::vector<double> intervalFeeds = intervalFeedPerMove(pass, programmed);  // mm/min
+  std::vector<double> feeds;  // mm/s, each move's before ramping
+  for (const double f : intervalFeeds) feeds.push_back(mmPerMinToMmPerS(f));
   out.points = {pass.points.front()};
   out.sourceLines = {0};
   if (feeds.empty()) return out;
   const bool limited = programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0;
+  std::vector<double> atPoint;
   if (limited)
-    limitNormalAcceleration(pass.points, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed), feeds);
+    atPoint = limitNormalAcceleration(pass.points, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed), feeds);
   // Ramps need a step to cut them at: none without a programmed feed.
   const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
   const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
@@ -141,12 +151,12 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
   if (options.within)
     for (std::size_t k = 0; k < accel.size(); ++k)
       if (!reachesInto(pass.points[k], pass.points[k + 1], *options.within)) accel[k] = std::max(a, options.outsideAcceleration);
-  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, accel) : std::vector<double>{};
+  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, accel, atPoint) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
     const Vec3 &from = pass.points[k], &to = pass.points[k + 1];
     const std::uint32_t line = k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0;
     if (!(a > 0)) {
-      out.points.push_back(to), out.sourceLines.push_back(line), out.feeds.push_back(mmPerSToMmPerMin(feeds[k]));
+      out.points.push_back(to), out.sourceLines.push_back(line), out.feeds.push_back(std::min(intervalFeeds[k], mmPerSToMmPerMin(feeds[k])));
       continue;
     }
     const double length = (to - from).norm();
@@ -156,7 +166,14 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
     auto envelope = [&](double s) {
       return std::min({feeds[k], std::sqrt(atStart * atStart + 2 * a * s), std::sqrt(atEnd * atEnd + 2 * a * (length - s))});
     };
-    std::vector<double> cuts = rampBreaks(length, feeds[k], atStart, atEnd, a, step);
+    // Cut from the same end whichever way the pass runs: a move run back the other way (the
+    // next pass of a zig-zag) then ramps through the same pieces at the same feeds.
+    const bool backwards = std::lexicographical_compare(to.data(), to.data() + 3, from.data(), from.data() + 3);
+    std::vector<double> cuts = rampBreaks(length, feeds[k], backwards ? atEnd : atStart, backwards ? atStart : atEnd, a, step);
+    if (backwards) {
+      for (double& cut : cuts) cut = length - cut;
+      std::reverse(cuts.begin(), cuts.end());
+    }
     cuts.push_back(length);
     double s0 = 0;
     for (const double s1 : cuts) {
@@ -165,7 +182,8 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
       const double feed = lowest < feeds[k] * (1 - 1e-9) ? std::max(step, std::floor(lowest / step + 1e-9) * step) : feeds[k];
       out.points.push_back(s1 < length ? from + (to - from) * (s1 / length) : to);
       out.sourceLines.push_back(line);
-      out.feeds.push_back(mmPerSToMmPerMin(std::min(feed, feeds[k])));
+      // Back in mm/min no faster than the interval's feed, not even by the rounding of the units.
+      out.feeds.push_back(std::min(intervalFeeds[k], mmPerSToMmPerMin(std::min(feed, feeds[k]))));
       s0 = s1;
     }
   }

@@ -323,7 +323,17 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
     // ramps into such a bend run where it is a few times gentler.
     if (options.normalAccelerationLimit > 0 && feed > 0)
       limits.bendCurvature = kRampedBendShare * options.normalAccelerationLimit / (feed * feed);
+    // Eased the same way whichever way the pass runs, then turned back: the fit of a pass and
+    // its neighbour cut the other way (a zig-zag) would otherwise put their bends a little apart.
+    const bool backwards = std::lexicographical_compare(points.back().data(), points.back().data() + 3,
+                                                        points.front().data(), points.front().data() + 3);
+    if (backwards) std::reverse(points.begin(), points.end());
     EasedPath eased = easedPath(fittedPath(points, options), points, limits);
+    if (backwards) {
+      std::reverse(eased.points.begin(), eased.points.end());
+      std::reverse(eased.oldSegment.begin(), eased.oldSegment.end());
+      for (std::size_t& segment : eased.oldSegment) segment = points.size() - 2 - segment;
+    }
     std::vector<std::size_t> moves;
     for (const std::size_t segment : eased.oldSegment) moves.push_back(moveOf[segment]);
     points = std::move(eased.points);
