@@ -300,3 +300,42 @@ TEST(regionOptimizer, EasedPassesCutEachWaySlowAtTheSamePlaces) {
   }
   EXPECT_LT(slowest, 1100);  // the bend is slowed
 }
+
+// Two neighbouring passes over the same fillet, one written in two chords and one in three (a
+// CAM system's chord tolerance met by fewer chords as the radius grows): eased, the corners of
+// the two-chord pass stay sharper and would run slower; the other pass is held to its speed.
+TEST(regionOptimizer, EasedNeighboursWrittenInDifferentChordsRunTheirBendAlike) {
+  isurface::testing::CamStyleTransition coarse, fine;
+  coarse.chordTolerance = 0.03;  // mm: two chords in the fillet
+  fine.chordTolerance = 0.015;   // three
+  const auto there = isurface::testing::camProfile(coarse, 0.0), back = isurface::testing::camProfile(fine, 0.0);
+  ASSERT_EQ(there.size() + 1, back.size());
+  std::string text = "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z0 F500\n";
+  for (std::size_t k = 1; k < there.size(); ++k)
+    text += fmt::format("G1 X{:.4f} Z{:.4f}{}\n", there[k].first, there[k].second, k == 1 ? " F2500" : "");
+  text += "G1 Y0.5\n";
+  for (std::size_t k = back.size() - 1; k-- > 0;) text += fmt::format("G1 X{:.4f} Z{:.4f}\n", back[k].first, back[k].second);
+  const std::uint32_t last = 4 + std::uint32_t(there.size() - 1 + 1 + back.size() - 1);
+  text += "G0 Z5\nM30\n";
+  const InterpretResult original = interpretGcode(text, "chords.nc");
+  ASSERT_TRUE(original.ok()) << original.errors.front().str();
+  OptimizeOptions options;
+  options.shape = PathShape::Eased;
+  options.programmedFeed = true;
+  options.normalAccelerationLimit = 60;  // mm/s^2
+  options.rampAcceleration = 250;
+  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{5, last}, defaultMachine(), options);
+  ASSERT_EQ(r.passes.size(), 2u) << r.text;
+  const InterpretResult reread = interpretGcode(r.text, "chords-new.nc");
+  ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+  double worst = 0, slowest = INFINITY;
+  for (double x = 15; x < 30; x += 0.01) {
+    const double a = newFeedAt(reread.program, 0.0, x), b = newFeedAt(reread.program, 0.5, x);
+    worst = std::max(worst, std::fabs(a - b));
+    slowest = std::min({slowest, a, b});
+  }
+  // 1.5 % of F between the passes' points, a step of the ramps (1 % of F) where the neighbour's
+  // changes beside a point, and one where x falls on a piece's end (each on its own: 250).
+  EXPECT_LE(worst, 0.035 * 2500 + 1e-9);
+  EXPECT_LT(slowest, 1200);
+}

@@ -109,6 +109,9 @@ TEST(fileKinds, ProseIsNotAProgram) {
                            "%\nO1000\ng0 x 1\n", "; note\nX1 Y2\n", "$H\nG0 X0\n"})
     EXPECT_EQ(fileKind(written("styles.nc", text)), FileKind::Program) << text;
   EXPECT_EQ(fileKind(written("empty.nc", "")), FileKind::Program);
+  // An empty file of another name is nothing the tool can tell.
+  EXPECT_NE(kindError(written("empty.txt", "")).find("is empty"), std::string::npos);
+  EXPECT_NE(kindError(written("notes", "\n\n")).find("is empty"), std::string::npos);
   // A log with a few lines that read as G-code is still not a program.
   const std::string log = written("run.log", "Starting run 4\nreading part.nc\n(Failed) 2 tests\nsee output\n"
                                              "% complete: 100\ntotal 12.5 s\nexit code 1\n");

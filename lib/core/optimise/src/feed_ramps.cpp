@@ -42,15 +42,12 @@ std::vector<double> curvatureAtPoints(const std::vector<Vec3>& points) {
   return curvature;
 }
 
-// Per point, the speed the bound allows there (mm/s; infinite on a straight). A move is held to
-// the faster of its ends: the ramp from the slower end (speedAtPoints) covers the rest, so that
-// a bend easing out over a long chord lets the speed rise from where it begins, not its end.
-std::vector<double> limitNormalAcceleration(const std::vector<Vec3>& points, double limit, double lowest, std::vector<double>& feeds) {
-  const std::vector<double> curvature = curvatureAtPoints(points);
-  std::vector<double> atPoint(points.size(), std::numeric_limits<double>::infinity());
-  for (std::size_t k = 0; k < points.size(); ++k)
+// Per point, the speed the bound allows where the path bends by `curvature` (1/mm): mm/s,
+// infinite on a straight, never below `lowest`.
+std::vector<double> boundAtPoints(const std::vector<double>& curvature, double limit, double lowest) {
+  std::vector<double> atPoint(curvature.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t k = 0; k < curvature.size(); ++k)
     if (curvature[k] > kZeroCurvature) atPoint[k] = std::max(lowest, std::sqrt(limit / curvature[k]));
-  for (std::size_t k = 0; k < feeds.size(); ++k) feeds[k] = std::min(feeds[k], std::max(atPoint[k], atPoint[k + 1]));
   return atPoint;
 }
 
@@ -126,42 +123,64 @@ bool reachesInto(const Vec3& a, const Vec3& b, const std::pair<Vec3, Vec3>& box)
   return true;
 }
 
-}  // namespace
+// A pass as the ramps see it: per point its curvature (1/mm) and the speed it may not exceed
+// (mm/min, infinite: none), per move its interval's feed (mm/min), its ramps' acceleration
+// (mm/s^2) and the old line it stands for.
+struct RampPlan {
+  std::vector<Vec3> points;
+  std::vector<double> curvature, cap;
+  std::vector<double> intervalFeed, acceleration;
+  std::vector<std::uint32_t> line;
+};
 
-FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
-  FeedPerMove out;
-  if (pass.points.empty()) return out;
-  const double programmed = std::isfinite(options.programmedFeed) && options.programmedFeed > 0 ? options.programmedFeed : 0.0;
-  const std::vector<double> intervalFeeds = intervalFeedPerMove(pass, programmed);  // mm/min
-  std::vector<double> feeds;  // mm/s, each move's before ramping
-  for (const double f : intervalFeeds) feeds.push_back(mmPerMinToMmPerS(f));
-  out.points = {pass.points.front()};
-  out.sourceLines = {0};
-  if (feeds.empty()) return out;
-  const bool limited = programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0;
-  std::vector<double> atPoint;
-  if (limited)
-    atPoint = limitNormalAcceleration(pass.points, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed), feeds);
-  // Ramps need a step to cut them at: none without a programmed feed.
+RampPlan rampPlan(const PassFeeds& pass, const RampOptions& options, double programmed) {
+  RampPlan plan;
+  plan.points = pass.points;
+  plan.curvature = curvatureAtPoints(pass.points);
+  plan.cap.assign(pass.points.size(), std::numeric_limits<double>::infinity());
+  plan.intervalFeed = intervalFeedPerMove(pass, programmed);
   const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
+  // On a move that does not reach into the box asked for, the faster of the two accelerations.
+  for (std::size_t k = 0; k + 1 < pass.points.size(); ++k) {
+    const bool outside = options.within && !reachesInto(pass.points[k], pass.points[k + 1], *options.within);
+    plan.acceleration.push_back(outside ? std::max(a, options.outsideAcceleration) : a);
+    plan.line.push_back(k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0);
+  }
+  return plan;
+}
+
+FeedPerMove rampedFeeds(const RampPlan& plan, const RampOptions& options, double programmed) {
+  FeedPerMove out;
+  if (plan.points.empty()) return out;
+  out.points = {plan.points.front()};
+  out.sourceLines = {0};
+  out.passPointAt = {0};
+  std::vector<double> feeds;  // mm/s, each move's before ramping
+  for (const double f : plan.intervalFeed) feeds.push_back(mmPerMinToMmPerS(f));
+  if (feeds.empty()) return out;
+  std::vector<double> atPoint(plan.points.size(), std::numeric_limits<double>::infinity());
+  if (programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0) {
+    atPoint = boundAtPoints(plan.curvature, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed));
+    // A move is held to the faster of its ends: the ramp from the slower end covers the rest, so
+    // that a bend easing out over a long chord lets the speed rise from where it begins.
+    for (std::size_t k = 0; k < feeds.size(); ++k) feeds[k] = std::min(feeds[k], std::max(atPoint[k], atPoint[k + 1]));
+  }
+  for (std::size_t k = 0; k < atPoint.size(); ++k) atPoint[k] = std::min(atPoint[k], mmPerMinToMmPerS(plan.cap[k]));
+  // Ramps need a step to cut them at: none without a programmed feed.
+  const bool ramped = programmed > 0 && std::isfinite(options.rampAcceleration) && options.rampAcceleration > 0;
   const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
-  // Per move, the ramp's acceleration: on a move that does not reach into the box asked for, the
-  // faster of the two.
-  std::vector<double> accel(feeds.size(), a);
-  if (options.within)
-    for (std::size_t k = 0; k < accel.size(); ++k)
-      if (!reachesInto(pass.points[k], pass.points[k + 1], *options.within)) accel[k] = std::max(a, options.outsideAcceleration);
-  const std::vector<double> u = a > 0 ? speedAtPoints(pass.points, feeds, accel, atPoint) : std::vector<double>{};
+  const std::vector<double> u = ramped ? speedAtPoints(plan.points, feeds, plan.acceleration, atPoint) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
-    const Vec3 &from = pass.points[k], &to = pass.points[k + 1];
-    const std::uint32_t line = k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0;
-    if (!(a > 0)) {
-      out.points.push_back(to), out.sourceLines.push_back(line), out.feeds.push_back(std::min(intervalFeeds[k], mmPerSToMmPerMin(feeds[k])));
+    const Vec3 &from = plan.points[k], &to = plan.points[k + 1];
+    const double intervalFeed = plan.intervalFeed[k];
+    if (!ramped) {
+      out.points.push_back(to), out.sourceLines.push_back(plan.line[k]), out.feeds.push_back(std::min(intervalFeed, mmPerSToMmPerMin(feeds[k])));
+      out.passPointAt.push_back(out.points.size() - 1);
       continue;
     }
     const double length = (to - from).norm();
     // The speeds the ramps hold at the move's ends, and their acceleration on it.
-    const double atStart = u[k], atEnd = u[k + 1], a = accel[k];
+    const double atStart = u[k], atEnd = u[k + 1], a = plan.acceleration[k];
     // The ramp's speed at a distance s into the move; the lowest over a piece is at one of its ends.
     auto envelope = [&](double s) {
       return std::min({feeds[k], std::sqrt(atStart * atStart + 2 * a * s), std::sqrt(atEnd * atEnd + 2 * a * (length - s))});
@@ -181,12 +200,48 @@ FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
       // A piece of a ramp runs at the step below it; one that holds its move's feed keeps it.
       const double feed = lowest < feeds[k] * (1 - 1e-9) ? std::max(step, std::floor(lowest / step + 1e-9) * step) : feeds[k];
       out.points.push_back(s1 < length ? from + (to - from) * (s1 / length) : to);
-      out.sourceLines.push_back(line);
+      out.sourceLines.push_back(plan.line[k]);
       // Back in mm/min no faster than the interval's feed, not even by the rounding of the units.
-      out.feeds.push_back(std::min(intervalFeeds[k], mmPerSToMmPerMin(std::min(feed, feeds[k]))));
+      out.feeds.push_back(std::min(intervalFeed, mmPerSToMmPerMin(std::min(feed, feeds[k]))));
       s0 = s1;
     }
+    out.passPointAt.push_back(out.points.size() - 1);
   }
+  return out;
+}
+
+double programmedFeedOf(const RampOptions& options) {
+  return std::isfinite(options.programmedFeed) && options.programmedFeed > 0 ? options.programmedFeed : 0.0;
+}
+
+}  // namespace
+
+FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options) {
+  const double programmed = programmedFeedOf(options);
+  return rampedFeeds(rampPlan(pass, options, programmed), options, programmed);
+}
+
+FeedPerMove feedPerMoveHeldTo(const PassFeeds& pass, const FeedPerMove& ramped, const std::vector<double>& caps, const RampOptions& options) {
+  const double programmed = programmedFeedOf(options);
+  const RampPlan plan = rampPlan(pass, options, programmed);
+  if (ramped.passPointAt.size() != pass.points.size() || caps.size() != ramped.points.size()) return rampedFeeds(plan, options, programmed);
+  // Every point of the ramps a point of its own; those a ramp cut a move at lie on it, straight.
+  RampPlan held;
+  held.points = ramped.points;
+  held.cap = caps;
+  held.curvature.assign(ramped.points.size(), 0.0);
+  for (std::size_t j = 0; j < pass.points.size(); ++j) held.curvature[ramped.passPointAt[j]] = plan.curvature[j];
+  for (std::size_t j = 0; j + 1 < pass.points.size(); ++j)
+    for (std::size_t i = ramped.passPointAt[j]; i < ramped.passPointAt[j + 1]; ++i) {
+      held.intervalFeed.push_back(plan.intervalFeed[j]);
+      held.acceleration.push_back(plan.acceleration[j]);
+      held.line.push_back(plan.line[j]);
+    }
+  FeedPerMove out = rampedFeeds(held, options, programmed);
+  // Its points stand for the pass's where the pass's own points are.
+  std::vector<std::size_t> at;
+  for (const std::size_t i : ramped.passPointAt) at.push_back(out.passPointAt[i]);
+  out.passPointAt = std::move(at);
   return out;
 }
 

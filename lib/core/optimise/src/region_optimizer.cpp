@@ -22,6 +22,7 @@
 #include "isurface/optimise/eased_path.h"
 #include "isurface/optimise/feed_ramps.h"
 #include "isurface/optimise/rounded_corners.h"
+#include "isurface/optimise/speeds_across_passes.h"
 #include "isurface/optimise/taut_path.h"
 
 namespace isurface {
@@ -37,6 +38,8 @@ constexpr double kOutsideRampShare = 0.5;
 // Of the curvature at which the normal-acceleration bound holds the program's feed: where an
 // eased bend is written in short pieces.
 constexpr double kRampedBendShare = 0.25;
+// Of the program's feed, how much faster a point of a pass may run than the pass beside it.
+constexpr double kSpeedStepAcrossPasses = 0.015;
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
 // byte for byte.
@@ -379,7 +382,31 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
 RampOptions rampOptions(const OptimizeOptions& options, double feed, const Machine& machine) {
   double slowestAxis = INFINITY;  // mm/s^2
   for (const AxisLimits& axis : machine.axes) slowestAxis = std::min(slowestAxis, axis.maxAcceleration);
-  return {feed, options.normalAccelerationLimit, options.rampAcceleration, options.rampBox, kOutsideRampShare * slowestAxis};
+  RampOptions ramps;
+  ramps.programmedFeed = feed;
+  ramps.normalAccelerationLimit = options.normalAccelerationLimit;
+  ramps.rampAcceleration = options.rampAcceleration;
+  ramps.within = options.rampBox;
+  ramps.outsideAcceleration = kOutsideRampShare * slowestAxis;
+  return ramps;
+}
+
+// Each pass's feeds per move, its bends' ramps held where they would run faster than the
+// passes beside them (speeds_across_passes.h).
+std::vector<FeedPerMove> feedsAgreeingAcrossPasses(const std::vector<PassFeeds>& plans, const std::vector<std::vector<std::size_t>>& runs,
+                                                   const Program& program, const OptimizeOptions& options, const Machine& machine) {
+  std::vector<FeedPerMove> moves;
+  double slowestFeed = INFINITY;  // mm/min, programmed
+  for (std::size_t r = 0; r < runs.size(); ++r) {
+    const double feed = program.moves[runs[r].front()].feed;
+    moves.push_back(feedPerMove(plans[r], rampOptions(options, feed, machine)));
+    slowestFeed = std::min(slowestFeed, feed);
+  }
+  if (!(options.rampAcceleration > 0 && options.normalAccelerationLimit > 0 && slowestFeed > 0)) return moves;
+  const std::vector<std::vector<double>> caps = speedCapsAcrossPasses(moves, {kSpeedStepAcrossPasses * slowestFeed});
+  for (std::size_t r = 0; r < runs.size(); ++r)
+    moves[r] = feedPerMoveHeldTo(plans[r], moves[r], caps[r], rampOptions(options, program.moves[runs[r].front()].feed, machine));
+  return moves;
 }
 
 }  // namespace
@@ -429,12 +456,13 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
   result.fittedLower = fittedBox.lower;
   result.fittedUpper = fittedBox.upper;
   harmonizeFeedsAcrossPasses(plans, options.crossPass);
+  const std::vector<FeedPerMove> movesOfPasses = feedsAgreeingAcrossPasses(plans, runs, program, options, machine);
   for (std::size_t r = 0; r < runs.size(); ++r) {
     const auto& run = runs[r];
     const Move& first = program.moves[run.front()];
     const Move& last = program.moves[run.back()];
+    const FeedPerMove& moves = movesOfPasses[r];
     const double feed = first.feed;
-    const FeedPerMove moves = feedPerMove(plans[r], rampOptions(options, feed, machine));
     const std::vector<double>& feeds = plans[r].feeds;
     copyUntil(first.line - 1);
     OptimizedPass pass;

@@ -20,14 +20,15 @@ struct FeedPerMove {
   std::vector<Vec3> points;                 // the pass's points, long moves cut where a ramp crosses them
   std::vector<std::uint32_t> sourceLines;   // per point after the first, the old line it stands for
   std::vector<double> feeds;                // per move (point k to k + 1), mm/min
+  std::vector<std::size_t> passPointAt;     // per point of the pass (PassFeeds), its index in `points`
 };
 
 struct RampOptions {
   double programmedFeed = 0;    // mm/min, the pass's F: the feed of a pass with no intervals
-  // mm/s^2: no move runs faster than sqrt(limit / curvature), the curvature being the larger
-  // at its two ends (one over the radius of the circle through a point and its neighbours; a
-  // turn beside a move under a micrometre, rounding in the program's digits, is no bend); 0: no
-  // limit.
+  // mm/s^2: no point is passed faster than sqrt(limit / curvature) (one over the radius of the
+  // circle through it and its neighbours; a turn beside a move under a micrometre, rounding in
+  // the program's digits, is no bend): a move runs no faster than its gentler end allows, the
+  // ramp from its sharper end covering the rest; 0: no limit.
   // Taken at every point rather than per interval: where a bend is, and so how fast it may be
   // run, does not depend on which way a pass runs, as the interval boundaries do. No move is
   // slowed below a fifth of the programmed feed, as no interval is.
@@ -44,5 +45,11 @@ struct RampOptions {
 // multiples of that step, so that neighbouring passes whose ramps differ a little still share
 // their feeds.
 FeedPerMove feedPerMove(const PassFeeds& pass, const RampOptions& options);
+
+// The same pass again, `ramped` (its feedPerMove) held at each of its points to `caps` (mm/min,
+// one per point of `ramped`; speeds_across_passes.h): the ramps lead into every cap, the bends
+// keep the curvature they had, and a move keeps the ramps' acceleration it had.
+FeedPerMove feedPerMoveHeldTo(const PassFeeds& pass, const FeedPerMove& ramped, const std::vector<double>& caps,
+                              const RampOptions& options);
 
 }  // namespace isurface
