@@ -263,37 +263,44 @@ double newFeedAt(const Program& program, double y, double x) {
   return NAN;
 }
 
+// Two passes of a zig-zag, the first along +X at Y0 over `there` (x, z), the second back at
+// Y0.5 over `back`, at F2500; their bends eased (within 60 mm/s^2, ramps of 250 mm/s^2) and
+// the new program read again.
+Program easedZigzag(const std::vector<std::pair<double, double>>& there, const std::vector<std::pair<double, double>>& back) {
+  std::string text = "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z0 F500\n";
+  for (std::size_t k = 1; k < there.size(); ++k)
+    text += fmt::format("G1 X{:.4f} Z{:.4f}{}\n", there[k].first, there[k].second, k == 1 ? " F2500" : "");
+  text += "G1 Y0.5\n";
+  for (std::size_t k = back.size() - 1; k-- > 0;) text += fmt::format("G1 X{:.4f} Z{:.4f}\n", back[k].first, back[k].second);
+  const auto last = static_cast<std::uint32_t>(4 + there.size() - 1 + 1 + back.size() - 1);
+  text += "G0 Z5\nM30\n";
+  const InterpretResult original = interpretGcode(text, "zigzag.nc");
+  EXPECT_TRUE(original.ok()) << original.errors.front().str();
+  OptimizeOptions options;
+  options.shape = PathShape::Eased;
+  options.programmedFeed = true;
+  options.normalAccelerationLimit = 60;  // mm/s^2: sqrt(60 * 5) = 1039 mm/min in a fillet of 5 mm
+  options.rampAcceleration = 250;
+  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{5, last}, defaultMachine(), options);
+  EXPECT_EQ(r.passes.size(), 2u) << r.text;
+  const InterpretResult reread = interpretGcode(r.text, "zigzag-new.nc");
+  EXPECT_TRUE(reread.ok()) << reread.errors.front().str();
+  return reread.program;
+}
+
 }  // namespace
 
-// Two passes of a zig-zag over the same profile (plane, fillet by a 5 um chord tolerance, slope),
+// Two passes of a zig-zag over the same profile (plane, fillet by a chord tolerance, slope),
 // one each way: eased, they slow down and speed up at the same places, so that neither runs its
 // bend's ramps ahead of the other's.
 TEST(regionOptimizer, EasedPassesCutEachWaySlowAtTheSamePlaces) {
   isurface::testing::CamStyleTransition part;
   part.chordTolerance = 0.02;  // mm: three chords in the fillet
   const auto profile = isurface::testing::camProfile(part, 0.0);
-  std::string text = "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z0 F500\n";
-  const std::uint32_t first = 5;
-  for (std::size_t k = 1; k < profile.size(); ++k)
-    text += fmt::format("G1 X{:.4f} Z{:.4f}{}\n", profile[k].first, profile[k].second, k == 1 ? " F2500" : "");
-  text += fmt::format("G1 Y0.5\n");
-  for (std::size_t k = profile.size() - 1; k-- > 0;) text += fmt::format("G1 X{:.4f} Z{:.4f}\n", profile[k].first, profile[k].second);
-  const std::uint32_t last = first + 2 * std::uint32_t(profile.size() - 1);
-  text += "G0 Z5\nM30\n";
-  const InterpretResult original = interpretGcode(text, "zigzag.nc");
-  ASSERT_TRUE(original.ok()) << original.errors.front().str();
-  OptimizeOptions options;
-  options.shape = PathShape::Eased;
-  options.programmedFeed = true;
-  options.normalAccelerationLimit = 60;  // mm/s^2: sqrt(60 * 5) = 1039 mm/min in the fillet
-  options.rampAcceleration = 250;
-  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{first, last}, defaultMachine(), options);
-  ASSERT_EQ(r.passes.size(), 2u) << r.text;
-  const InterpretResult reread = interpretGcode(r.text, "zigzag-new.nc");
-  ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+  const Program eased = easedZigzag(profile, profile);
   double slowest = INFINITY;
   for (double x = 15; x < 30; x += 0.01) {
-    const double there = newFeedAt(reread.program, 0.0, x), back = newFeedAt(reread.program, 0.5, x);
+    const double there = newFeedAt(eased, 0.0, x), back = newFeedAt(eased, 0.5, x);
     slowest = std::min(slowest, there);
     // A step of the ramps (25 mm/min) at most, where x falls on a piece's end.
     EXPECT_NEAR(there, back, 25.0 + 1e-9) << "x " << x;
@@ -310,27 +317,10 @@ TEST(regionOptimizer, EasedNeighboursWrittenInDifferentChordsRunTheirBendAlike) 
   fine.chordTolerance = 0.015;   // three
   const auto there = isurface::testing::camProfile(coarse, 0.0), back = isurface::testing::camProfile(fine, 0.0);
   ASSERT_EQ(there.size() + 1, back.size());
-  std::string text = "G21 G90 G17\nG0 Z5\nG0 X0 Y0\nG1 Z0 F500\n";
-  for (std::size_t k = 1; k < there.size(); ++k)
-    text += fmt::format("G1 X{:.4f} Z{:.4f}{}\n", there[k].first, there[k].second, k == 1 ? " F2500" : "");
-  text += "G1 Y0.5\n";
-  for (std::size_t k = back.size() - 1; k-- > 0;) text += fmt::format("G1 X{:.4f} Z{:.4f}\n", back[k].first, back[k].second);
-  const std::uint32_t last = 4 + std::uint32_t(there.size() - 1 + 1 + back.size() - 1);
-  text += "G0 Z5\nM30\n";
-  const InterpretResult original = interpretGcode(text, "chords.nc");
-  ASSERT_TRUE(original.ok()) << original.errors.front().str();
-  OptimizeOptions options;
-  options.shape = PathShape::Eased;
-  options.programmedFeed = true;
-  options.normalAccelerationLimit = 60;  // mm/s^2
-  options.rampAcceleration = 250;
-  const OptimizeResult r = optimizeRegion(text, original.program, LineRange{5, last}, defaultMachine(), options);
-  ASSERT_EQ(r.passes.size(), 2u) << r.text;
-  const InterpretResult reread = interpretGcode(r.text, "chords-new.nc");
-  ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+  const Program eased = easedZigzag(there, back);
   double worst = 0, slowest = INFINITY;
   for (double x = 15; x < 30; x += 0.01) {
-    const double a = newFeedAt(reread.program, 0.0, x), b = newFeedAt(reread.program, 0.5, x);
+    const double a = newFeedAt(eased, 0.0, x), b = newFeedAt(eased, 0.5, x);
     worst = std::max(worst, std::fabs(a - b));
     slowest = std::min({slowest, a, b});
   }
