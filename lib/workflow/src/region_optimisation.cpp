@@ -30,7 +30,7 @@ constexpr double kServoBoundShare = 0.95;
 
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster ones cost less time, the gentler ones change the speed more evenly.
-constexpr double kRampAccelerations[] = {750.0, 500.0, 350.0, 250.0, 200.0, 100.0};
+constexpr double kRampAccelerations[] = {750.0, 500.0, 350.0, 250.0, 200.0, 150.0, 100.0};
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
