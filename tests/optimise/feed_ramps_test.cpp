@@ -251,3 +251,41 @@ TEST(feedRamps, ABendEasingOutInLongChordsSpeedsUpAsInShortPieces) {
   }
   EXPECT_EQ(feedAt(chords, 12.0), 2500);
 }
+
+// Without ramps a bend's bound holds both moves beside its sharp point: nothing ramps down to it.
+TEST(feedRamps, WithoutRampsACornerHoldsTheMovesBesideIt) {
+  PassFeeds pass;
+  pass.points = {Vec3(0, 0, 0), Vec3(10, 0, 0), Vec3(10.05, 0.02, 0), Vec3(20, 4, 0)};  // a turn of 0.38 rad
+  pass.intervalEnd = {pass.points.size() - 1};
+  pass.feeds = {2500};
+  pass.sourceLines.assign(pass.points.size(), 5);
+  RampOptions options;
+  options.programmedFeed = 2500;
+  options.normalAccelerationLimit = 40;  // mm/s^2
+  const FeedPerMove m = feedPerMove(pass, options);
+  ASSERT_EQ(m.feeds.size(), 3u);
+  EXPECT_LT(m.feeds[0], 2500);
+  EXPECT_LT(m.feeds[1], 2500);
+}
+
+// Held to caps at none of its points, a pass ramps as it did; held at some, never faster than
+// it did nor than the caps, and each piece within the bound of the move it is part of.
+TEST(feedRamps, APassHeldToCapsRunsNoFasterThanBeforeNorThanThem) {
+  RampOptions options;
+  options.programmedFeed = 2500;
+  options.normalAccelerationLimit = 40;
+  options.rampAcceleration = 250;
+  const PassFeeds pass = easingOut(100, 0.01);
+  const FeedPerMove ramped = feedPerMove(pass, options);
+  const FeedPerMove same = feedPerMoveHeldTo(pass, ramped, std::vector<double>(ramped.points.size(), INFINITY), options);
+  ASSERT_EQ(same.passPointAt.size(), pass.points.size());
+  for (double x = 0.05; x < 12.9; x += 0.05) EXPECT_EQ(feedAt(same, x), feedAt(ramped, x)) << "x " << x;
+  // Held to 1200 mm/min from x 2 to 3 mm.
+  std::vector<double> caps(ramped.points.size(), INFINITY);
+  for (std::size_t i = 0; i < caps.size(); ++i)
+    if (ramped.points[i].x() > 2 && ramped.points[i].x() < 3) caps[i] = 1200;
+  const FeedPerMove held = feedPerMoveHeldTo(pass, ramped, caps, options);
+  for (double x = 0.05; x < 12.9; x += 0.05) EXPECT_LE(feedAt(held, x), feedAt(ramped, x)) << "x " << x;
+  for (double x = 2.1; x < 2.9; x += 0.05) EXPECT_LE(feedAt(held, x), 1200) << "x " << x;
+  EXPECT_EQ(feedAt(held, 12.5), 2500);
+}

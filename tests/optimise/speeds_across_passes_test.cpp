@@ -28,6 +28,9 @@ FeedPerMove straightPass(double y, double slow, bool backwards = false) {
   return pass;
 }
 
+// Every pass programmed at F2500: a step of 2 % is 50 mm/min.
+std::vector<double> feedsOf(const std::vector<FeedPerMove>& passes) { return std::vector<double>(passes.size(), 2500.0); }
+
 // The cap (mm/min) at the point of `pass` nearest x.
 double capAt(const FeedPerMove& pass, const std::vector<double>& caps, double x) {
   std::size_t best = 0;
@@ -42,9 +45,9 @@ TEST(speedsAcrossPasses, APassSlowerThanItsNeighboursHoldsThemToItsSpeedPlusASte
   for (const bool zigzag : {false, true}) {
     const std::vector<FeedPerMove> passes = {straightPass(0.0, 2500), straightPass(0.5, 1000, zigzag), straightPass(1.0, 0),
                                              straightPass(1.5, 0, zigzag)};
-    const auto caps = speedCapsAcrossPasses(passes, {50.0, 2.0});
+    const auto caps = speedCapsAcrossPasses(passes, feedsOf(passes), {0.02, 2.0});
     ASSERT_EQ(caps.size(), 4u);
-    // The slow pass keeps its speeds; the others are held to them, a step per pass between.
+    // The slow pass keeps its speed; the others are held to it, a step per pass between.
     EXPECT_EQ(capAt(passes[1], caps[1], 11.0), 1000);
     EXPECT_EQ(capAt(passes[0], caps[0], 11.0), 1050);
     EXPECT_EQ(capAt(passes[2], caps[2], 11.0), 1050);
@@ -57,24 +60,36 @@ TEST(speedsAcrossPasses, APassSlowerThanItsNeighboursHoldsThemToItsSpeedPlusASte
   }
 }
 
-TEST(speedsAcrossPasses, PassesFartherApartThanTheReachDoNotHoldEachOther) {
+TEST(speedsAcrossPasses, PassesFartherApartThanTheReachOrOfAnotherFeedDoNotHoldEachOther) {
   const std::vector<FeedPerMove> passes = {straightPass(0.0, 1000), straightPass(3.0, 0)};
-  const auto caps = speedCapsAcrossPasses(passes, {50.0, 2.0});
-  EXPECT_EQ(capAt(passes[1], caps[1], 11.0), 2500);
-  EXPECT_EQ(capAt(passes[0], caps[0], 11.0), 1000);
+  const auto caps = speedCapsAcrossPasses(passes, feedsOf(passes), {0.02, 2.0});
+  EXPECT_EQ(capAt(passes[1], caps[1], 11.0), INFINITY);
+  EXPECT_EQ(capAt(passes[0], caps[0], 11.0), INFINITY);
+  // A pass of another feed beside it is other work (a finishing pass beside a roughing one).
+  const std::vector<FeedPerMove> beside = {straightPass(0.0, 1000), straightPass(0.5, 0)};
+  EXPECT_EQ(capAt(beside[1], speedCapsAcrossPasses(beside, {2500.0, 3000.0}, {0.02, 2.0})[1], 11.0), INFINITY);
 }
 
-TEST(speedsAcrossPasses, NothingToHoldGivesEachPassItsOwnSpeeds) {
-  EXPECT_TRUE(speedCapsAcrossPasses({}, {50.0, 2.0}).empty());
+// A neighbour's long move is found wherever a point lies beside it, not only near its ends.
+TEST(speedsAcrossPasses, ALongSlowMoveOfTheNeighbourHoldsThePointsBesideIt) {
+  FeedPerMove slow;
+  slow.points = {Vec3(0, 0, 0), Vec3(50, 0, 0)};
+  slow.feeds = {1000};
+  const std::vector<FeedPerMove> passes = {slow, straightPass(0.5, 0)};
+  const auto caps = speedCapsAcrossPasses(passes, feedsOf(passes), {0.02, 2.0});
+  for (const double x : {3.0, 11.0, 18.0}) EXPECT_EQ(capAt(passes[1], caps[1], x), 1050) << "x " << x;
+}
+
+TEST(speedsAcrossPasses, NothingToHoldHoldsNothing) {
+  EXPECT_TRUE(speedCapsAcrossPasses({}, {}, {0.02, 2.0}).empty());
   const std::vector<FeedPerMove> one = {straightPass(0.0, 1000)};
-  const auto caps = speedCapsAcrossPasses(one, {50.0, 2.0});
+  const auto caps = speedCapsAcrossPasses(one, feedsOf(one), {0.02, 2.0});
   ASSERT_EQ(caps.size(), 1u);
   ASSERT_EQ(caps[0].size(), one[0].points.size());
-  EXPECT_EQ(capAt(one[0], caps[0], 11.0), 1000);
-  EXPECT_EQ(capAt(one[0], caps[0], 5.0), 2500);
+  for (const double cap : caps[0]) EXPECT_EQ(cap, INFINITY);
   // A pass without moves has nothing to cap and holds no other.
   const std::vector<FeedPerMove> empty = {FeedPerMove{}, straightPass(0.5, 0)};
-  const auto none = speedCapsAcrossPasses(empty, {50.0, 2.0});
+  const auto none = speedCapsAcrossPasses(empty, feedsOf(empty), {0.02, 2.0});
   EXPECT_TRUE(none[0].empty());
-  EXPECT_EQ(capAt(empty[1], none[1], 11.0), 2500);
+  EXPECT_EQ(capAt(empty[1], none[1], 11.0), INFINITY);
 }

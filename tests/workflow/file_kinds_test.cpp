@@ -112,6 +112,8 @@ TEST(fileKinds, ProseIsNotAProgram) {
   // An empty file of another name is nothing the tool can tell.
   EXPECT_NE(kindError(written("empty.txt", "")).find("is empty"), std::string::npos);
   EXPECT_NE(kindError(written("notes", "\n\n")).find("is empty"), std::string::npos);
+  // One of LinuxCNC's parameters is not nothing.
+  EXPECT_EQ(fileKind(written("setup", "#<depth> = 2\n")), FileKind::Program);
   // A log with a few lines that read as G-code is still not a program.
   const std::string log = written("run.log", "Starting run 4\nreading part.nc\n(Failed) 2 tests\nsee output\n"
                                              "% complete: 100\ntotal 12.5 s\nexit code 1\n");

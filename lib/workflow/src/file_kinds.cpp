@@ -22,7 +22,7 @@ namespace isurface {
 namespace {
 
 constexpr std::size_t kLinesLooked = 20;
-const std::set<std::string> kProgramExtensions = {".nc", ".ngc", ".gcode", ".gc", ".tap", ".cnc"};
+const std::set<std::string> kProgramExtensions = {".nc", ".ngc", ".gcode", ".gc", ".tap", ".cnc", ".mpf", ".min", ".eia", ".iso"};
 
 [[noreturn]] void fail(const std::string& path, const std::string& message) {
   throw InputError(Diagnostic{path, 0, 0, message});
@@ -150,12 +150,12 @@ FileKind fileKind(const std::string& path, std::size_t headBytes) {
   // Most lines of a program read as G-code; a log or a note may have a few that do ("(done)",
   // "% complete", "X1 Y2" quoted).
   const auto gcodeLines = std::count_if(lines.begin(), lines.end(), looksLikeGcode);
-  // An empty file says nothing of itself: a program only if its name says so.
+  // An empty file says nothing of itself: a program only if its name says so. (A head of
+  // '#' lines only, LinuxCNC's parameters, reads as a program's.)
   if (lines.empty()) {
-    if (kProgramExtensions.count(ext)) return FileKind::Program;
     const bool blank = head.find_first_not_of(" \t\r\n\f\v") == std::string::npos;
-    fail(path, std::string(blank ? "is empty" : "holds only comments (#)") +
-                   ", and its name does not say it is a G-code program (.nc, .ngc, .gcode, .gc, .tap, .cnc)");
+    if (!blank || kProgramExtensions.count(ext)) return FileKind::Program;
+    fail(path, "is empty, and its name does not say it is a G-code program (.nc, .ngc, .gcode, .gc, .tap, .cnc, .mpf, .min, .eia, .iso)");
   }
   if (std::size_t(2 * gcodeLines) >= lines.size()) return FileKind::Program;
   fail(path, fmt::format("is not a G-code program: {} of its first {} lines read as G-code (a word such as G1, X10 "

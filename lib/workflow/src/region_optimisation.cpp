@@ -350,7 +350,7 @@ class ClosedLoop {
   }
 
  private:
-  static constexpr std::size_t kExpectedCandidates = 28;
+  static constexpr std::size_t kExpectedCandidates = 40;
   const std::string& text_;
   Baseline& baseline_;
   const Machine& machine_;
@@ -391,8 +391,9 @@ void judgeShapeCandidates(ClosedLoop& loop, PathShape shape) {
 // `limit` (mm/s^2), with ramps of `ramp`. The servo deviates in proportion to the normal
 // acceleration, and eased bends, which it enters without a step, may leave it below what the
 // program deviated: the bound is then raised once by the room left (a faster program, figures
-// that may still hold). Returns whether the program was slower than the objective allows either
-// way: gentler ramps would take longer still.
+// that may still hold); where they deviated more (the servo also lags while the speed changes
+// in a bend), it is lowered once by the excess. Returns whether the program was slower than the
+// objective allows either way: gentler ramps would take longer still.
 bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
   auto candidate = [&](double bound) { return Candidate{CrossPassRule::None, 1.0, false, {}, bound, ramp, PathShape::Eased, true}; };
   const RegionOptimisation* eased = loop.judge(candidate(limit));
@@ -404,9 +405,9 @@ bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
   const double scale = eased->regionAfter.hasDeviation
                            ? std::min(room(eased->regionBefore, eased->regionAfter), room(eased->wholeBefore, eased->wholeAfter))
                            : 1.0;
-  if (!(std::fabs(scale - 1) > kGainRequired)) return easedSlower;
+  if (!(scale > 0) || !(std::fabs(scale - 1) > kGainRequired)) return easedSlower;
   const RegionOptimisation* rescaled = loop.judge(candidate(limit * scale));
-  // A raised bound that binds nowhere writes the same program again: nothing more to learn.
+  // A bound that binds nowhere either way writes the same program again: nothing more to learn.
   return easedSlower && (!rescaled || slower(*rescaled));
 }
 

@@ -22,4 +22,11 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b) {
   return (p - (a + t * ab)).norm();
 }
 
+bool runsBackwards(const Vec3& from, const Vec3& to) {
+  const Vec3 d = to - from;
+  Eigen::Index axis = 0;
+  d.cwiseAbs().maxCoeff(&axis);
+  return d[axis] < 0;
+}
+
 }  // namespace isurface

@@ -123,25 +123,38 @@ bool reachesInto(const Vec3& a, const Vec3& b, const std::pair<Vec3, Vec3>& box)
   return true;
 }
 
-// A pass as the ramps see it: per point its curvature (1/mm) and the speed it may not exceed
-// (mm/min, infinite: none), per move its interval's feed (mm/min), its ramps' acceleration
-// (mm/s^2) and the old line it stands for.
+// A pass as the ramps see it. Per point: the speed the bends' bound allows there and a cap
+// (mm/s, infinite: none); per move: its interval's feed (mm/min), the bound it is held to over
+// its length (mm/s), its ramps' acceleration (mm/s^2) and the old line it stands for.
 struct RampPlan {
   std::vector<Vec3> points;
-  std::vector<double> curvature, cap;
-  std::vector<double> intervalFeed, acceleration;
+  std::vector<double> bound, cap;
+  std::vector<double> intervalFeed, moveBound, acceleration;
   std::vector<std::uint32_t> line;
 };
 
+bool rampsAsked(const RampOptions& options, double programmed) {
+  return programmed > 0 && std::isfinite(options.rampAcceleration) && options.rampAcceleration > 0;
+}
+
 RampPlan rampPlan(const PassFeeds& pass, const RampOptions& options, double programmed) {
+  constexpr double kNone = std::numeric_limits<double>::infinity();
   RampPlan plan;
   plan.points = pass.points;
-  plan.curvature = curvatureAtPoints(pass.points);
-  plan.cap.assign(pass.points.size(), std::numeric_limits<double>::infinity());
+  plan.bound.assign(pass.points.size(), kNone);
+  if (programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0)
+    plan.bound = boundAtPoints(curvatureAtPoints(pass.points), options.normalAccelerationLimit,
+                               mmPerMinToMmPerS(kLowestFeedShare * programmed));
+  plan.cap.assign(pass.points.size(), kNone);
   plan.intervalFeed = intervalFeedPerMove(pass, programmed);
-  const double a = programmed > 0 && std::isfinite(options.rampAcceleration) ? std::max(0.0, options.rampAcceleration) : 0.0;
-  // On a move that does not reach into the box asked for, the faster of the two accelerations.
+  const bool ramped = rampsAsked(options, programmed);
+  const double a = ramped ? options.rampAcceleration : 0.0;
   for (std::size_t k = 0; k + 1 < pass.points.size(); ++k) {
+    // With ramps a move is held to the faster of its ends, the ramp from the slower end covering
+    // the rest (a bend easing out over a long chord lets the speed rise from where it begins);
+    // without, to the slower.
+    plan.moveBound.push_back(ramped ? std::max(plan.bound[k], plan.bound[k + 1]) : std::min(plan.bound[k], plan.bound[k + 1]));
+    // On a move that does not reach into the box asked for, the faster of the two accelerations.
     const bool outside = options.within && !reachesInto(pass.points[k], pass.points[k + 1], *options.within);
     plan.acceleration.push_back(outside ? std::max(a, options.outsideAcceleration) : a);
     plan.line.push_back(k + 1 < pass.sourceLines.size() ? pass.sourceLines[k + 1] : 0);
@@ -155,19 +168,15 @@ FeedPerMove rampedFeeds(const RampPlan& plan, const RampOptions& options, double
   out.points = {plan.points.front()};
   out.sourceLines = {0};
   out.passPointAt = {0};
-  std::vector<double> feeds;  // mm/s, each move's before ramping
-  for (const double f : plan.intervalFeed) feeds.push_back(mmPerMinToMmPerS(f));
+  // mm/s, each move's before ramping: its interval's, its bound, and the higher of its caps.
+  std::vector<double> feeds;
+  for (std::size_t k = 0; k < plan.intervalFeed.size(); ++k)
+    feeds.push_back(std::min({mmPerMinToMmPerS(plan.intervalFeed[k]), plan.moveBound[k], std::max(plan.cap[k], plan.cap[k + 1])}));
   if (feeds.empty()) return out;
-  std::vector<double> atPoint(plan.points.size(), std::numeric_limits<double>::infinity());
-  if (programmed > 0 && std::isfinite(options.normalAccelerationLimit) && options.normalAccelerationLimit > 0) {
-    atPoint = boundAtPoints(plan.curvature, options.normalAccelerationLimit, mmPerMinToMmPerS(kLowestFeedShare * programmed));
-    // A move is held to the faster of its ends: the ramp from the slower end covers the rest, so
-    // that a bend easing out over a long chord lets the speed rise from where it begins.
-    for (std::size_t k = 0; k < feeds.size(); ++k) feeds[k] = std::min(feeds[k], std::max(atPoint[k], atPoint[k + 1]));
-  }
-  for (std::size_t k = 0; k < atPoint.size(); ++k) atPoint[k] = std::min(atPoint[k], mmPerMinToMmPerS(plan.cap[k]));
+  std::vector<double> atPoint(plan.points.size());
+  for (std::size_t k = 0; k < atPoint.size(); ++k) atPoint[k] = std::min(plan.bound[k], plan.cap[k]);
   // Ramps need a step to cut them at: none without a programmed feed.
-  const bool ramped = programmed > 0 && std::isfinite(options.rampAcceleration) && options.rampAcceleration > 0;
+  const bool ramped = rampsAsked(options, programmed);
   const double step = mmPerMinToMmPerS(kFeedStepShare * programmed);
   const std::vector<double> u = ramped ? speedAtPoints(plan.points, feeds, plan.acceleration, atPoint) : std::vector<double>{};
   for (std::size_t k = 0; k < feeds.size(); ++k) {
@@ -187,7 +196,7 @@ FeedPerMove rampedFeeds(const RampPlan& plan, const RampOptions& options, double
     };
     // Cut from the same end whichever way the pass runs: a move run back the other way (the
     // next pass of a zig-zag) then ramps through the same pieces at the same feeds.
-    const bool backwards = std::lexicographical_compare(to.data(), to.data() + 3, from.data(), from.data() + 3);
+    const bool backwards = runsBackwards(from, to);
     std::vector<double> cuts = rampBreaks(length, feeds[k], backwards ? atEnd : atStart, backwards ? atStart : atEnd, a, step);
     if (backwards) {
       for (double& cut : cuts) cut = length - cut;
@@ -225,15 +234,17 @@ FeedPerMove feedPerMoveHeldTo(const PassFeeds& pass, const FeedPerMove& ramped, 
   const double programmed = programmedFeedOf(options);
   const RampPlan plan = rampPlan(pass, options, programmed);
   if (ramped.passPointAt.size() != pass.points.size() || caps.size() != ramped.points.size()) return rampedFeeds(plan, options, programmed);
-  // Every point of the ramps a point of its own; those a ramp cut a move at lie on it, straight.
+  // Every point of the ramps a point of its own: a piece of a move keeps the move's feed, bound,
+  // acceleration and line; the pass's own points keep their bound, the cuts (on a chord) none.
   RampPlan held;
   held.points = ramped.points;
-  held.cap = caps;
-  held.curvature.assign(ramped.points.size(), 0.0);
-  for (std::size_t j = 0; j < pass.points.size(); ++j) held.curvature[ramped.passPointAt[j]] = plan.curvature[j];
+  held.bound.assign(ramped.points.size(), std::numeric_limits<double>::infinity());
+  for (std::size_t j = 0; j < pass.points.size(); ++j) held.bound[ramped.passPointAt[j]] = plan.bound[j];
+  for (const double cap : caps) held.cap.push_back(mmPerMinToMmPerS(cap));
   for (std::size_t j = 0; j + 1 < pass.points.size(); ++j)
     for (std::size_t i = ramped.passPointAt[j]; i < ramped.passPointAt[j + 1]; ++i) {
       held.intervalFeed.push_back(plan.intervalFeed[j]);
+      held.moveBound.push_back(plan.moveBound[j]);
       held.acceleration.push_back(plan.acceleration[j]);
       held.line.push_back(plan.line[j]);
     }

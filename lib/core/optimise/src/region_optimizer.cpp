@@ -38,7 +38,7 @@ constexpr double kOutsideRampShare = 0.5;
 // Of the curvature at which the normal-acceleration bound holds the program's feed: where an
 // eased bend is written in short pieces.
 constexpr double kRampedBendShare = 0.25;
-// Of the program's feed, how much faster a point of a pass may run than the pass beside it.
+// Of a pass's feed, how much faster a point of it may run than the pass beside it.
 constexpr double kSpeedStepAcrossPasses = 0.015;
 
 // The program's physical lines, each with its own line end, so unchanged ones are copied
@@ -328,8 +328,7 @@ PassFeeds planPass(const Program& program, const std::vector<std::size_t>& run, 
       limits.bendCurvature = kRampedBendShare * options.normalAccelerationLimit / (feed * feed);
     // Eased the same way whichever way the pass runs, then turned back: the fit of a pass and
     // its neighbour cut the other way (a zig-zag) would otherwise put their bends a little apart.
-    const bool backwards = std::lexicographical_compare(points.back().data(), points.back().data() + 3,
-                                                        points.front().data(), points.front().data() + 3);
+    const bool backwards = runsBackwards(points.front(), points.back());
     if (backwards) std::reverse(points.begin(), points.end());
     EasedPath eased = easedPath(fittedPath(points, options), points, limits);
     if (backwards) {
@@ -403,7 +402,9 @@ std::vector<FeedPerMove> feedsAgreeingAcrossPasses(const std::vector<PassFeeds>&
     slowestFeed = std::min(slowestFeed, feed);
   }
   if (!(options.rampAcceleration > 0 && options.normalAccelerationLimit > 0 && slowestFeed > 0)) return moves;
-  const std::vector<std::vector<double>> caps = speedCapsAcrossPasses(moves, {kSpeedStepAcrossPasses * slowestFeed});
+  std::vector<double> programmedFeeds;
+  for (const auto& run : runs) programmedFeeds.push_back(program.moves[run.front()].feed);
+  const std::vector<std::vector<double>> caps = speedCapsAcrossPasses(moves, programmedFeeds, {kSpeedStepAcrossPasses});
   for (std::size_t r = 0; r < runs.size(); ++r)
     moves[r] = feedPerMoveHeldTo(plans[r], moves[r], caps[r], rampOptions(options, program.moves[runs[r].front()].feed, machine));
   return moves;

@@ -35,4 +35,9 @@ double threePointRadius(const Vec3& previous, const Vec3& point, const Vec3& nex
 // Distance from p to the segment a-b, mm; a segment shorter than kLengthEpsilon is its start.
 double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
 
+// Whether the way from `from` to `to` runs against the axes: its largest component is
+// negative. A path and the same path run back give opposite answers (whatever the digits of its
+// smaller components), so that work done one canonical way is the same for both.
+bool runsBackwards(const Vec3& from, const Vec3& to);
+
 }  // namespace isurface

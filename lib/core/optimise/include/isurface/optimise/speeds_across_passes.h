@@ -14,14 +14,17 @@
 namespace isurface {
 
 struct SpeedsAcrossPasses {
-  double step = 0;      // mm/min, the most a point may run faster than its neighbour's
-  double reach = 2.0;   // mm: a pass farther than this from a point is no neighbour of it
+  double stepShare = 0.015;  // of a pass's programmed feed: the most it may run faster than its neighbour
+  double reach = 2.0;        // mm: a pass farther than this from a point is no neighbour of it
 };
 
 // `passes`: each pass's ramped feeds, in the order the passes run (a zig-zag's neighbours are
-// the passes before and after). Returns, per pass and per point of it, the feed the point may
-// run at (mm/min; infinite where nothing caps it): its moves' feeds, lowered to the
-// neighbours' plus the step, and through them to theirs, both ways along the passes.
-std::vector<std::vector<double>> speedCapsAcrossPasses(const std::vector<FeedPerMove>& passes, const SpeedsAcrossPasses& rule);
+// the passes before and after); `programmedFeeds`: each one's F (mm/min; passes of different
+// feeds are different work and do not hold each other). Returns, per pass and per point of it,
+// the feed the point may run at (mm/min; infinite where no neighbour is near): its own speed, or
+// the neighbours' near it plus a step if lower, and through them the passes' beyond, both ways
+// along the passes.
+std::vector<std::vector<double>> speedCapsAcrossPasses(const std::vector<FeedPerMove>& passes, const std::vector<double>& programmedFeeds,
+                                                       const SpeedsAcrossPasses& rule);
 
 }  // namespace isurface
