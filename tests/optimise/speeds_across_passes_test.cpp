@@ -93,3 +93,16 @@ TEST(speedsAcrossPasses, NothingToHoldHoldsNothing) {
   EXPECT_TRUE(none[0].empty());
   EXPECT_EQ(capAt(empty[1], none[1], 11.0), INFINITY);
 }
+
+// A long move across space (a diagonal of a metre) is found beside any of its points.
+TEST(speedsAcrossPasses, ALongDiagonalMoveIsFoundAlongItsLength) {
+  FeedPerMove diagonal;
+  diagonal.points = {Vec3(0, 0, 0), Vec3(600, 600, 600)};
+  diagonal.feeds = {1000};
+  FeedPerMove beside;
+  for (int k = 0; k <= 60; ++k) beside.points.emplace_back(10.0 * k + 0.5, 10.0 * k, 10.0 * k);
+  beside.feeds.assign(60, 2500);
+  const std::vector<FeedPerMove> passes = {diagonal, beside};
+  const auto caps = speedCapsAcrossPasses(passes, feedsOf(passes), {0.02, 2.0});
+  for (std::size_t i = 0; i < beside.points.size(); ++i) EXPECT_EQ(caps[1][i], 1050) << "point " << i;
+}

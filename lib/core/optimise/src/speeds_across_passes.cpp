@@ -13,18 +13,13 @@ namespace {
 
 constexpr double kNone = std::numeric_limits<double>::infinity();
 
-// A pass's moves by the cubes of side `reach` their bounding boxes touch, to find those near a
-// point without looking at all of them.
+// A pass's moves by the cubes of side `reach` they pass through, to find those near a point
+// without looking at all of them (a move within `reach` of a point passes through its cube or
+// one of the 26 around it).
 class MoveGrid {
  public:
   MoveGrid(const std::vector<Vec3>& points, double reach) : reach_(reach) {
-    for (std::size_t j = 0; j + 1 < points.size(); ++j) {
-      const Vec3 lower = points[j].cwiseMin(points[j + 1]), upper = points[j].cwiseMax(points[j + 1]);
-      const Cell from = cellOf(lower), to = cellOf(upper);
-      for (long x = from[0]; x <= to[0]; ++x)
-        for (long y = from[1]; y <= to[1]; ++y)
-          for (long z = from[2]; z <= to[2]; ++z) cells_[key({x, y, z})].push_back(j);
-    }
+    for (std::size_t j = 0; j + 1 < points.size(); ++j) add(points[j], points[j + 1], j);
   }
 
   // The moves in the cube holding p and the 26 around it: every move within `reach` of p.
@@ -42,6 +37,31 @@ class MoveGrid {
 
  private:
   using Cell = std::array<long, 3>;
+
+  // The cubes from a's to b's, one face crossed at a time (Amanatides and Woo's walk).
+  void add(const Vec3& a, const Vec3& b, std::size_t j) {
+    Cell cell = cellOf(a);
+    const Cell last = cellOf(b);
+    const Vec3 d = b - a;
+    std::array<long, 3> step{};
+    std::array<double, 3> nextFace{}, perCube{};  // along the move, 0..1
+    for (int k = 0; k < 3; ++k) {
+      step[k] = d[k] > 0 ? 1 : d[k] < 0 ? -1 : 0;
+      nextFace[k] = perCube[k] = std::numeric_limits<double>::infinity();
+      if (step[k] == 0) continue;
+      nextFace[k] = ((double(cell[k]) + (step[k] > 0 ? 1 : 0)) * reach_ - a[k]) / d[k];
+      perCube[k] = reach_ / std::fabs(d[k]);
+    }
+    cells_[key(cell)].push_back(j);
+    for (long left = std::labs(last[0] - cell[0]) + std::labs(last[1] - cell[1]) + std::labs(last[2] - cell[2]); left > 0; --left) {
+      const int k = nextFace[0] < nextFace[1] ? (nextFace[0] < nextFace[2] ? 0 : 2) : (nextFace[1] < nextFace[2] ? 1 : 2);
+      cell[k] += step[k];
+      nextFace[k] += perCube[k];
+      cells_[key(cell)].push_back(j);
+    }
+    if (cell != last) cells_[key(last)].push_back(j);  // rounding at a face
+  }
+
   Cell cellOf(const Vec3& p) const {
     return {long(std::floor(p.x() / reach_)), long(std::floor(p.y() / reach_)), long(std::floor(p.z() / reach_))};
   }
