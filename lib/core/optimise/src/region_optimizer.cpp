@@ -394,19 +394,18 @@ RampOptions rampOptions(const OptimizeOptions& options, double feed, const Machi
 // passes beside them (speeds_across_passes.h).
 std::vector<FeedPerMove> feedsAgreeingAcrossPasses(const std::vector<PassFeeds>& plans, const std::vector<std::vector<std::size_t>>& runs,
                                                    const Program& program, const OptimizeOptions& options, const Machine& machine) {
+  std::vector<double> programmedFeeds;  // mm/min
   std::vector<FeedPerMove> moves;
-  double slowestFeed = INFINITY;  // mm/min, programmed
   for (std::size_t r = 0; r < runs.size(); ++r) {
-    const double feed = program.moves[runs[r].front()].feed;
-    moves.push_back(feedPerMove(plans[r], rampOptions(options, feed, machine)));
-    slowestFeed = std::min(slowestFeed, feed);
+    programmedFeeds.push_back(program.moves[runs[r].front()].feed);
+    moves.push_back(feedPerMove(plans[r], rampOptions(options, programmedFeeds[r], machine)));
   }
-  if (!(options.rampAcceleration > 0 && options.normalAccelerationLimit > 0 && slowestFeed > 0)) return moves;
-  std::vector<double> programmedFeeds;
-  for (const auto& run : runs) programmedFeeds.push_back(program.moves[run.front()].feed);
+  if (!(options.rampAcceleration > 0 && options.normalAccelerationLimit > 0)) return moves;
   const std::vector<std::vector<double>> caps = speedCapsAcrossPasses(moves, programmedFeeds, {kSpeedStepAcrossPasses});
   for (std::size_t r = 0; r < runs.size(); ++r)
-    moves[r] = feedPerMoveHeldTo(plans[r], moves[r], caps[r], rampOptions(options, program.moves[runs[r].front()].feed, machine));
+    // A pass no neighbour holds ramps as it did.
+    if (std::any_of(caps[r].begin(), caps[r].end(), [](double cap) { return std::isfinite(cap); }))
+      moves[r] = feedPerMoveHeldTo(plans[r], moves[r], caps[r], rampOptions(options, programmedFeeds[r], machine));
   return moves;
 }
 
