@@ -11,6 +11,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/workflow/region_optimisation.h"
+#include "cam_style_transition.h"
 #include "workflow_fixtures.h"
 
 using namespace isurface;
@@ -278,4 +279,56 @@ TEST(regionOptimisation, WithoutABoxEveryCandidateIsMeasuredInTheFirstOnesBox) {
   EXPECT_EQ(r.upper, paper.fittedUpper);
   EXPECT_TRUE(r.result.fittedLower != r.lower || r.result.fittedUpper != r.upper)
       << "the chosen candidate re-fits the first one's box: the test shows nothing";
+}
+
+namespace {
+
+// mm/s^2: the acceleration of a candidate's ramps, 0 without.
+double rampsOf(const std::string& plan) {
+  const std::size_t at = plan.find("ramps of ");
+  return at == std::string::npos ? 0.0 : std::stod(plan.substr(at + 9));
+}
+
+}  // namespace
+
+// The time the program's own braking loses is what the eased bends' ramps may spend, and it
+// falls between the listed accelerations: on the CAM-style program ramps of 200 mm/s^2 keep the
+// time and 150 do not, so the loop tries ramps between them, and what it keeps evens the speed
+// at least as much as the gentlest listed ramps in time.
+TEST(regionOptimisation, EasedRampsAreAsGentleAsTheTimeAllows) {
+  const std::string text = isurface::testing::camStyleTransitionProgram();
+  const Program program = interpretGcode(text, "cam-style-transition.nc").program;
+  const SurfaceRun before =
+      surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+  RegionRequest request;
+  request.lines = worstRegion(before, "cam-style-transition.nc").lines;
+  const RegionOptimisation r = optimiseRegion(text, program, before, defaultMachine(), request);
+  ASSERT_TRUE(r.kept) << r.reason;
+  ASSERT_NE(r.plan.find("eased"), std::string::npos) << r.plan;
+  const std::vector<double> listed = {750, 500, 350, 250, 200, 150, 100};
+  double gentlestListedInTime = 0, fluctuationThere = INFINITY;
+  std::vector<double> between;
+  for (const RegionOptimisation::Outcome& c : r.candidates) {
+    if (c.plan.find("eased") == std::string::npos) continue;
+    const double ramps = rampsOf(c.plan);
+    if (std::find(listed.begin(), listed.end(), ramps) == listed.end()) {
+      between.push_back(ramps);
+    } else if (c.kept && (gentlestListedInTime == 0 || ramps <= gentlestListedInTime)) {
+      fluctuationThere = ramps < gentlestListedInTime || gentlestListedInTime == 0
+                             ? c.region.speedFluctuation
+                             : std::min(fluctuationThere, c.region.speedFluctuation);
+      gentlestListedInTime = ramps;
+    }
+  }
+  ASSERT_GT(gentlestListedInTime, 0);
+  const auto next = std::find(listed.begin(), listed.end(), gentlestListedInTime) + 1;
+  ASSERT_NE(next, listed.end()) << "the gentlest ramps listed keep the time: nothing lies between";
+  ASSERT_FALSE(between.empty());
+  for (const double ramps : between) {
+    EXPECT_LT(ramps, gentlestListedInTime);
+    EXPECT_GT(ramps, *next);
+  }
+  EXPECT_LE(rampsOf(r.plan), gentlestListedInTime);
+  EXPECT_LE(r.regionAfter.speedFluctuation, fluctuationThere);
+  EXPECT_LE(r.timeAfter, r.timeBefore);
 }

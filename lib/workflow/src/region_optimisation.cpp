@@ -9,13 +9,13 @@
 #include <tuple>
 
 #include "isurface/analysis/quality_figures.h"
-#include "isurface/analysis/quality_regions.h"
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/nc/servo_response.h"
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/workflow/run_inputs.h"
 
 #include "candidate_feed_limits.h"
+#include "surface_required.h"
 
 namespace isurface {
 
@@ -31,6 +31,7 @@ constexpr double kServoBoundShare = 0.95;
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster ones cost less time, the gentler ones change the speed more evenly.
 constexpr double kRampAccelerations[] = {750.0, 500.0, 350.0, 250.0, 200.0, 150.0, 100.0};
+constexpr int kRampRefinements = 2;
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -48,106 +49,6 @@ std::pair<Vec3, Vec3> boundingBox(const std::vector<Vec3>& points) {
   if (points.empty()) lower = upper = Vec3::Zero();
   return {lower, upper};
 }
-
-}  // namespace
-
-SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program, double gapLimit) {
-  SurfaceRun run;
-  PassOptions options;
-  options.program = program;
-  run.passes = splitPasses(*samples, options);
-  MeshOptions mesh;
-  mesh.gapLimit = gapLimit;
-  run.mesh = std::make_shared<const SurfaceMesh>(buildSurfaceMesh(*samples, run.passes, mesh));
-  run.gapLimit = gapLimit;
-  run.samples = std::move(samples);
-  return run;
-}
-
-namespace {
-
-// The figures are measured between neighbouring passes on the surface: a run whose passes make
-// no triangle would be judged on nothing.
-void requireSurface(const SurfaceRun& run, const std::string& source) {
-  if (!run.mesh->triangles.empty()) return;
-  throw InputError(Diagnostic{source, 0, 0, whyNoTriangles(run.passes, run.gapLimit)});
-}
-
-}  // namespace
-
-ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source) {
-  requireSurface(run, source);
-  const QualityReport report = findQualityRegions(*run.samples, *run.mesh);
-  const QualityRegion* worst = worstRegionInsidePasses(report);
-  if (!worst)
-    throw InputError(Diagnostic{source, 0, 0,
-                                report.regions.empty() ? "no region beyond the quality thresholds to optimise"
-                                                       : "every region beyond the quality thresholds lies where passes start or end"});
-  return {widenToWholePasses(*run.samples, run.passes, {worst->firstLine, worst->lastLine}), worst->lower, worst->upper,
-          worst->vertices};
-}
-
-namespace {
-
-// The lines and the extent of the surface's samples inside a box (XY, mm).
-ChosenRegion surfaceInside(const SurfaceRun& run, const Vec3& lower, const Vec3& upper) {
-  const Trajectory& t = *run.samples;
-  ChosenRegion region;
-  region.lines = {std::numeric_limits<std::uint32_t>::max(), 0};
-  region.lower = Vec3::Constant(std::numeric_limits<double>::infinity());
-  region.upper = -region.lower;
-  RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
-  for (const std::uint32_t i : run.mesh->vertexSample) {
-    const std::uint32_t line = lineOf[i];
-    if (line == 0 || t.x[i] < lower.x() || t.x[i] > upper.x() || t.y[i] < lower.y() || t.y[i] > upper.y()) continue;
-    const Vec3 p(t.x[i], t.y[i], t.z[i]);
-    region.lines.first = std::min(region.lines.first, line);
-    region.lines.last = std::max(region.lines.last, line);
-    region.lower = region.lower.cwiseMin(p);
-    region.upper = region.upper.cwiseMax(p);
-    ++region.vertices;
-  }
-  return region;
-}
-
-}  // namespace
-
-ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& upper, const std::string& source) {
-  requireSurface(run, source);
-  ChosenRegion region = surfaceInside(run, lower.cwiseMin(upper), lower.cwiseMax(upper));
-  if (region.vertices == 0)
-    throw InputError(Diagnostic{source, 0, 0,
-                                fmt::format("no cutting pass crosses the box X {:g}..{:g} Y {:g}..{:g} mm", lower.x(),
-                                            upper.x(), lower.y(), upper.y())});
-  region.lines = widenToWholePasses(*run.samples, run.passes, region.lines);
-  region.lower = lower.cwiseMin(upper);
-  region.upper = lower.cwiseMax(upper);
-  return region;
-}
-
-ChosenRegion wholeProgramRegion(const SurfaceRun& run, const std::string& source) {
-  requireSurface(run, source);
-  const Vec3 everywhere = Vec3::Constant(std::numeric_limits<double>::infinity());
-  const ChosenRegion region = surfaceInside(run, -everywhere, everywhere);
-  if (region.vertices == 0) throw InputError(Diagnostic{source, 0, 0, "no cutting passes to optimise"});
-  return region;
-}
-
-std::optional<LineRange> passOfLine(const SurfaceRun& run, std::uint32_t line) {
-  const Trajectory& t = *run.samples;
-  for (const Pass& pass : run.passes.passes) {
-    bool found = false;
-    LineRange lines{~std::uint32_t(0), 0};
-    t.line.forEachRun(pass.begin, pass.end, [&](std::uint32_t l, std::size_t, std::size_t) {
-      found = found || l == line;
-      if (l != 0) lines.first = std::min(lines.first, l), lines.last = std::max(lines.last, l);
-    });
-    if (found) return lines;
-  }
-  return std::nullopt;
-}
-
-namespace {
 
 // s: how long the samples spend on the lines of `range`.
 double timeOnLines(const Trajectory& samples, LineRange range) {
@@ -411,6 +312,27 @@ bool judgeEasedBends(ClosedLoop& loop, double limit, double ramp) {
   return easedSlower && (!rescaled || slower(*rescaled));
 }
 
+// The eased bends with ramps from the fastest to the gentlest, until a run is slower than the
+// objective allows; then the step between the gentlest ramps in time and the first too slow
+// halved (in ratio) kRampRefinements times. The time a program's own braking loses is what the
+// ramps may spend, and it is not a step of the list: the gentlest ramps that spend no more
+// even the speed the most.
+void judgeGentlestEasedRamps(ClosedLoop& loop, double limit) {
+  double inTime = 0, tooSlow = 0;  // mm/s^2
+  for (const double ramp : kRampAccelerations) {
+    if (judgeEasedBends(loop, limit, ramp)) {
+      tooSlow = ramp;
+      break;
+    }
+    inTime = ramp;
+  }
+  for (int k = 0; k < kRampRefinements && inTime > 0 && tooSlow > 0; ++k) {
+    const double ramp = std::round(std::sqrt(inTime * tooSlow));
+    if (ramp >= inTime || ramp <= tooSlow) break;
+    (judgeEasedBends(loop, limit, ramp) ? tooSlow : inTime) = ramp;
+  }
+}
+
 }  // namespace
 
 RegionOptimisation optimiseRegion(const std::string& text, const Program& program, const SurfaceRun& before,
@@ -421,7 +343,8 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // around, then their slowest). Then every bend planned to the normal acceleration at which
   // the machine's servo deviates as much as the program's own run did, with ramps into and out
   // of the bends (feed_ramps.h), from the fastest to the gentlest; the same with the bends eased
-  // in and out of their straights (eased_path.h) and the program's feed. Then, where the servo deviated
+  // in and out of their straights (eased_path.h) and the program's feed, down to the gentlest
+  // ramps in time (judgeGentlestEasedRamps). Then, where the servo deviated
   // more than before (the smooth new path is run faster through bends where the old one braked
   // at every point), characteristic points at a finer scale, so that a bend between long moves is an interval
   // of its own, and its bends slowed until the deviation is back (kDeviationRounds at most).
@@ -448,8 +371,7 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
       const RegionOptimisation* bends = loop.judge({CrossPassRule::None, 1.0, true, {}, limit, ramp});
       if (bends && slower(*bends)) break;
     }
-    for (const double ramp : kRampAccelerations)
-      if (judgeEasedBends(loop, limit, ramp)) break;
+    judgeGentlestEasedRamps(loop, limit);
   }
   const RegionOptimisation* fine = loop.judge({CrossPassRule::None, 1.0, true, {}}, true);
   if (fine && fine->regionBefore.hasDeviation) {
