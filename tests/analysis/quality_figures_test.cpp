@@ -6,6 +6,9 @@
 #include <vector>
 
 #include "isurface/analysis/quality_figures.h"
+#include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/workflow/region_optimisation.h"
+#include "isurface/workflow/run_inputs.h"
 
 using namespace isurface;
 
@@ -31,4 +34,24 @@ TEST(qualityFigures, AnEmptyRunHasNoFigures) {
   EXPECT_EQ(f.samples, 0u);
   EXPECT_EQ(f.speedFluctuation, 0.0);
   EXPECT_EQ(f.inconsistencyP99, 0.0);
+}
+
+// A region's box is taken from its samples, which are interpolated between the program's
+// points: its side may fall short of the pass that lies on it by the rounding of the last
+// digits. That pass is measured with the region, as the ramps of a re-optimised program treat it.
+TEST(qualityFigures, APassOnTheWindowSideIsMeasured) {
+  const Program program = interpretGcode("G21 G90 G17\nG0 X0 Y0 Z1\nG1 Z0 F1000\nG1 X10\nG1 Y0.5\nG1 X0\nG1 Y1\nG1 X10\nG0 Z5\nM2\n",
+                                         "three-passes.nc")
+                              .program;
+  const SurfaceRun run = surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+  FigureWindow everything;
+  everything.lower = Vec3(-1, -1, -1);
+  everything.upper = Vec3(11, 1, 1);
+  FigureWindow rounded = everything, narrower = everything;
+  rounded.upper.y() = 1 - 4e-14;
+  narrower.upper.y() = 0.99;
+  const std::size_t all = measureQualityFigures(*run.samples, *run.mesh, everything).samples;
+  ASSERT_GT(all, 0u);
+  EXPECT_EQ(measureQualityFigures(*run.samples, *run.mesh, rounded).samples, all);
+  EXPECT_LT(measureQualityFigures(*run.samples, *run.mesh, narrower).samples, all);
 }

@@ -181,6 +181,12 @@ TEST(feedRamps, OutsideTheBoxAskedForRampsRunFaster) {
   // A move that crosses the box without an end in it reaches into it: the plane's, here.
   options.within = std::make_pair(Vec3(5, -1, -1), Vec3(6, 1, 10));
   EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);
+  // A pass on the box's side is in it, even where the box, taken from samples interpolated
+  // between the program's points, ends short of it by the rounding of the last digits.
+  options.within = std::make_pair(Vec3(5, -1, -1), Vec3(6, -4e-14, 10));
+  EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);
+  options.within = std::make_pair(Vec3(5, -1, -1), Vec3(6, -0.001, 10));  // a micrometre short: beside it
+  EXPECT_EQ(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 2500);
   // Without a box, 100 mm/s^2 on both sides.
   options.within.reset();
   EXPECT_LT(feedAt(feedPerMove(planeFilletSlope(), options), 19.0), 1500);

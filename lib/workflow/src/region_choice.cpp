@@ -54,7 +54,7 @@ ChosenRegion surfaceInside(const SurfaceRun& run, const Vec3& lower, const Vec3&
   RunChannel<std::uint32_t>::Cursor lineOf = t.line.cursor();
   for (const std::uint32_t i : run.mesh->vertexSample) {
     const std::uint32_t line = lineOf[i];
-    if (line == 0 || t.x[i] < lower.x() || t.x[i] > upper.x() || t.y[i] < lower.y() || t.y[i] > upper.y()) continue;
+    if (line == 0 || !insideBoxInPlan(t.x[i], t.y[i], lower, upper)) continue;
     const Vec3 p(t.x[i], t.y[i], t.z[i]);
     region.lines.first = std::min(region.lines.first, line);
     region.lines.last = std::max(region.lines.last, line);

@@ -1,4 +1,5 @@
-// Re-optimising a region: choose it, re-fit it, simulate the new program, measure both.
+// Re-optimising a region: re-fit it, simulate the new program, measure both, and keep the best
+// candidate no worse than the program (region_choice.cpp chooses the region).
 #include "isurface/workflow/region_optimisation.h"
 
 #include <fmt/format.h>
@@ -31,7 +32,12 @@ constexpr double kServoBoundShare = 0.95;
 // The ramps' accelerations tried between the feeds of the bends and the rest, mm/s^2: the
 // faster ones cost less time, the gentler ones change the speed more evenly.
 constexpr double kRampAccelerations[] = {750.0, 500.0, 350.0, 250.0, 200.0, 150.0, 100.0};
+// Twice: the listed ramps are 1.3 to 1.5 times apart, and two halvings bring the step under
+// 1.1, finer than the time a run is judged by tells apart; each is one or two more simulations.
 constexpr int kRampRefinements = 2;
+// Of the spacing of the passes, how far beyond the box the gentle ramps reach: the next pass,
+// not the one after.
+constexpr double kRampBoxReach = 1.25;
 
 std::vector<Vec3> regionPoints(const Program& program, LineRange lines) {
   std::vector<Vec3> points;
@@ -66,11 +72,29 @@ bool slower(const RegionOptimisation& r) {
   return r.timeAfter > r.timeBefore + allowed + 0.5 * cycle;
 }
 
+// mm: how far apart neighbouring passes lie, seen from above: the median distance from a vertex
+// of the surface to its neighbour on the previous pass (of at most kSpacingVertices vertices
+// spread over the run). 0 where no pass has a neighbour.
+double passSpacing(const SurfaceRun& run) {
+  constexpr std::size_t kSpacingVertices = 100'000;
+  const Trajectory& t = *run.samples;
+  const SurfaceMesh& mesh = *run.mesh;
+  const std::size_t stride = std::max<std::size_t>(1, mesh.vertexSample.size() / kSpacingVertices);
+  std::vector<double> distances;
+  for (std::size_t v = 0; v < mesh.vertexSample.size(); v += stride) {
+    if (mesh.previousPassNeighbour[v] == kNoVertex) continue;
+    const std::size_t i = mesh.vertexSample[v], j = mesh.vertexSample[mesh.previousPassNeighbour[v]];
+    distances.push_back(std::hypot(t.x[i] - t.x[j], t.y[i] - t.y[j]));
+  }
+  return distances.empty() ? 0.0 : percentileOf(distances, 50);
+}
+
 // What every candidate is judged against: the program's own figures, measured once per box.
 struct Baseline {
   const Program& program;
   const SurfaceRun& run;
   QualityFigures whole;
+  double passSpacing;  // mm
   std::optional<std::tuple<Vec3, Vec3, QualityFigures>> region;
 
   const QualityFigures& regionIn(const Vec3& lower, const Vec3& upper, LineRange lines) {
@@ -197,10 +221,6 @@ std::string describe(const Candidate& c, double tube) {
                      c.share < 1 ? fmt::format(", at {:.0f} %", 100 * c.share) : "");
 }
 
-}  // namespace
-
-namespace {
-
 // The candidates tried, their outcomes, and the choice among those kept.
 class ClosedLoop {
  public:
@@ -215,8 +235,14 @@ class ClosedLoop {
     // Every candidate is measured in one box, so that their figures compare: the one asked
     // for, else the first candidate's (where the paper's steps re-fit the path).
     if (!candidate.box) candidate.box = judgedBox_;
-    // Gentle ramps where the figures are taken; elsewhere quicker ones cost less time.
+    // Gentle ramps where the figures are taken, and on the pass beyond each side of the box, so
+    // that the passes measured there have neighbours ramped as they are; elsewhere quicker ones
+    // cost less time.
     candidate.options.rampBox = candidate.box;
+    if (candidate.box) {
+      const Vec3 reach = Vec3(1, 1, 0) * kRampBoxReach * baseline_.passSpacing;
+      candidate.options.rampBox = std::make_pair(candidate.box->first - reach, candidate.box->second + reach);
+    }
     candidate.options.feedScale = request_.options.feedScale * c.share;
     candidate.options.crossPass = c.rule;
     candidate.options.lineFeedCeiling = c.ceilings;
@@ -352,7 +378,7 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // (rounded_corners.h, taut_path.h), each with its speed peaks trimmed. Each distinct
   // candidate is simulated and judged; the objective chooses among those no worse than the
   // program. When none is, the first one's figures and reason are reported.
-  Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), std::nullopt};
+  Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), passSpacing(before), std::nullopt};
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
   std::optional<double> deviationTarget;  // um: what the program's own run deviates by (p99)

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "isurface/analysis/quantities.h"
+#include "isurface/base/geometry.h"
 
 namespace isurface {
 
@@ -38,8 +39,7 @@ class MovingMean {
 };
 
 bool inside(const Trajectory& s, std::size_t i, std::uint32_t line, const FigureWindow& w) {
-  return w.lines.contains(line) && s.x[i] >= w.lower.x() && s.x[i] <= w.upper.x() && s.y[i] >= w.lower.y() &&
-         s.y[i] <= w.upper.y();
+  return w.lines.contains(line) && insideBoxInPlan(s.x[i], s.y[i], w.lower, w.upper);
 }
 
 }  // namespace

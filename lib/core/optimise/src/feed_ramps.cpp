@@ -104,12 +104,12 @@ std::vector<double> rampBreaks(double length, double feed, double atStart, doubl
   return at;
 }
 
-// Whether the segment from `a` to `b`, seen from above, meets the box (its XY; clipped to it
-// as Liang and Barsky do).
+// Whether the segment from `a` to `b`, seen from above, meets the box (its XY, sides included;
+// clipped to it as Liang and Barsky do).
 bool reachesInto(const Vec3& a, const Vec3& b, const std::pair<Vec3, Vec3>& box) {
   double enter = 0, leave = 1;
   for (int axis = 0; axis < 2; ++axis) {
-    const double d = b[axis] - a[axis], lower = box.first[axis], upper = box.second[axis];
+    const double d = b[axis] - a[axis], lower = box.first[axis] - kOnBoxSide, upper = box.second[axis] + kOnBoxSide;
     if (std::fabs(d) < kLengthEpsilon) {
       if (a[axis] < lower || a[axis] > upper) return false;
       continue;

@@ -40,4 +40,10 @@ double distanceToSegment(const Vec3& p, const Vec3& a, const Vec3& b);
 // smaller components), so that work done one canonical way is the same for both.
 bool runsBackwards(const Vec3& from, const Vec3& to);
 
+// Whether (x, y) lies in the box seen from above, its sides included (kOnBoxSide).
+inline bool insideBoxInPlan(double x, double y, const Vec3& lower, const Vec3& upper) {
+  return x >= lower.x() - kOnBoxSide && x <= upper.x() + kOnBoxSide && y >= lower.y() - kOnBoxSide &&
+         y <= upper.y() + kOnBoxSide;
+}
+
 }  // namespace isurface

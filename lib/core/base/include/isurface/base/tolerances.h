@@ -35,4 +35,10 @@ constexpr double kRoundingSlack = 1e-9;
 // 1e-4 away, while reading it into a double errs by about 1e-16 of its size.
 constexpr double kWholeNumberTolerance = 1e-6;
 
+// A point this close to a box's side (mm) lies on it: a region's extent is taken from samples
+// interpolated between a program's points, and the pass on its edge, at the written coordinate,
+// may lie outside it by the rounding of the last digits (4e-14 mm seen). Far below the 0.1 um
+// a program writes.
+constexpr double kOnBoxSide = 1e-6;
+
 }  // namespace isurface
