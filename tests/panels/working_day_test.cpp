@@ -455,3 +455,32 @@ TEST(workingDay, OptimiseStartsAtTheSelectedLinesPass) {
   ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
   EXPECT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), lines) << "the range chosen before stays";
 }
+
+// Lines typed the wrong way round are said to be so, and Optimise starts nothing: a click that
+// did nothing would leave the user guessing.
+TEST(workingDay, OptimiseSaysWhyLinesTypedBackwardsCannotRun) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'P');
+  ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
+  EXPECT_EQ(described(*ui)["optimise_range_problem"].get<std::string>(), "");
+  typeInto(*ui, "optimise.first", "400");
+  typeInto(*ui, "optimise.last", "40");
+  ASSERT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), (std::vector<int>{400, 40}));
+  EXPECT_NE(described(*ui)["optimise_range_problem"].get<std::string>().find("before the first"), std::string::npos);
+  clickControl(*ui, "optimise.run");
+  waitForJobs(*ui);
+  const nlohmann::json state = described(*ui);
+  EXPECT_TRUE(state["windows"]["optimise"].get<bool>()) << "nothing started: the dialog stays open";
+  EXPECT_TRUE(state["optimised"].is_null());
+  typeInto(*ui, "optimise.first", "20");
+  EXPECT_EQ(described(*ui)["optimise_range_problem"].get<std::string>(), "");
+}
+
+// Esc closes the Help window, as its own list of keys says.
+TEST(workingDay, EscapeClosesHelp) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'H');
+  ASSERT_TRUE(described(*ui)["windows"]["help"].get<bool>());
+  tap(*ui, ImGuiKey_Escape);
+  EXPECT_FALSE(described(*ui)["windows"]["help"].get<bool>());
+}

@@ -134,6 +134,7 @@ std::string Inspector::describe() const {
                               {"windows", windows},
                               {"last_saved", s.lastSaved},
                               {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
+                              {"optimise_range_problem", s.optimiseDialogOpen ? optimiseRangeProblem(s.optimiseFirst, s.optimiseLast) : std::string()},
                               {"optimise_notice", s.optimiseDialogOpen ? s.optimiseNotice : std::string()},
                               {"status", s.status},
                               {"camera", camera},

@@ -303,6 +303,13 @@ void drawViewFrame(unsigned int texture, ImVec2 size);
 // Whether Esc, pressed in a dialog while no field is being typed in, closes it (Esc in a field
 // first lets the field go, as ImGui does).
 inline bool escapeCloses(Inspector::State& s) { return !ImGui::GetIO().WantTextInput && s.takeEscape(); }
+
+// Why the Optimise dialog's lines cannot be optimised as typed, or nothing when they can.
+inline std::string optimiseRangeProblem(int first, int last) {
+  if (first < 1) return "the first line is line 1 or after";
+  if (last < first) return "the last line is before the first: no lines to optimise";
+  return {};
+}
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
 Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.

@@ -53,6 +53,8 @@ void drawHelpWindow(Inspector::State& s) {
       }
       ImGui::EndTable();
     }
+    // Esc closes it as it closes the other windows, when it has the keyboard.
+    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && escapeCloses(s)) s.helpOpen = false;
   }
   ImGui::End();
 }

@@ -182,7 +182,9 @@ void drawOptimiseDialog(Inspector::State& s) {
                      "points drawn taut, feeds capped); each simulated, and kept only when no figure is worse by more "
                      "than 2 % and the time or a figure is better by 2 % or more. The G1 moves of the lines:");
   ImGui::InputInt("first line", &s.optimiseFirst);
+  noteControl(s, "optimise.first");
   ImGui::InputInt("last line", &s.optimiseLast);
+  noteControl(s, "optimise.last");
   // The box only stands for the region while the lines are still its own.
   const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
                      s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
@@ -221,6 +223,7 @@ void drawOptimiseDialog(Inspector::State& s) {
       s.optimiseFirst = static_cast<int>(pass->first);
       s.optimiseLast = static_cast<int>(pass->last);
       s.optimiseNotice.clear();
+      s.status = fmt::format("the pass of line {}: lines {}-{}", *s.selection.current().line, pass->first, pass->last);
     } else {
       s.status = s.optimiseNotice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
     }
@@ -237,7 +240,14 @@ void drawOptimiseDialog(Inspector::State& s) {
   s.optimiseObjective = std::clamp(s.optimiseObjective, 0, 2);
   ImGui::SameLine();
   ImGui::TextDisabled("%s", kObjectiveHelp[s.optimiseObjective]);
-  if (ImGui::Button("Optimise") && s.optimiseFirst >= 1 && s.optimiseLast >= s.optimiseFirst) {
+  // Said where the user looks, and the button greyed: a click that did nothing would say nothing.
+  const std::string rangeProblem = optimiseRangeProblem(s.optimiseFirst, s.optimiseLast);
+  if (!rangeProblem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", rangeProblem.c_str());
+  ImGui::BeginDisabled(!rangeProblem.empty());
+  const bool run = ImGui::Button("Optimise");
+  noteControl(s, "optimise.run");
+  ImGui::EndDisabled();
+  if (run && rangeProblem.empty()) {
     std::optional<std::pair<Vec3, Vec3>> measured;
     if (boxed) measured = std::make_pair(s.optimiseBox->lower, s.optimiseBox->upper);
     s.startOptimise(static_cast<std::uint32_t>(s.optimiseFirst), static_cast<std::uint32_t>(s.optimiseLast), measured);
@@ -279,7 +289,9 @@ void beginBesidePanel(const char* name, const std::string& summary, float x, flo
   const float width = ImGui::GetContentRegionAvail().x;
   const std::vector<std::string> lines = wrappedAtSpaces(summary, width - ImGui::GetStyle().ScrollbarSize);
   const float needed = float(lines.size()) * ImGui::GetTextLineHeightWithSpacing();
-  ImGui::BeginChild("summary", ImVec2(width, std::min(needed, kSummaryShare * h)));
+  // A child of its own for each summary: a new result opens at its top, where its verdict is,
+  // not where the last one was scrolled to.
+  ImGui::BeginChild(ImGui::GetID(summary.c_str()), ImVec2(width, std::min(needed, kSummaryShare * h)));
   for (const std::string& line : lines) ImGui::TextUnformatted(line.c_str());
   ImGui::EndChild();
 }

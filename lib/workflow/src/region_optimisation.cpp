@@ -449,10 +449,11 @@ const char* objectiveName(Objective objective) {
 std::string regionFigures(const RegionOptimisation& r) {
   const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
   return fmt::format(
-      "lines {}-{}: {} passes re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
+      "lines {}-{}: {} re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
       "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
       "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; programmed path moved {:.4f} mm at most ({})",
-      r.lines.first, r.lines.last, r.result.passes.size(), r.timeBefore, r.timeAfter, a.speedFluctuation,
+      r.lines.first, r.lines.last,
+      r.result.passes.size() == 1 ? std::string("1 pass") : fmt::format("{} passes", r.result.passes.size()), r.timeBefore, r.timeAfter, a.speedFluctuation,
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
       b.jerkP99,
       a.hasDeviation && b.hasDeviation
