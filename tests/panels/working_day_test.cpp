@@ -10,10 +10,12 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "cam_style_transition.h"
 #include "image_compare.h"
 #include "workflow_fixtures.h"
 #include "isurface/machine/machine.h"
 #include "isurface/panels/headless_ui.h"
+#include "scratch_files.h"
 #include "test_support.h"
 #include "ui_driving.h"
 
@@ -483,4 +485,36 @@ TEST(workingDay, EscapeClosesHelp) {
   ASSERT_TRUE(described(*ui)["windows"]["help"].get<bool>());
   tap(*ui, ImGuiKey_Escape);
   EXPECT_FALSE(described(*ui)["windows"]["help"].get<bool>());
+}
+
+// A kept program that was not saved lives only in the window: Close asks before letting it go,
+// and once it is saved Close closes.
+TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
+  // The CAM-style program's fillet (its worst region's lines), which the closed loop keeps.
+  auto ui = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
+  ui->inspector().open(test::writeScratch("cam-style-kept.nc", isurface::testing::camStyleTransitionProgram()));
+  waitForJobs(*ui);
+  ui->inspector().optimise(10, 617);
+  waitForJobs(*ui);
+  ASSERT_TRUE(described(*ui)["optimised"]["kept"].get<bool>()) << ui->inspector().statusText();
+  clickControl(*ui, "optimised.close");
+  ASSERT_FALSE(described(*ui)["optimised"].is_null()) << "closed without asking";
+  EXPECT_TRUE(described(*ui)["optimised"]["discard_question"].get<bool>());
+  clickControl(*ui, "discard.no");
+  ASSERT_FALSE(described(*ui)["optimised"].is_null());
+  EXPECT_FALSE(described(*ui)["optimised"]["discard_question"].get<bool>());
+  clickControl(*ui, "optimised.close");
+  clickControl(*ui, "discard.yes");
+  EXPECT_TRUE(described(*ui)["optimised"].is_null());
+
+  ui->inspector().optimise(10, 617);
+  waitForJobs(*ui);
+  const std::filesystem::path path = test::scratchDir() / "kept-before-closing.nc";
+  std::filesystem::remove(path);
+  typeInto(*ui, "optimised.path", path.string());
+  clickControl(*ui, "optimised.save");
+  ASSERT_TRUE(std::filesystem::exists(path)) << ui->inspector().statusText();
+  EXPECT_TRUE(described(*ui)["optimised"]["saved"].get<bool>());
+  clickControl(*ui, "optimised.close");
+  EXPECT_TRUE(described(*ui)["optimised"].is_null()) << "saved: nothing to ask";
 }

@@ -101,7 +101,9 @@ std::string Inspector::describe() const {
     optimised = {{"lines", {s.comparison->first, s.comparison->last}},
                  {"kept", s.comparison->kept},
                  {"summary", s.comparison->summary},
-                 {"superseded_by", s.comparison->supersededBy}};
+                 {"superseded_by", s.comparison->supersededBy},
+                 {"saved", s.comparison->saved},
+                 {"discard_question", s.comparison->discardQuestion}};
   const nlohmann::json out = {{"documents", documents},
                               {"optimised", optimised},
                               {"map", map},

@@ -92,6 +92,8 @@ struct Comparison {
   double timeBefore = 0, timeAfter = 0;     // s
   std::string summary;                      // the region's figures before and after
   bool kept = true;                         // false: worse than the old program, not to be saved
+  bool saved = false;                       // written to a file since it was made
+  bool discardQuestion = false;             // Close asked of a kept program not saved: sure?
   // The new run aligned to the old one pass by pass, and the speed difference (after - before)
   // on the old surface, shown in place of the new map on request.
   RunComparison difference;

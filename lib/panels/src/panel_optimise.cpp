@@ -315,6 +315,30 @@ bool endBesidePanel(Inspector::State& s, bool close) {
   return close;
 }
 
+namespace {
+
+// Whether the user, asked, lets the kept program go unsaved; Esc or "Keep it" keeps it open.
+bool askToDiscard(Inspector::State& s, Comparison& c) {
+  constexpr const char* kTitle = "Close without saving?";
+  if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
+  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return false;
+  ImGui::Text("The re-optimised program of lines %u-%u is kept but not saved.", c.first, c.last);
+  ImGui::TextUnformatted("Closed, it is gone (optimising again makes it anew).");
+  const bool discard = ImGui::Button("Close without saving");
+  noteControl(s, "discard.yes");
+  ImGui::SameLine();
+  const bool keep = ImGui::Button("Keep it");
+  noteControl(s, "discard.no");
+  if (discard || keep || s.takeEscape()) {
+    c.discardQuestion = false;
+    ImGui::CloseCurrentPopup();
+  }
+  ImGui::EndPopup();
+  return discard;
+}
+
+}  // namespace
+
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h) {
   Comparison& c = *s.comparison;
   beginBesidePanel("After re-optimisation",
@@ -327,11 +351,20 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
   if (c.kept) {
     ImGui::SetNextItemWidth(w * 0.5f);
     ImGui::InputText("##save", s.savePath, sizeof s.savePath);
+    noteControl(s, "optimised.path");
     ImGui::SameLine();
     if (ImGui::Button("Save program") && s.savePath[0]) s.save(s.savePath, c.text, "re-optimised program");
+    noteControl(s, "optimised.save");
     ImGui::SameLine();
   }  // else nothing to save: the summary ends with why the program stays as it is
-  const bool close = ImGui::Button("Close");
+  bool close = ImGui::Button("Close");
+  noteControl(s, "optimised.close");
+  // A kept program not saved is only in the window: closed, it would be lost without a word.
+  if (close && c.kept && !c.saved) {
+    c.discardQuestion = true;
+    close = false;
+  }
+  if (c.discardQuestion) close = askToDiscard(s, c);
   if (endBesidePanel(s, close)) s.comparison.reset();
 }
 

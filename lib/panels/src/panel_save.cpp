@@ -15,6 +15,7 @@ void writeNow(Inspector::State& s, const PendingSave& save) {
     writeFileAtomically(save.path, save.content);
     s.status = "saved " + save.what + " to " + save.path;
     s.lastSaved = save.path;
+    if (s.comparison && s.comparison->text == save.content) s.comparison->saved = true;
   } catch (const std::exception& e) {
     s.status = std::string("error: ") + e.what();
   }
