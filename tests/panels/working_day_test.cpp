@@ -509,12 +509,22 @@ TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
 
   ui->inspector().optimise(10, 617);
   waitForJobs(*ui);
+  // Optimising again would replace it: the dialog says so before Optimise is pressed.
+  tapLetter(*ui, 'P');
+  ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
+  EXPECT_NE(described(*ui)["optimise_replaces"].get<std::string>().find("lines 10-617 is kept but not saved"),
+            std::string::npos);
+  tap(*ui, ImGuiKey_Escape);
+  ASSERT_FALSE(described(*ui)["windows"]["optimise"].get<bool>());
   const std::filesystem::path path = test::scratchDir() / "kept-before-closing.nc";
   std::filesystem::remove(path);
   typeInto(*ui, "optimised.path", path.string());
   clickControl(*ui, "optimised.save");
   ASSERT_TRUE(std::filesystem::exists(path)) << ui->inspector().statusText();
   EXPECT_TRUE(described(*ui)["optimised"]["saved"].get<bool>());
+  tapLetter(*ui, 'P');
+  EXPECT_EQ(described(*ui)["optimise_replaces"].get<std::string>(), "") << "saved: nothing is lost";
+  tap(*ui, ImGuiKey_Escape);
   clickControl(*ui, "optimised.close");
   EXPECT_TRUE(described(*ui)["optimised"].is_null()) << "saved: nothing to ask";
 }

@@ -1,11 +1,15 @@
 #pragma once
 // Lengths, feeds and their derivatives as the window shows them: millimetres, or inches for a
 // program written in inches (or when the user says so). Everything is computed in mm and s.
+#include <cstddef>
 #include <string_view>
 
+#include "isurface/app_model/readable_value.h"
 #include "isurface/base/units.h"
 
 namespace isurface::panels {
+
+using app_model::readableValue;
 
 struct DisplayUnits {
   bool inch = false;
@@ -26,6 +30,9 @@ struct DisplayUnits {
     if (u == "mm/s^3") return jerkUnit();
     return mmUnit;
   }
+  // What the three curves of motion (feed, acceleration, jerk) are read to, in their display
+  // units: far below what a machine's figures are told apart by, far above differencing noise.
+  static double motionResolution(std::size_t curve) { return curve < 2 ? 0.01 : 1.0; }
   // Decimals that show a length to about a micrometre.
   int lengthDecimals() const { return inch ? 5 : 4; }
 };

@@ -138,6 +138,7 @@ std::string Inspector::describe() const {
                               {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
                               {"optimise_range_problem", s.optimiseDialogOpen ? optimiseRangeProblem(s.optimiseFirst, s.optimiseLast) : std::string()},
                               {"optimise_notice", s.optimiseDialogOpen ? s.optimiseNotice : std::string()},
+                              {"optimise_replaces", s.optimiseDialogOpen ? unsavedResultReplaced(s) : std::string()},
                               {"status", s.status},
                               {"camera", camera},
                               {"controls", controls}};

@@ -312,6 +312,8 @@ inline std::string optimiseRangeProblem(int first, int last) {
   if (last < first) return "the last line is before the first: no lines to optimise";
   return {};
 }
+// What the Optimise dialog says when a new result would replace a kept one not saved, or nothing.
+std::string unsavedResultReplaced(const Inspector::State& s);
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
 Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.

@@ -333,7 +333,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   }
   if (Document* doc = s.activeDocument(); doc && doc->scene) {
     ImGui::Separator();
-    ImGui::Text("range %.5g .. %.5g", doc->map.style.range.lo, doc->map.style.range.hi);
+    ImGui::Text("range %s .. %s", readableValue(doc->map.style.range.lo).c_str(), readableValue(doc->map.style.range.hi).c_str());
     ImGui::Text("%zu passes, %s", doc->map.passes.passes.size(), pathPatternName(doc->map.passes.pattern));
     bool visibility = ImGui::Checkbox("surface", &doc->showSurface);
     ImGui::SameLine();

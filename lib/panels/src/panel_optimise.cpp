@@ -156,6 +156,13 @@ void startAtTheSelectedPass(Inspector::State& s) {
   }
 }
 
+std::string unsavedResultReplaced(const Inspector::State& s) {
+  if (!s.comparison || !s.comparison->kept || s.comparison->saved) return "";
+  return fmt::format("The re-optimised program of lines {}-{} is kept but not saved: optimising again replaces it "
+                     "(Save program, beside the map, keeps it).",
+                     s.comparison->first, s.comparison->last);
+}
+
 void drawOptimiseDialog(Inspector::State& s) {
   if (s.optimiseDialog) {
     startAtTheSelectedPass(s);
@@ -243,8 +250,11 @@ void drawOptimiseDialog(Inspector::State& s) {
   // Said where the user looks, and the button greyed: a click that did nothing would say nothing.
   const std::string rangeProblem = optimiseRangeProblem(s.optimiseFirst, s.optimiseLast);
   if (!rangeProblem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", rangeProblem.c_str());
+  // A kept program not saved lives only beside the map: said before a new result replaces it.
+  if (const std::string replaced = unsavedResultReplaced(s); !replaced.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", replaced.c_str());
   ImGui::BeginDisabled(!rangeProblem.empty());
-  const bool run = ImGui::Button("Optimise");
+  const bool run = ImGui::Button(unsavedResultReplaced(s).empty() ? "Optimise###run" : "Optimise, replacing it###run");
   noteControl(s, "optimise.run");
   ImGui::EndDisabled();
   if (run && rangeProblem.empty()) {

@@ -113,13 +113,18 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
     textOnBacking(draw, ImVec2(end.x - ImGui::CalcTextSize(label).x - 3, top), IM_COL32(150, 155, 165, 255), label);
   }
   draw->PopClipRect();
-  std::snprintf(label, sizeof label, "%s [%s]  %.5g .. %.5g", curve.label.c_str(), unit, lo, hi);
+  // Read to a millionth of what the plot spans: finer is the rounding of differencing.
+  const double largest = std::max(std::fabs(double(lo)), std::fabs(double(hi)));
+  const double resolution = std::isfinite(largest) ? 1e-6 * largest : 0.0;
+  std::snprintf(label, sizeof label, "%s [%s]  %s .. %s", curve.label.c_str(), unit, readableValue(lo, resolution).c_str(),
+                readableValue(hi, resolution).c_str());
   textOnBacking(draw, ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
   const app_model::Selection& sel = s.selection.current();
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
     draw->AddLine(ImVec2(px, origin.y), ImVec2(px, end.y), IM_COL32(255, 210, 40, 255), 1.5f);
-    std::snprintf(label, sizeof label, "%.5g at %.4f s", curve.values.value(*sel.sample) * scale, t.timeAt(*sel.sample));
+    std::snprintf(label, sizeof label, "%s at %.4f s", readableValue(curve.values.value(*sel.sample) * scale, resolution).c_str(),
+                  t.timeAt(*sel.sample));
     textOnBacking(draw, ImVec2(std::min(px + 4, end.x - 150), end.y - 16), IM_COL32(255, 210, 40, 255), label);
   }
   ImGui::SetCursorScreenPos(origin);

@@ -151,7 +151,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
         }
         for (int k = 0; k < 3; ++k) {
           ImGui::TableNextColumn();
-          ImGui::Text("%.5g", units.length(doc->curves[k].values.value(i)));
+          ImGui::TextUnformatted(readableValue(units.length(doc->curves[k].values.value(i)), units.motionResolution(k)).c_str());
         }
         if (feedback)
           for (const double v : {t.feedback(i).x(), t.feedback(i).y(), t.feedback(i).z()}) {

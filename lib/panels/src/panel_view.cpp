@@ -95,10 +95,11 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
   const DisplayUnits u = s.units();
   const char* unitOf[3] = {u.feedUnit(), u.accelerationUnit(), u.jerkUnit()};
   for (std::size_t c = 0; c < doc->curves.size() && c < 3; ++c)
-    ImGui::Text("%s %.4g %s", doc->curves[c].label.c_str(), u.length(doc->curves[c].values.value(k)), unitOf[c]);
+    ImGui::Text("%s %s %s", doc->curves[c].label.c_str(), readableValue(u.length(doc->curves[c].values.value(k)), u.motionResolution(c)).c_str(),
+                unitOf[c]);
   for (std::size_t c = 3; c < doc->curves.size(); ++c)
     if (doc->curves[c].label == s.settings.channel)
-      ImGui::Text("%s %.4g", doc->curves[c].label.c_str(), doc->curves[c].values.value(k));
+      ImGui::Text("%s %s", doc->curves[c].label.c_str(), readableValue(doc->curves[c].values.value(k)).c_str());
   ImGui::EndTooltip();
 }
 
