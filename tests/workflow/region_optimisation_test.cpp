@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <functional>
 #include <sstream>
 
 #include <fmt/format.h>
@@ -172,7 +173,7 @@ TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedA
   ASSERT_FALSE(r.candidates.empty());
   for (const RegionOptimisation::Outcome& c : r.candidates)
     EXPECT_EQ(c.plan.find("planned across passes"), std::string::npos) << c.plan;
-  EXPECT_EQ(r.plan, r.candidates.front().plan);  // none kept: the first is reported
+  EXPECT_EQ(r.candidates.front().plan, "each pass its own interval feeds");
 }
 
 namespace {
@@ -322,4 +323,63 @@ TEST(regionOptimisation, EasedRampsAreTriedAsGentleAsTheTimeAllows) {
     EXPECT_LT(ramps, gentlestListedInTime);
     EXPECT_GT(ramps, *next);
   }
+}
+
+namespace {
+
+// Zig-zag passes along X, one at each of `ys`, F2500, N numbers: over the CAM-style profile
+// (plane, fillet by a chord tolerance, slope) where `bent` says so, else a plane of one move.
+std::string rasterAt(const std::vector<double>& ys, const std::function<bool(double)>& bent, std::string& text, int& n) {
+  isurface::testing::CamStyleTransition part;
+  for (std::size_t p = 0; p < ys.size(); ++p) {
+    auto profile = bent(ys[p]) ? isurface::testing::camProfile(part, ys[p])
+                               : std::vector<std::pair<double, double>>{{0.0, 0.0}, {part.length, 0.0}};
+    if (p % 2) std::reverse(profile.begin(), profile.end());
+    const auto [x0, z0] = profile.front();
+    if (p == 0) text += fmt::format("N{} G0 Z30.\nN{} G0 X{:.4f} Y{:.4f}\nN{} G1 Z{:.4f} F800.\n", n, n + 1, x0, ys[p], n + 2, z0), n += 3;
+    else text += fmt::format("N{} G1 X{:.4f} Y{:.4f} Z{:.4f}\n", n++, x0, ys[p], z0);
+    for (std::size_t k = 1; k < profile.size(); ++k)
+      text += fmt::format("N{} G1 X{:.4f} Z{:.4f}{}\n", n++, profile[k].first, profile[k].second, k == 1 ? " F2500." : "");
+  }
+  return text;
+}
+
+}  // namespace
+
+// A pass left as it was beside one re-planned runs at its old speeds beside the new ones: the
+// worst region takes every pass joined to it on the surface, one beside the next, and no pass of
+// a raster elsewhere (passes further apart than the gap limit are not joined).
+TEST(regionOptimisation, TheWorstRegionTakesEveryPassJoinedToItAndNoOther) {
+  std::string text = "G21 G90 G17 G94\n";
+  int n = 1;
+  std::vector<double> near, far;
+  for (int p = 0; p < 61; ++p) near.push_back(0.5 * p);
+  for (int p = 0; p < 16; ++p) far.push_back(40.0 + 0.5 * p);
+  // The first raster's fillet only on passes 20 to 30: its defects lie there.
+  rasterAt(near, [](double y) { return y >= 10 && y <= 15; }, text, n);
+  const int firstOfFar = n;
+  rasterAt(far, [](double) { return true; }, text, n);
+  text += fmt::format("N{} G0 Z30.\nN{} M30\n", n, n + 1);
+  const InterpretResult read = interpretGcode(text, "two-rasters.nc");
+  ASSERT_TRUE(read.ok()) << read.errors.front().str();
+  const SurfaceRun before =
+      surfaceRun(std::make_shared<const Trajectory>(simulateRun(read.program, defaultMachine())), &read.program);
+  const ChosenRegion worst = worstRegion(before, "two-rasters.nc");
+  // Its box is the defect's, a part of the first raster's passes.
+  const bool inFar = worst.lower.y() >= 39;
+  ASSERT_FALSE(inFar);
+  EXPECT_LT(worst.upper.y() - worst.lower.y(), 20.0);
+  // Its lines are every pass of that raster: from the plunge's pass to the last of its 61.
+  std::uint32_t first = ~0u, last = 0;
+  for (const Move& m : read.program.moves)
+    if (m.kind == MoveKind::Linear && (m.end.y() >= 39) == inFar && m.end.z() < 29)
+      first = std::min(first, m.line), last = std::max(last, m.line);
+  EXPECT_LE(worst.lines.first, first + 2) << "from line " << first;
+  EXPECT_GE(worst.lines.last, last - 1) << "to line " << last;
+  // And no feed move of the other raster.
+  for (const Move& m : read.program.moves)
+    if (m.kind == MoveKind::Linear && (m.end.y() >= 39) != inFar) {
+      EXPECT_FALSE(m.line >= worst.lines.first && m.line <= worst.lines.last) << "line " << m.line;
+    }
+  EXPECT_GT(firstOfFar, 100);
 }

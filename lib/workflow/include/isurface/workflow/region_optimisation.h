@@ -28,8 +28,10 @@ struct SurfaceRun {
 SurfaceRun surfaceRun(std::shared_ptr<const Trajectory> samples, const Program* program,
                       double gapLimit = MeshOptions{}.gapLimit);
 
-// The worst region the quality prediction finds inside the passes, widened to whole passes (as
-// `optimize --auto` takes it), with the box of the defect; InputError when there is none.
+// The worst region the quality prediction finds inside the passes (as `optimize --auto` takes
+// it), with the box of the defect, where it is measured: on a raster, widened to every pass
+// joined to its passes on the surface one beside the next; else to whole passes and one more on
+// each side. InputError when there is none.
 struct ChosenRegion {
   LineRange lines;
   Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // mm, where the figures are measured
@@ -38,7 +40,7 @@ struct ChosenRegion {
 ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source);
 
 // The region a box covers (XY, mm): the lines of the surface's samples inside it, widened to
-// whole passes as worstRegion does, measured inside the box; InputError when it holds none.
+// whole passes and one more on each side, measured inside the box; InputError when it holds none.
 ChosenRegion regionInBox(const SurfaceRun& run, const Vec3& lower, const Vec3& upper, const std::string& source);
 
 // Every pass of the program (`optimize --all`): the first to the last line of the surface's

@@ -60,6 +60,12 @@ struct OptimizeOptions {
   // what evens the speed where it is judged, and cost time everywhere; a quick one still spares
   // the servo the NC's full braking into a bend. None: rampAcceleration everywhere.
   std::optional<std::pair<Vec3, Vec3>> rampBox;
+  // XY, mm: where a pass crosses this box's stretch of it (the box's extent along the pass, a
+  // margin added) is what is re-planned, from its first move that reaches into the stretch to its
+  // last; its moves before and after stay as they were. A pass over a part with two bends,
+  // re-planned from end to end for a defect at one, changes its speed at the other too, where
+  // its neighbours cut the other way slowed alike before. None: whole passes.
+  std::optional<std::pair<Vec3, Vec3>> planBox;
   CrossPassRule crossPass = CrossPassRule::None;
   PathShape shape = PathShape::Fitted;  // how each pass's path is drawn anew
   // Every interval keeps the program's feed, so that the NC's planner alone sets the speed
@@ -94,6 +100,9 @@ struct OptimizeResult {
 // range holds no run of plain G1 moves to optimise.
 OptimizeResult optimizeRegion(const std::string& text, const Program& program, LineRange lines,
                               const Machine& machine, const OptimizeOptions& options = {});
+
+// The first and last source line of a pass's samples ({UINT32_MAX, 0} when it has none).
+LineRange linesOfPass(const Trajectory& samples, const Pass& pass);
 
 // A region's lines widened to whole passes and one more pass on each side: optimising only
 // part of a pass, or stopping at the region's last pass, would leave a seam (a pass next to an
