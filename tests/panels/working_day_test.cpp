@@ -149,6 +149,9 @@ TEST(workingDay, ExportWritesTheViewFiguresAndSamples) {
   clickControl(*ui, "export.csv");
   typeInto(*ui, "export.path", csv.string());
   clickControl(*ui, "export.write");
+  // The samples are written with their feedback, loaded first in the background (slower than a
+  // few frames under the sanitizers): the user waits for it, as here.
+  waitForJobs(*ui);
   ASSERT_EQ(described(*ui)["last_saved"], csv.string()) << ui->inspector().statusText();
   std::ifstream in(csv);
   std::string header, row;
