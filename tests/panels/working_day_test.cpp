@@ -442,45 +442,6 @@ TEST(workingDay, DraggingTurnsTheCameraByTheTrackballsAngle) {
   EXPECT_NEAR(turned, 200.0 * dx / width, 4.0);
 }
 
-// Optimise opened with a line selected starts at that line's pass; a range chosen stays.
-TEST(workingDay, OptimiseStartsAtTheSelectedLinesPass) {
-  auto ui = openedSample();
-  ASSERT_TRUE(ui->inspector().selectLine(2000));
-  tapLetter(*ui, 'P');
-  nlohmann::json state = described(*ui);
-  ASSERT_TRUE(state["windows"]["optimise"].get<bool>());
-  const auto lines = state["optimise_lines"].get<std::vector<int>>();
-  EXPECT_LE(lines[0], 2000);
-  EXPECT_GE(lines[1], 2000);
-  EXPECT_GT(lines[1], lines[0]) << "a whole pass, not one line";
-  tap(*ui, ImGuiKey_Escape);
-  ASSERT_FALSE(described(*ui)["windows"]["optimise"].get<bool>());
-  ASSERT_TRUE(ui->inspector().selectLine(20));
-  tapLetter(*ui, 'P');
-  ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
-  EXPECT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), lines) << "the range chosen before stays";
-}
-
-// Lines typed the wrong way round are said to be so, and Optimise starts nothing: a click that
-// did nothing would leave the user guessing.
-TEST(workingDay, OptimiseSaysWhyLinesTypedBackwardsCannotRun) {
-  auto ui = openedSample();
-  tapLetter(*ui, 'P');
-  ASSERT_TRUE(described(*ui)["windows"]["optimise"].get<bool>());
-  EXPECT_EQ(described(*ui)["optimise_range_problem"].get<std::string>(), "");
-  typeInto(*ui, "optimise.first", "400");
-  typeInto(*ui, "optimise.last", "40");
-  ASSERT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), (std::vector<int>{400, 40}));
-  EXPECT_NE(described(*ui)["optimise_range_problem"].get<std::string>().find("before the first"), std::string::npos);
-  clickControl(*ui, "optimise.run");
-  waitForJobs(*ui);
-  const nlohmann::json state = described(*ui);
-  EXPECT_TRUE(state["windows"]["optimise"].get<bool>()) << "nothing started: the dialog stays open";
-  EXPECT_TRUE(state["optimised"].is_null());
-  typeInto(*ui, "optimise.first", "20");
-  EXPECT_EQ(described(*ui)["optimise_range_problem"].get<std::string>(), "");
-}
-
 // Esc closes the Help window, as its own list of keys says.
 TEST(workingDay, EscapeClosesHelp) {
   auto ui = openedSample();

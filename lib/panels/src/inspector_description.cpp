@@ -22,6 +22,11 @@ namespace {
 
 nlohmann::json pointJson(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
+// The region the Optimise dialog holds: its lines, its box (mm) and the surface samples inside.
+nlohmann::json optimiseBoxJson(const app_model::BoxSelection& b) {
+  return {{"lines", {b.lines.first, b.lines.last}}, {"lower", pointJson(b.lower)}, {"upper", pointJson(b.upper)}, {"samples", b.samples}};
+}
+
 nlohmann::json machineJson(const Machine& m) {
   nlohmann::json axes = nlohmann::json::array();
   for (const AxisLimits& a : m.axes)
@@ -138,6 +143,7 @@ std::string Inspector::describe() const {
                               {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
                               {"optimise_range_problem", s.optimiseDialogOpen ? optimiseRangeProblem(s.optimiseFirst, s.optimiseLast) : std::string()},
                               {"optimise_notice", s.optimiseDialogOpen ? s.optimiseNotice : std::string()},
+                              {"optimise_box", s.optimiseDialogOpen && s.optimiseBox ? optimiseBoxJson(*s.optimiseBox) : nlohmann::json()},
                               {"optimise_replaces", s.optimiseDialogOpen ? unsavedResultReplaced(s) : std::string()},
                               {"status", s.status},
                               {"camera", camera},

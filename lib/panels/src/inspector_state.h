@@ -166,6 +166,7 @@ struct Inspector::State {
   // while the dialog is open, and the region's figures are taken inside it.
   std::optional<app_model::BoxSelection> optimiseBox;
   app_model::ScreenRectangle optimiseBoxOnView;
+  std::string optimiseProgram;  // the program whose lines and box the dialog holds
   char savePath[1024] = "";
   // The path suggested for the last result and its program: a path typed over the suggestion
   // stays for the next result of the same program.
@@ -314,6 +315,9 @@ inline std::string optimiseRangeProblem(int first, int last) {
 }
 // What the Optimise dialog says when a new result would replace a kept one not saved, or nothing.
 std::string unsavedResultReplaced(const Inspector::State& s);
+// The Optimise dialog's lines and box belong to one program: another program active, they are
+// forgotten (a range of its own lines would mean other moves).
+void forgetTheRegionOfAnotherProgram(Inspector::State& s);
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
 Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.

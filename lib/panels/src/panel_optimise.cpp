@@ -163,15 +163,27 @@ std::string unsavedResultReplaced(const Inspector::State& s) {
                      s.comparison->first, s.comparison->last);
 }
 
+void forgetTheRegionOfAnotherProgram(Inspector::State& s) {
+  const Document* doc = s.activeDocument();
+  const std::string program = doc ? doc->programPath : std::string();
+  if (program == s.optimiseProgram) return;
+  s.optimiseProgram = program;
+  s.optimiseBox.reset();
+  s.optimiseFirst = s.optimiseLast = 1;
+}
+
 void drawOptimiseDialog(Inspector::State& s) {
   if (s.optimiseDialog) {
+    forgetTheRegionOfAnotherProgram(s);
     startAtTheSelectedPass(s);
     ImGui::OpenPopup("Optimise region");
   }
   s.optimiseDialog = false;
   s.optimiseDialogOpen = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
   if (!s.optimiseDialogOpen) {
-    s.optimiseBox.reset();  // a box chosen for a dialog that was closed
+    // The box stays with its lines for the next opening; where it was dragged on the screen
+    // does not, as the camera may move meanwhile.
+    s.optimiseBoxOnView = {};
     s.optimiseNotice.clear();
     return;
   }
@@ -203,12 +215,16 @@ void drawOptimiseDialog(Inspector::State& s) {
   } else {
     ImGui::TextWrapped("%s", "No box: the figures are taken where the first plan re-fits the path");
   }
-  if (ImGui::Button("Worst predicted region") && doc && doc->samples && doc->map.mesh) {
+  const bool worst = ImGui::Button("Worst predicted region");
+  noteControl(s, "optimise.worst");
+  if (worst && doc && doc->samples && doc->map.mesh) {
     // The regions are judged on the predicted deviation too, as `optimize --auto` judges them.
     if (!s.loadFeedbackFirst([&s] { chooseWorstRegion(s); })) chooseWorstRegion(s);
   }
   ImGui::SameLine();
-  if (ImGui::Button("Whole program") && doc && doc->samples && doc->map.mesh) {
+  const bool whole = ImGui::Button("Whole program");
+  noteControl(s, "optimise.whole");
+  if (whole && doc && doc->samples && doc->map.mesh) {
     try {
       // As `optimize --all`: every pass, the figures taken over all of them.
       const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};

@@ -24,6 +24,7 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
     s.status = "no cutting sample of the surface inside the box";
     return;
   }
+  forgetTheRegionOfAnotherProgram(s);
   s.optimiseBox = *chosen;
   s.optimiseBoxOnView = rectangle;
   s.optimiseFirst = static_cast<int>(chosen->lines.first);
