@@ -492,3 +492,28 @@ TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
   clickControl(*ui, "optimised.close");
   EXPECT_TRUE(described(*ui)["optimised"].is_null()) << "saved: nothing to ask";
 }
+
+// A status wider than the window (here a long path that does not open) is cut with "..." so the
+// bar keeps its end on screen; the whole text stays for the pointer's tooltip. A short one is
+// shown whole.
+TEST(workingDay, AStatusWiderThanTheWindowIsCutAtItsEnd) {
+  panels::HeadlessUi ui(640, 480, app_model::Settings{});
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  nlohmann::json state = described(ui);
+  ASSERT_LT(state["status"].get<std::string>().size(), 60u) << state["status"];
+  EXPECT_EQ(state["status_shown"], state["status"]);
+
+  const std::string missing = "/tmp/" + std::string(200, 'a') + "-µm/no-such-program.nc";
+  ui.inspector().open(missing);
+  waitForJobs(ui);
+  settle(ui);
+  state = described(ui);
+  const std::string status = state["status"].get<std::string>(), shown = state["status_shown"].get<std::string>();
+  ASSERT_NE(status.find("no-such-program.nc"), std::string::npos) << status;
+  ASSERT_GT(shown.size(), 3u);
+  EXPECT_EQ(shown.substr(shown.size() - 3), "...");
+  EXPECT_EQ(status.compare(0, shown.size() - 3, shown, 0, shown.size() - 3), 0) << shown << " | " << status;
+  EXPECT_LT(shown.size(), 120u) << "640 pixels hold about 90 characters";
+  EXPECT_GT(shown.size(), 40u);
+}

@@ -146,6 +146,7 @@ std::string Inspector::describe() const {
                               {"optimise_box", s.optimiseDialogOpen && s.optimiseBox ? optimiseBoxJson(*s.optimiseBox) : nlohmann::json()},
                               {"optimise_replaces", s.optimiseDialogOpen ? unsavedResultReplaced(s) : std::string()},
                               {"status", s.status},
+                              {"status_shown", s.statusShown},
                               {"camera", camera},
                               {"controls", controls}};
   return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);

@@ -176,6 +176,7 @@ struct Inspector::State {
   // scripts that drive the window.
   std::map<std::string, std::array<float, 4>> controls;
   std::string lastSaved;  // the file the window wrote last
+  std::string statusShown;  // the status as the bar shows it: cut with "..." when too wide
   // Measuring: the next two picks on the surface are the ends of a distance (mm).
   bool measuring = false;
   std::optional<Vec3> measureA, measureB;

@@ -28,6 +28,21 @@ bool shortcut(int key, bool ctrl = false) {
          ImGui::IsKeyPressed(key, false);
 }
 
+// The text as it fits in `width` pixels: whole, or its beginning and "...". Cut between UTF-8
+// characters, never inside one.
+std::string fittedToWidth(const std::string& text, float width) {
+  if (ImGui::CalcTextSize(text.c_str()).x <= width) return text;
+  const float room = width - ImGui::CalcTextSize("...").x;
+  std::size_t lo = 0, hi = text.size();  // the longest beginning that fits: lo fits, beyond hi does not
+  while (lo < hi) {
+    const std::size_t mid = (lo + hi + 1) / 2;
+    if (ImGui::CalcTextSize(text.data(), text.data() + mid).x <= room) lo = mid;
+    else hi = mid - 1;
+  }
+  while (lo > 0 && (static_cast<unsigned char>(text[lo]) & 0xC0) == 0x80) --lo;
+  return text.substr(0, lo) + "...";
+}
+
 bool toolButton(const char* label, const char* tip) {
   const bool pressed = ImGui::Button(label);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
@@ -361,7 +376,16 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
     if (cancel) s.job.cancel();
     ImGui::SameLine();
   }
-  ImGui::TextUnformatted(s.status.c_str());
+  // A status wider than the bar is cut at its end, and shown whole under the pointer.
+  s.statusShown = fittedToWidth(s.status, ImGui::GetContentRegionAvail().x);
+  ImGui::TextUnformatted(s.statusShown.c_str());
+  if (s.statusShown != s.status && ImGui::IsItemHovered()) {
+    ImGui::BeginTooltip();
+    ImGui::PushTextWrapPos(std::min(width * 0.8f, ImGui::GetFontSize() * 50));
+    ImGui::TextUnformatted(s.status.c_str());
+    ImGui::PopTextWrapPos();
+    ImGui::EndTooltip();
+  }
   ImGui::End();
 }
 
