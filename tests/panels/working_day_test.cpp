@@ -225,6 +225,33 @@ TEST(workingDay, TheMainViewIsFittedAgainWhenAMapStandsBesideIt) {
   EXPECT_GT(std::max(across, down), 0.7f) << across << " " << down;
 }
 
+// With the re-optimised map beside it in a small window, the main view is narrow: the picked
+// sample's read-out is laid out in more lines rather than running over the map beside it.
+TEST(workingDay, TheReadOutStaysInsideANarrowView) {
+  panels::HeadlessUi ui(1024, 640, app_model::Settings{});
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  ASSERT_TRUE(ui.inspector().selectLine(200));
+  settle(ui);
+  const auto wide = described(ui)["controls"];
+  ASSERT_TRUE(wide.contains("view.readout"));
+  const float wideHeight = wide["view.readout"][3].get<float>() - wide["view.readout"][1].get<float>();
+  ui.inspector().optimise(105, 400);
+  waitForJobs(ui);
+  settle(ui);
+  ASSERT_NE(ui.inspector().optimisedDifference(), nullptr) << ui.inspector().statusText();
+  const nlohmann::json controls = described(ui)["controls"];
+  ASSERT_TRUE(controls.contains("view.readout"));
+  const auto view = controls["view"].get<std::array<float, 4>>();
+  const auto readout = controls["view.readout"].get<std::array<float, 4>>();
+  EXPECT_LT(view[2] - view[0], wide["view"][2].get<float>() - wide["view"][0].get<float>()) << "the map beside it";
+  EXPECT_GE(readout[0], view[0]);
+  EXPECT_LE(readout[2], view[0] + 0.84f * (view[2] - view[0])) << "the read-out runs over the colour legend";
+  EXPECT_GE(readout[1], view[1]);
+  EXPECT_LE(readout[3], view[3]);
+  EXPECT_GT(readout[3] - readout[1], wideHeight) << "more lines where the view is narrower";
+}
+
 TEST(workingDay, TheFeedbackSurfaceInTurnWithTheCommandedOne) {
   panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
   ui.inspector().open({test::sourcePath("samples/transition-surface.nc"), test::transitionDump()});

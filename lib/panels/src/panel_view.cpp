@@ -5,6 +5,10 @@
 
 #include <cmath>
 #include <cstdio>
+#include <string>
+#include <vector>
+
+#include <fmt/format.h>
 
 #include "inspector_state.h"
 #include "isurface/analysis/locate.h"
@@ -13,6 +17,9 @@
 namespace isurface::panels {
 
 namespace {
+
+// The scale bar's right end (a share of the view's width) and its foot (pixels above the view's).
+constexpr float kScaleBarRight = 0.82f, kScaleBarFoot = 14;
 
 // The lines of the surface's samples inside a rectangle dragged over the view (pixels from its
 // top-left corner) go into the Optimise dialog, which opens.
@@ -30,6 +37,62 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
   s.optimiseFirst = static_cast<int>(chosen->lines.first);
   s.optimiseLast = static_cast<int>(chosen->lines.last);
   s.optimiseDialog = true;
+}
+
+// The picked sample's values, as the paper's window shows them (line, point, speed), right of
+// the orientation axes in the lower left corner: a line each for the sample, the point and the
+// feed where the view is wide enough, else more lines, never over the colour legend.
+void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  s.controls.erase("view.readout");
+  const app_model::Selection& sel = s.selection.current();
+  const Document* doc = s.activeDocument();
+  if (!doc || !doc->samples || !sel.sample || *sel.sample >= doc->samples->size() || doc->curves.size() < 3) return;
+  const std::size_t k = *sel.sample;
+  const Trajectory& t = *doc->samples;
+  // A marker on the selected sample straight away; the scene's own glow follows.
+  if (const auto at = s.view.project(t.commanded(k))) {
+    const ImVec2 centre(origin.x + static_cast<float>(at->first), origin.y + static_cast<float>(at->second));
+    draw->AddCircle(centre, 9, IM_COL32(255, 230, 60, 255), 24, 2.0f);
+    draw->AddCircle(centre, 13, IM_COL32(0, 0, 0, 160), 24, 1.5f);
+  }
+  const DisplayUnits u = s.units();
+  const int d = u.lengthDecimals();
+  const std::vector<std::vector<std::string>> groups = {
+      {sampleName(t, k), fmt::format("line {}", t.line[k]), fmt::format("t {:.3f} s", t.timeAt(k))},
+      {fmt::format("X {:.{}f}", u.length(t.x[k]), d), fmt::format("Y {:.{}f}", u.length(t.y[k]), d),
+       fmt::format("Z {:.{}f} {}", u.length(t.z[k]), d, u.lengthUnit())},
+      {fmt::format("v {:.1f} {}", u.length(doc->curves[0].values.value(k)), u.feedUnit()),
+       fmt::format("a {:.1f} {}", u.length(doc->curves[1].values.value(k)), u.accelerationUnit()),
+       fmt::format("j {:.0f} {}", u.length(doc->curves[2].values.value(k)), u.jerkUnit())}};
+  const float left = size.x * static_cast<float>(vis::kAxesCornerWidth) + 10;
+  const float room = size.x * static_cast<float>(vis::kLegendLeft) - left - 8;
+  // Each group on lines of its own, as many of its values on a line as fit.
+  std::string text;
+  for (const auto& group : groups) {
+    std::string line;
+    for (const std::string& field : group) {
+      const std::string longer = line.empty() ? field : line + "   " + field;
+      if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > room) {
+        text += (text.empty() ? "" : "\n") + line;
+        line = field;
+      } else {
+        line = longer;
+      }
+    }
+    text += (text.empty() ? "" : "\n") + line;
+  }
+  const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
+  // Its foot a line above the view's; above the scale bar's label where it reaches over the bar.
+  const bool overScaleBar = left + extent.x + 8 > size.x * kScaleBarRight - s.scaleBar.pixels;
+  const float foot = overScaleBar ? kScaleBarFoot + ImGui::GetTextLineHeight() + 10
+                                  : ImGui::GetTextLineHeightWithSpacing();
+  const ImVec2 at(origin.x + left, origin.y + size.y - foot - extent.y);
+  const ImVec2 lower(at.x - 4, at.y - 3), upper(at.x + extent.x + 4, at.y + extent.y + 3);
+  draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  draw->AddRectFilled(lower, upper, IM_COL32(0, 0, 0, 150), 3);
+  draw->AddText(at, IM_COL32(255, 230, 120, 255), text.c_str());
+  draw->PopClipRect();
+  s.controls["view.readout"] = {lower.x, lower.y, upper.x, upper.y};
 }
 
 // A pick while measuring: the first end, then the second; a third starts a new distance.
@@ -114,7 +177,7 @@ Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel
   const double power = std::pow(10.0, std::floor(std::log10(wanted)));
   const double length = power * (wanted / power < 2 ? 1 : wanted / power < 5 ? 2 : 5);
   const float pixels = static_cast<float>(length / u.length(mmPerPixel));
-  const ImVec2 right(origin.x + size.x * 0.82f, origin.y + size.y - 14);
+  const ImVec2 right(origin.x + size.x * kScaleBarRight, origin.y + size.y - kScaleBarFoot);
   const ImVec2 left(right.x - pixels, right.y);
   const ImU32 ink = IM_COL32(30, 30, 36, 255);
   draw->AddLine(left, right, ink, 2.0f);
@@ -156,33 +219,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   if (texture) {
     drawViewFrame(texture, size);
     ImDrawList* draw = ImGui::GetWindowDrawList();
-    // The picked sample's values, as the paper's window shows them (line, point, speed).
-    const app_model::Selection& sel = s.selection.current();
-    Document* doc = s.activeDocument();
-    if (doc && doc->samples && sel.sample && *sel.sample < doc->samples->size() && doc->curves.size() >= 3) {
-      const std::size_t k = *sel.sample;
-      const Trajectory& t = *doc->samples;
-      // A marker on the selected sample straight away; the scene's own glow follows.
-      if (const auto at = s.view.project(t.commanded(k))) {
-        const ImVec2 centre(origin.x + static_cast<float>(at->first), origin.y + static_cast<float>(at->second));
-        draw->AddCircle(centre, 9, IM_COL32(255, 230, 60, 255), 24, 2.0f);
-        draw->AddCircle(centre, 13, IM_COL32(0, 0, 0, 160), 24, 1.5f);
-      }
-      char text[320];
-      const DisplayUnits u = s.units();
-      const int d = u.lengthDecimals();
-      std::snprintf(text, sizeof text, "%s   line %u   t %.3f s\nX %.*f  Y %.*f  Z %.*f %s\n"
-                    "v %.1f %s   a %.1f %s   j %.0f %s", sampleName(t, k).c_str(), t.line[k], t.timeAt(k), d, u.length(t.x[k]), d,
-                    u.length(t.y[k]), d, u.length(t.z[k]), u.lengthUnit(), u.length(doc->curves[0].values.value(k)),
-                    u.feedUnit(), u.length(doc->curves[1].values.value(k)), u.accelerationUnit(),
-                    u.length(doc->curves[2].values.value(k)), u.jerkUnit());
-      // Right of the orientation axes in the lower left corner.
-      const ImVec2 at(origin.x + size.x * static_cast<float>(vis::kAxesCornerWidth) + 10,
-                      origin.y + size.y - 4 * ImGui::GetTextLineHeightWithSpacing());
-      const ImVec2 extent = ImGui::CalcTextSize(text);
-      draw->AddRectFilled(ImVec2(at.x - 4, at.y - 3), ImVec2(at.x + extent.x + 4, at.y + extent.y + 3), IM_COL32(0, 0, 0, 150), 3);
-      draw->AddText(at, IM_COL32(255, 230, 120, 255), text);
-    }
+    drawSelectionReadout(s, draw, origin, size);
     drawMeasure(s, draw, origin);
     s.scaleBar = drawScaleBar(s.units(), s.view.millimetresPerPixel(), draw, origin, size);
     if (s.refinement.building.valid())

@@ -177,7 +177,7 @@ vtkSmartPointer<vtkScalarBarActor> makeLegend(vtkLookupTable* table, const MapSt
   legend->SetBarRatio(0.25);
   // Far enough from the right edge that a title wider than the bar, centred over the legend,
   // stays inside a view half the window wide (the maps side by side).
-  legend->GetPositionCoordinate()->SetValue(0.84, 0.1);
+  legend->GetPositionCoordinate()->SetValue(kLegendLeft, 0.1);
   // Room between the title's last line and the top label, which it touched.
   legend->SetVerticalTitleSeparation(6);
   legend->SetWidth(0.11);

@@ -24,6 +24,8 @@ struct DetailSurface;
 
 // The orientation axes take the view's lower left corner: these fractions of its width and height.
 constexpr double kAxesCornerWidth = 0.14, kAxesCornerHeight = 0.2;
+// The colour legend's left edge, a share of the view's width.
+constexpr double kLegendLeft = 0.84;
 std::optional<ViewDirection> parseView(const std::string& name);  // "iso", "top", "front", "left"
 
 struct SurfaceData {
