@@ -120,8 +120,9 @@ int runOptimize(const OptimizeCliOptions& o) {
   text << in.rdbuf();
 
   const SurfaceRun before = surfaceRun(opened.samples, &program, gapLimit);
-  const RegionRequest request = regionOf(o, before);
+  RegionRequest request = regionOf(o, before);
   ProgressLine progress("optimising");
+  request.onCandidate = [&progress](const std::string& which) { progress.stage(which); };
   const RegionOptimisation r =
       optimiseRegion(text.str(), program, before, machine, request, [&](double f) { progress.update(f); });
   progress.finish();

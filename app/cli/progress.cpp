@@ -1,5 +1,6 @@
 #include "progress.h"
 
+#include <sys/ioctl.h>
 #include <unistd.h>
 
 #include <chrono>
@@ -18,7 +19,8 @@ double nowSeconds() {
 ProgressLine::ProgressLine(std::string label) : label_(std::move(label)) {
   // A program that runs this one and reads its progress (the window's report export) asks for it.
   const char* asked = std::getenv("ISURFACE_PROGRESS");
-  enabled_ = isatty(STDERR_FILENO) != 0 || (asked && asked[0] == '1');
+  terminal_ = isatty(STDERR_FILENO) != 0;
+  enabled_ = terminal_ || (asked && asked[0] == '1');
 }
 
 ProgressLine::~ProgressLine() { finish(); }
@@ -30,13 +32,30 @@ void ProgressLine::update(double fraction) {
   if (percent == lastPercent_ || now - lastDraw_ < 0.1) return;
   lastPercent_ = percent;
   lastDraw_ = now;
-  std::fprintf(stderr, "\r%s %3d%%", label_.c_str(), percent);
+  draw(percent);
+}
+
+void ProgressLine::stage(std::string text) {
+  if (!enabled_ || text == stage_) return;
+  stage_ = std::move(text);
+  if (lastPercent_ >= 0) draw(lastPercent_);
+}
+
+void ProgressLine::draw(int percent) {
+  std::string shown = stage_.empty() ? label_ : label_ + ", " + stage_;
+  // A line wider than the terminal would wrap, and "\r" go back to its last part only.
+  winsize size{};
+  if (terminal_ && ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 20 && shown.size() + 6 > size.ws_col)
+    shown = shown.substr(0, size.ws_col - 9) + "...";
+  // On a terminal the rest of a longer line drawn before is cleared (ANSI erase to its end); a
+  // program reading the pipe takes each line as it comes.
+  std::fprintf(stderr, "\r%s %3d%%%s", shown.c_str(), percent, terminal_ ? "\x1b[K" : "");
   std::fflush(stderr);
 }
 
 void ProgressLine::finish() {
   if (!enabled_ || lastPercent_ < 0) return;
-  std::fprintf(stderr, "\r%s 100%%\n", label_.c_str());
+  std::fprintf(stderr, "\r%s 100%%%s\n", label_.c_str(), terminal_ ? "\x1b[K" : "");
   lastPercent_ = -1;
 }
 

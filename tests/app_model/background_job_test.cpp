@@ -64,6 +64,20 @@ TEST(backgroundJob, ProgressIsVisibleWhileRunning) {
   EXPECT_FALSE(job.wasCancelled());
 }
 
+// What the job says it is doing shows while it runs, and not once it has ended.
+TEST(backgroundJob, TheStageIsVisibleWhileRunning) {
+  BackgroundJob job;
+  std::atomic<bool> seen{false};
+  job.start("optimising", [&](JobControl& control) {
+    control.stage("candidate 1: each pass its own interval feeds");
+    while (!seen) std::this_thread::sleep_for(1ms);
+  });
+  EXPECT_TRUE(waitFor([&] { return job.stage() == "candidate 1: each pass its own interval feeds"; }));
+  seen = true;
+  ASSERT_TRUE(waitFor([&] { return job.takeFinished(); }));
+  EXPECT_EQ(job.stage(), "");
+}
+
 TEST(backgroundJob, ProgressIsClamped) {
   BackgroundJob job;
   std::atomic<bool> release{false};

@@ -35,6 +35,19 @@ TEST(regionOptimizer, CommandWritesTheProgramAndTheComparison) {
   EXPECT_EQ(runCli("optimize " + sourcePath("samples/transition-surface.nc") + " --lines 1-5 --auto -o " + out).exitCode, 2);
 }
 
+// The progress line (asked for on a pipe, as the window asks) says which candidate is simulated,
+// each update a "LABEL NN%" line that a reader parses; no terminal codes down a pipe.
+TEST(regionOptimizer, ProgressSaysWhichCandidateIsSimulated) {
+  const std::string out = (scratchDir() / "optimized-progress.nc").string();
+  const CommandResult r = runShell("ISURFACE_PROGRESS=1 " + std::string(ISURFACE_CLI) + " optimize " +
+                                   sourcePath("samples/transition-surface.nc") + " --lines 105-400 -o " + out);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  EXPECT_NE(r.err.find("\roptimising, candidate 1: each pass its own interval feeds "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\roptimising, candidate 2: "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("\roptimising 100%\n"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+}
+
 // --auto on the bundled transition sample. The re-fitted candidate halves the speed fluctuation
 // and the speed difference between neighbouring passes (p99) in the worst region, keeps the
 // time and stays within 0.01 mm of the path; whether it is kept is the closed loop's call (no

@@ -168,12 +168,17 @@ TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedA
   RegionRequest request;
   request.lines = worst.lines;
   request.box = std::make_pair(worst.lower, worst.upper);
+  std::vector<std::string> told;  // what a progress display is told, candidate by candidate
+  request.onCandidate = [&told](const std::string& which) { told.push_back(which); };
   const RegionOptimisation r =
       optimiseRegion(transition().text, transition().program, transition().before, defaultMachine(), request);
   ASSERT_FALSE(r.candidates.empty());
   for (const RegionOptimisation::Outcome& c : r.candidates)
     EXPECT_EQ(c.plan.find("planned across passes"), std::string::npos) << c.plan;
   EXPECT_EQ(r.candidates.front().plan, "each pass its own interval feeds");
+  ASSERT_GE(told.size(), r.candidates.size());
+  EXPECT_EQ(told.front(), "candidate 1: each pass its own interval feeds");
+  EXPECT_EQ(told[1].rfind("candidate 2: ", 0), 0u) << told[1];
 }
 
 namespace {

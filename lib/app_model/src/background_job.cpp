@@ -12,6 +12,17 @@ void JobControl::progress(double fraction) {
   if (cancel_) throw JobCancelled{};
 }
 
+void JobControl::stage(std::string text) {
+  std::lock_guard<std::mutex> lock(stageMutex_);
+  stage_ = std::move(text);
+}
+
+std::string BackgroundJob::stage() const {
+  if (!control_ || !running_) return {};
+  std::lock_guard<std::mutex> lock(control_->stageMutex_);
+  return control_->stage_;
+}
+
 BackgroundJob::~BackgroundJob() {
   cancel();
   join();

@@ -131,7 +131,7 @@ std::string Inspector::describe() const {
                               {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
                               {"open_path", s.openPath},  // the Open dialog's path, typed or chosen
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
-                              {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}}
+                              {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}, {"stage", s.job.stage()}}
                                                       : nlohmann::json()},
                               {"selection", selection},
                               {"machine", machineJson(s.machine)},

@@ -375,6 +375,10 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
     noteControl(s, "job.cancel");
     if (cancel) s.job.cancel();
     ImGui::SameLine();
+    if (const std::string stage = s.job.stage(); !stage.empty()) {
+      ImGui::TextColored(ImVec4(1.0f, 0.85f, 0.45f, 1.0f), "%s", fittedToWidth(stage, ImGui::GetContentRegionAvail().x * 0.6f).c_str());
+      ImGui::SameLine();
+    }
   }
   // A status wider than the bar is cut at its end, and shown whole under the pointer.
   s.statusShown = fittedToWidth(s.status, ImGui::GetContentRegionAvail().x);

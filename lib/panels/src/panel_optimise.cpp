@@ -101,6 +101,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               std::stringstream text;
               text << in.rdbuf();
               // The whole surface, not the map's (thinned on large programs), as `optimize`.
+              if (!documentSamples) control.stage("simulating the program as it is");
               const std::shared_ptr<const Trajectory> before =
                   documentSamples ? documentSamples : std::make_shared<const Trajectory>(simulateRun(*program, machine));
               const SurfaceRun beforeRun = surfaceRun(before, program.get(), request.gapLimit);
@@ -108,6 +109,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               region.lines = LineRange{first, last};
               region.box = measuredBox;
               region.objective = objective;
+              region.onCandidate = [&control](const std::string& which) { control.stage(which); };
               const RegionOptimisation r = optimiseRegion(text.str(), *program, beforeRun, machine, region,
                                                           [&](double f) { control.progress(0.8 * f); });
               auto c = std::make_shared<Comparison>();
@@ -116,6 +118,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               c->last = last;
               c->program = r.program;
               c->samples = r.after.samples;
+              control.stage("making the maps");
               c->map = vis::buildQualityMap(*c->samples, c->program.get(), request);
               c->scene = std::make_shared<vis::QualityScene>(c->map.data, c->map.style);
               control.progress(0.9);

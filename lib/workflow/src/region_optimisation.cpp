@@ -266,6 +266,8 @@ class ClosedLoop {
     const double step = 1.0 / kExpectedCandidates;
     const double at = std::min(1.0 - step, step * double(judged_.size()));
     if (!repeated) judged_.push_back(result.text);
+    if (request_.onCandidate)
+      request_.onCandidate(fmt::format("candidate {}: {}", ++simulated_, describe(c, candidate.options.maximumDeviation)));
     last_ = RegionOptimisation{};  // its run is let go (unless kept as the best) before the next one is made
     last_ = evaluateCandidate(std::move(result), baseline_, machine_, candidate, progressStage(progress_, at, at + step));
     last_.plan = describe(c, candidate.options.maximumDeviation);
@@ -291,6 +293,7 @@ class ClosedLoop {
   const Machine& machine_;
   const RegionRequest& request_;
   const ProgressCallback& progress_;
+  std::size_t simulated_ = 0;
   std::vector<std::string> judged_;  // texts already simulated: a rule that changes no feed repeats one
   std::vector<RegionOptimisation::Outcome> outcomes_;
   RegionOptimisation last_;

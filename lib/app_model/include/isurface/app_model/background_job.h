@@ -17,12 +17,16 @@ class JobControl {
  public:
   // Records progress (0..1) and throws JobCancelled when cancellation was asked for.
   void progress(double fraction);
+  // What the job is doing now, in a few words, shown beside its progress ("candidate 5: ...").
+  void stage(std::string text);
   bool cancelRequested() const { return cancel_; }
 
  private:
   friend class BackgroundJob;
   std::atomic<double> progress_{0};
   std::atomic<bool> cancel_{false};
+  mutable std::mutex stageMutex_;
+  std::string stage_;
 };
 
 class BackgroundJob {
@@ -39,6 +43,7 @@ class BackgroundJob {
   bool running() const { return running_; }
   double progress() const { return control_ ? control_->progress_.load() : 0.0; }
   const std::string& label() const { return label_; }
+  std::string stage() const;  // the running job's last JobControl::stage, or ""
   // After the job: the error message if it failed ("" if it succeeded or was cancelled).
   std::string error() const;
   bool wasCancelled() const { return cancelled_; }

@@ -2,6 +2,7 @@
 // Re-optimising a region of a program, written once for `optimize` and the application's
 // Optimise dialog: choose the lines (given, a pass, or the worst predicted region), re-fit
 // them, simulate the new program with the same machine, and measure the region before and after.
+#include <functional>
 #include <memory>
 #include <optional>
 #include <string>
@@ -69,6 +70,9 @@ struct RegionRequest {
   std::optional<std::pair<Vec3, Vec3>> box;
   OptimizeOptions options;
   Objective objective = Objective::Balanced;
+  // Told, as each candidate's simulation starts, which it is ("candidate 5: corners rounded"),
+  // for a progress display.
+  std::function<void(const std::string&)> onCandidate;
 };
 
 struct RegionOptimisation {
