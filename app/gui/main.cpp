@@ -58,6 +58,45 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
   }
 }
 
+// Dear ImGui 1.86 sees a mouse button as down or not at each frame, so the two clicks of a
+// double click that arrive in one batch of events (a quick one while a frame took long) would
+// be one click. A press after another not yet seen by a frame, or while the last frame saw the
+// button down (its release came in this batch), waits: a frame sees the button up first, the
+// next one the press. Those two frames stand for the moment the events came,
+// not for the time they took to draw (their clicks were a double click only if less than
+// Dear ImGui's double click time apart): their time step is that of a quick frame.
+struct HeldPress {
+  int button, mods;
+};
+std::array<int, 3> pressesSinceFrame{};
+std::vector<HeldPress> heldPresses;
+bool upFrameSeen = false, replayingPresses = false;
+constexpr float kReplayFrameSeconds = 1.0f / 60;
+
+void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
+  if (action == GLFW_PRESS && button >= 0 && button < 3 &&
+      (pressesSinceFrame[button]++ > 0 || ImGui::GetIO().MouseDown[button] || !heldPresses.empty())) {
+    heldPresses.push_back({button, mods});
+    return;
+  }
+  ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
+}
+
+// After a frame: the next held press, after a frame that saw its button up. Returns whether
+// there are any (another frame is due).
+bool handOnHeldPress(GLFWwindow* window) {
+  pressesSinceFrame.fill(0);
+  replayingPresses = !heldPresses.empty();
+  if (heldPresses.empty()) return false;
+  if (!upFrameSeen) return upFrameSeen = true;
+  upFrameSeen = false;
+  const HeldPress press = heldPresses.front();
+  heldPresses.erase(heldPresses.begin());
+  pressesSinceFrame[press.button] = 1;
+  ImGui_ImplGlfw_MouseButtonCallback(window, press.button, GLFW_PRESS, press.mods);
+  return true;
+}
+
 // Whether Dear ImGui last saw a mouse button other than it now is: a press and its release in
 // one batch of events (a quick click while a frame took long) are seen as a press in one
 // frame, and the release needs a frame of its own, with no further input to wake the loop.
@@ -183,6 +222,7 @@ int run(int argc, char** argv) {
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; settings.json keeps the rest
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetKeyCallback(window, onKey);  // in front of Dear ImGui's, which it calls
+  glfwSetMouseButtonCallback(window, onMouseButton);  // so too
   ImGui_ImplOpenGL3_Init("#version 150");
   {
     isurface::panels::GlHooks hooks{[window] { glfwMakeContextCurrent(window); },
@@ -209,6 +249,7 @@ int run(int argc, char** argv) {
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
+      if (replayingPresses) ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kReplayFrameSeconds);
       ImGui::NewFrame();
       inspector.frame();
       ImGui::Render();
@@ -221,7 +262,8 @@ int run(int argc, char** argv) {
       glClear(GL_COLOR_BUFFER_BIT);
       ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
       glfwSwapBuffers(window);
-      frameDue = releaseHeldKeys(window) || mouseFrameDue(window);
+      const bool keysHeld = releaseHeldKeys(window), pressesHeld = handOnHeldPress(window);
+      frameDue = keysHeld || pressesHeld || mouseFrameDue(window);
       tellState(inspector, toldState);
       laidOut = true;
     }

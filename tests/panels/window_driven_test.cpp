@@ -321,7 +321,11 @@ TEST(drivenWindow, ADoubleClickOnAFolderOpensNothingInIt) {
   std::filesystem::copy_file(sourcePath("samples/transition-surface.nc"), home / "parts" / "a-part.nc");
   const std::string program = sourcePath("samples/transition-surface.nc");
   DrivenWindow w(home, {program});
-  auto log = [&] { return readFile(w.logPath()) + "\nstate: " + w.state().dump().substr(0, 2000); };
+  auto log = [&] {
+    const json s = w.state();
+    return readFile(w.logPath()) + "\nopen path: " + s["open_path"].dump() + "\nwindows: " + s["windows"].dump() +
+           "\nstatus: " + s["status"].dump() + "\ndocuments: " + std::to_string(s["documents"].size());
+  };
   ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1 && s["controls"].contains("surface"); },
                         60))
       << log();
