@@ -45,8 +45,11 @@ void ProgressLine::draw(int percent) {
   std::string shown = stage_.empty() ? label_ : label_ + ", " + stage_;
   // A line wider than the terminal would wrap, and "\r" go back to its last part only.
   winsize size{};
-  if (terminal_ && ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 20 && shown.size() + 6 > size.ws_col)
-    shown = shown.substr(0, size.ws_col - 9) + "...";
+  if (terminal_ && ioctl(STDERR_FILENO, TIOCGWINSZ, &size) == 0 && size.ws_col > 20 && shown.size() + 6 > size.ws_col) {
+    std::size_t cut = size.ws_col - 9;
+    while (cut > 0 && (static_cast<unsigned char>(shown[cut]) & 0xC0) == 0x80) --cut;  // not inside a UTF-8 character
+    shown = shown.substr(0, cut) + "...";
+  }
   // On a terminal the rest of a longer line drawn before is cleared (ANSI erase to its end); a
   // program reading the pipe takes each line as it comes.
   std::fprintf(stderr, "\r%s %3d%%%s", shown.c_str(), percent, terminal_ ? "\x1b[K" : "");

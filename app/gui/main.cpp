@@ -14,6 +14,7 @@
 #include <cstdlib>
 #include <exception>
 #include <fstream>
+#include <optional>
 #include <set>
 #include <string>
 #include <vector>
@@ -62,21 +63,25 @@ void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
 // double click that arrive in one batch of events (a quick one while a frame took long) would
 // be one click. A press after another not yet seen by a frame, or while the last frame saw the
 // button down (its release came in this batch), waits: a frame sees the button up first, the
-// next one the press. Those two frames stand for the moment the events came,
-// not for the time they took to draw (their clicks were a double click only if less than
-// Dear ImGui's double click time apart): their time step is that of a quick frame.
+// next one the press, both where the pointer was at the press. GLFW's events carry no time:
+// those two frames are given the time step of a quick frame, so that clicks that came in one
+// batch count as a double click (within Dear ImGui's 6 px), as they would have on quick frames.
 struct HeldPress {
   int button, mods;
+  double x, y;  // the pointer, window pixels
 };
 std::array<int, 3> pressesSinceFrame{};
 std::vector<HeldPress> heldPresses;
-bool upFrameSeen = false, replayingPresses = false;
+bool upFrame = false;                // the next frame shows the first held press's button up
+std::optional<HeldPress> handedOn;   // the press the next frame shows
 constexpr float kReplayFrameSeconds = 1.0f / 60;
 
 void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
   if (action == GLFW_PRESS && button >= 0 && button < 3 &&
       (pressesSinceFrame[button]++ > 0 || ImGui::GetIO().MouseDown[button] || !heldPresses.empty())) {
-    heldPresses.push_back({button, mods});
+    HeldPress press{button, mods, 0, 0};
+    glfwGetCursorPos(window, &press.x, &press.y);
+    heldPresses.push_back(press);
     return;
   }
   ImGui_ImplGlfw_MouseButtonCallback(window, button, action, mods);
@@ -86,15 +91,26 @@ void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
 // there are any (another frame is due).
 bool handOnHeldPress(GLFWwindow* window) {
   pressesSinceFrame.fill(0);
-  replayingPresses = !heldPresses.empty();
-  if (heldPresses.empty()) return false;
-  if (!upFrameSeen) return upFrameSeen = true;
-  upFrameSeen = false;
-  const HeldPress press = heldPresses.front();
+  handedOn.reset();
+  if (heldPresses.empty()) return upFrame = false;
+  if (!upFrame) return upFrame = true;
+  upFrame = false;
+  handedOn = heldPresses.front();
   heldPresses.erase(heldPresses.begin());
-  pressesSinceFrame[press.button] = 1;
-  ImGui_ImplGlfw_MouseButtonCallback(window, press.button, GLFW_PRESS, press.mods);
+  pressesSinceFrame[handedOn->button] = 1;
+  ImGui_ImplGlfw_MouseButtonCallback(window, handedOn->button, GLFW_PRESS, handedOn->mods);
   return true;
+}
+
+// Between the backend's new frame and Dear ImGui's: a frame replaying a held press sees what
+// the press came after (the button up) or the press itself, at the press's place.
+void replayHeldPress() {
+  const HeldPress* press = upFrame && !heldPresses.empty() ? &heldPresses.front() : handedOn ? &*handedOn : nullptr;
+  if (!press) return;
+  ImGuiIO& io = ImGui::GetIO();
+  if (upFrame) io.MouseDown[press->button] = false;
+  io.MousePos = ImVec2(static_cast<float>(press->x), static_cast<float>(press->y));
+  io.DeltaTime = std::min(io.DeltaTime, kReplayFrameSeconds);
 }
 
 // Whether Dear ImGui last saw a mouse button other than it now is: a press and its release in
@@ -249,7 +265,7 @@ int run(int argc, char** argv) {
       }
       ImGui_ImplOpenGL3_NewFrame();
       ImGui_ImplGlfw_NewFrame();
-      if (replayingPresses) ImGui::GetIO().DeltaTime = std::min(ImGui::GetIO().DeltaTime, kReplayFrameSeconds);
+      replayHeldPress();
       ImGui::NewFrame();
       inspector.frame();
       ImGui::Render();

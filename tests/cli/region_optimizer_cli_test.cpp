@@ -46,6 +46,21 @@ TEST(regionOptimizer, ProgressSaysWhichCandidateIsSimulated) {
   EXPECT_NE(r.err.find("\roptimising, candidate 2: "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("\roptimising 100%\n"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find('\x1b'), std::string::npos);
+  // Each record: the label, a space, a whole percentage (what the window's reader takes).
+  std::size_t records = 0;
+  for (std::size_t at = 0; at < r.err.size();) {
+    const std::size_t end = std::min(r.err.find_first_of("\r\n", at), r.err.size());
+    const std::string record = r.err.substr(at, end - at);
+    at = end + 1;
+    if (record.find("optimising") != 0) continue;
+    ++records;
+    ASSERT_EQ(record.back(), '%') << record;
+    const std::size_t space = record.find_last_of(' ', record.size() - 2);
+    ASSERT_NE(space, std::string::npos) << record;
+    const int percent = std::stoi(record.substr(space + 1));
+    EXPECT_TRUE(percent >= 0 && percent <= 100) << record;
+  }
+  EXPECT_GT(records, 3u);
 }
 
 // --auto on the bundled transition sample. The re-fitted candidate halves the speed fluctuation

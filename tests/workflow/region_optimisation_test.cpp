@@ -176,7 +176,7 @@ TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedA
   for (const RegionOptimisation::Outcome& c : r.candidates)
     EXPECT_EQ(c.plan.find("planned across passes"), std::string::npos) << c.plan;
   EXPECT_EQ(r.candidates.front().plan, "each pass its own interval feeds");
-  ASSERT_GE(told.size(), r.candidates.size());
+  ASSERT_GE(told.size(), std::max<std::size_t>(2, r.candidates.size()));
   EXPECT_EQ(told.front(), "candidate 1: each pass its own interval feeds");
   EXPECT_EQ(told[1].rfind("candidate 2: ", 0), 0u) << told[1];
 }

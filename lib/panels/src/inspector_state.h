@@ -320,6 +320,7 @@ std::string unsavedResultReplaced(const Inspector::State& s);
 // forgotten (a range of its own lines would mean other moves).
 void forgetTheRegionOfAnotherProgram(Inspector::State& s);
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
+Inspector::State::ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width);  // its length and pixels
 Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.
 std::string emptyViewText(const Inspector::State& s);

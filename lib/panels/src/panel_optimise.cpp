@@ -175,6 +175,47 @@ void forgetTheRegionOfAnotherProgram(Inspector::State& s) {
   s.optimiseFirst = s.optimiseLast = 1;
 }
 
+// The regions the dialog offers besides typed lines: the worst one, the whole program, the
+// selected line's pass.
+void drawRegionButtons(Inspector::State& s, Document* doc) {
+  const bool worst = ImGui::Button("Worst predicted region");
+  noteControl(s, "optimise.worst");
+  if (worst && doc && doc->samples && doc->map.mesh) {
+    // The regions are judged on the predicted deviation too, as `optimize --auto` judges them.
+    if (!s.loadFeedbackFirst([&s] { chooseWorstRegion(s); })) chooseWorstRegion(s);
+  }
+  ImGui::SameLine();
+  const bool whole = ImGui::Button("Whole program");
+  noteControl(s, "optimise.whole");
+  if (whole && doc && doc->samples && doc->map.mesh) {
+    try {
+      // As `optimize --all`: every pass, the figures taken over all of them.
+      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
+      const ChosenRegion all = wholeProgramRegion(run, doc->name);
+      s.optimiseFirst = static_cast<int>(all.lines.first);
+      s.optimiseLast = static_cast<int>(all.lines.last);
+      s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};
+      s.optimiseBoxOnView = {};
+      s.optimiseNotice.clear();
+      s.status = fmt::format("whole program: lines {}-{}", all.lines.first, all.lines.last);
+    } catch (const InputError& e) {
+      s.status = s.optimiseNotice = e.what();
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Selected line's pass") && s.selection.current().line && doc && doc->samples) {
+    const SurfaceRun run{doc->samples, doc->map.passes, nullptr};
+    if (const auto pass = passOfLine(run, *s.selection.current().line)) {
+      s.optimiseFirst = static_cast<int>(pass->first);
+      s.optimiseLast = static_cast<int>(pass->last);
+      s.optimiseNotice.clear();
+      s.status = fmt::format("the pass of line {}: lines {}-{}", *s.selection.current().line, pass->first, pass->last);
+    } else {
+      s.status = s.optimiseNotice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
+    }
+  }
+}
+
 void drawOptimiseDialog(Inspector::State& s) {
   if (s.optimiseDialog) {
     forgetTheRegionOfAnotherProgram(s);
@@ -218,42 +259,7 @@ void drawOptimiseDialog(Inspector::State& s) {
   } else {
     ImGui::TextWrapped("%s", "No box: the figures are taken where the first plan re-fits the path");
   }
-  const bool worst = ImGui::Button("Worst predicted region");
-  noteControl(s, "optimise.worst");
-  if (worst && doc && doc->samples && doc->map.mesh) {
-    // The regions are judged on the predicted deviation too, as `optimize --auto` judges them.
-    if (!s.loadFeedbackFirst([&s] { chooseWorstRegion(s); })) chooseWorstRegion(s);
-  }
-  ImGui::SameLine();
-  const bool whole = ImGui::Button("Whole program");
-  noteControl(s, "optimise.whole");
-  if (whole && doc && doc->samples && doc->map.mesh) {
-    try {
-      // As `optimize --all`: every pass, the figures taken over all of them.
-      const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
-      const ChosenRegion all = wholeProgramRegion(run, doc->name);
-      s.optimiseFirst = static_cast<int>(all.lines.first);
-      s.optimiseLast = static_cast<int>(all.lines.last);
-      s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};
-      s.optimiseBoxOnView = {};
-      s.optimiseNotice.clear();
-      s.status = fmt::format("whole program: lines {}-{}", all.lines.first, all.lines.last);
-    } catch (const InputError& e) {
-      s.status = s.optimiseNotice = e.what();
-    }
-  }
-  ImGui::SameLine();
-  if (ImGui::Button("Selected line's pass") && s.selection.current().line && doc && doc->samples) {
-    const SurfaceRun run{doc->samples, doc->map.passes, nullptr};
-    if (const auto pass = passOfLine(run, *s.selection.current().line)) {
-      s.optimiseFirst = static_cast<int>(pass->first);
-      s.optimiseLast = static_cast<int>(pass->last);
-      s.optimiseNotice.clear();
-      s.status = fmt::format("the pass of line {}: lines {}-{}", *s.selection.current().line, pass->first, pass->last);
-    } else {
-      s.status = s.optimiseNotice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
-    }
-  }
+  drawRegionButtons(s, doc);
   // Said here too, where the user looks: the lines above are still those chosen before.
   if (!s.optimiseNotice.empty())
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s (the lines above are unchanged)", s.optimiseNotice.c_str());

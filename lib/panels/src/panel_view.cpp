@@ -83,7 +83,8 @@ void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, 
   }
   const ImVec2 extent = ImGui::CalcTextSize(text.c_str());
   // Its foot a line above the view's; above the scale bar's label where it reaches over the bar.
-  const bool overScaleBar = left + extent.x + 8 > size.x * kScaleBarRight - s.scaleBar.pixels;
+  const float scaleBar = scaleBarFor(u, s.view.millimetresPerPixel(), size.x).pixels;
+  const bool overScaleBar = left + extent.x + 8 > size.x * kScaleBarRight - scaleBar;
   const float foot = overScaleBar ? kScaleBarFoot + ImGui::GetTextLineHeight() + 10
                                   : ImGui::GetTextLineHeightWithSpacing();
   const ImVec2 at(origin.x + left, origin.y + size.y - foot - extent.y);
@@ -171,12 +172,19 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
 
 // A bar of a round length (1, 2 or 5 times a power of ten) about a sixth of the view wide, at
 // its lower right, for the scale at the focal point of a view `mmPerPixel` (mm) at it.
-Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+Inspector::State::ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width) {
   if (!(mmPerPixel > 0) || !std::isfinite(mmPerPixel)) return {};
-  const double wanted = u.length(mmPerPixel * size.x / 6);  // in display units
+  const double wanted = u.length(mmPerPixel * width / 6);  // in display units
   const double power = std::pow(10.0, std::floor(std::log10(wanted)));
   const double length = power * (wanted / power < 2 ? 1 : wanted / power < 5 ? 2 : 5);
-  const float pixels = static_cast<float>(length / u.length(mmPerPixel));
+  return {length, u.lengthUnit(), static_cast<float>(length / u.length(mmPerPixel))};
+}
+
+Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  const Inspector::State::ScaleBar bar = scaleBarFor(u, mmPerPixel, size.x);
+  if (bar.pixels <= 0) return {};
+  const double length = bar.length;
+  const float pixels = bar.pixels;
   const ImVec2 right(origin.x + size.x * kScaleBarRight, origin.y + size.y - kScaleBarFoot);
   const ImVec2 left(right.x - pixels, right.y);
   const ImU32 ink = IM_COL32(30, 30, 36, 255);
@@ -187,7 +195,7 @@ Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel
   std::snprintf(label, sizeof label, "%g %s", length, u.lengthUnit());
   const ImVec2 extent = ImGui::CalcTextSize(label);
   draw->AddText(ImVec2((left.x + right.x - extent.x) / 2, left.y - extent.y - 3), ink, label);
-  return {length, u.lengthUnit(), pixels};
+  return bar;
 }
 
 // What the view says where no map stands: why the open document has none (passes too far
