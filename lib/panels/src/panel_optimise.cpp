@@ -49,19 +49,23 @@ std::string whyNotOptimisable(const Document* doc) {
   return "";
 }
 
+// The dialog holds a region found for the user (not dragged on the view, so not drawn there).
+void holdRegion(Inspector::State& s, const ChosenRegion& region, const char* what) {
+  s.optimiseFirst = static_cast<int>(region.lines.first);
+  s.optimiseLast = static_cast<int>(region.lines.last);
+  s.optimiseBox = app_model::BoxSelection{region.lines, region.lower, region.upper, region.vertices};
+  s.optimiseBoxOnView = {};
+  s.optimiseNotice.clear();
+  s.status = fmt::format("{}: lines {}-{}", what, region.lines.first, region.lines.last);
+}
+
 // As `optimize --auto`: whole passes around the worst region, its figures taken inside its box.
 void chooseWorstRegion(Inspector::State& s) {
   const Document* doc = s.activeDocument();
   if (!doc || !doc->samples || !doc->map.mesh) return;
   try {
     const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
-    const ChosenRegion worst = worstRegion(run, doc->name);
-    s.optimiseFirst = static_cast<int>(worst.lines.first);
-    s.optimiseLast = static_cast<int>(worst.lines.last);
-    s.optimiseBox = app_model::BoxSelection{worst.lines, worst.lower, worst.upper, worst.vertices};
-    s.optimiseBoxOnView = {};  // not drawn: the region was not dragged on this view
-    s.optimiseNotice.clear();
-    s.status = fmt::format("worst predicted region: lines {}-{}", worst.lines.first, worst.lines.last);
+    holdRegion(s, worstRegion(run, doc->name), "worst predicted region");
   } catch (const InputError& e) {
     s.status = s.optimiseNotice = e.what();
   }
@@ -191,13 +195,7 @@ void drawRegionButtons(Inspector::State& s, Document* doc) {
     try {
       // As `optimize --all`: every pass, the figures taken over all of them.
       const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
-      const ChosenRegion all = wholeProgramRegion(run, doc->name);
-      s.optimiseFirst = static_cast<int>(all.lines.first);
-      s.optimiseLast = static_cast<int>(all.lines.last);
-      s.optimiseBox = app_model::BoxSelection{all.lines, all.lower, all.upper, all.vertices};
-      s.optimiseBoxOnView = {};
-      s.optimiseNotice.clear();
-      s.status = fmt::format("whole program: lines {}-{}", all.lines.first, all.lines.last);
+      holdRegion(s, wholeProgramRegion(run, doc->name), "whole program");
     } catch (const InputError& e) {
       s.status = s.optimiseNotice = e.what();
     }
