@@ -95,3 +95,20 @@ TEST(optimiseDialog, TheRegionChosenStaysForTheNextOpeningOfTheSameProgram) {
   EXPECT_TRUE(other["optimise_box"].is_null()) << "the other program's box";
   EXPECT_EQ(other["optimise_lines"].get<std::vector<int>>(), (std::vector<int>{1, 1}));
 }
+
+// "Worst predicted region" holds what `optimize --auto` would take: whole passes, the figures'
+// box around the defects, said in the status.
+TEST(optimiseDialog, TheWorstPredictedRegionIsHeldWithItsBox) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'P');
+  clickControl(*ui, "optimise.worst");
+  waitForJobs(*ui);  // the predicted deviation needs the feedback first
+  const nlohmann::json state = described(*ui);
+  ASSERT_TRUE(state["windows"]["optimise"].get<bool>());
+  ASSERT_FALSE(state["optimise_box"].is_null()) << state["status"];
+  EXPECT_EQ(state["optimise_box"]["lines"], state["optimise_lines"]);
+  const auto lines = state["optimise_lines"].get<std::vector<int>>();
+  EXPECT_GT(lines[1] - lines[0], 100) << "several whole passes";
+  EXPECT_EQ(state["status"].get<std::string>().rfind("worst predicted region: lines ", 0), 0u) << state["status"];
+  EXPECT_LT(state["optimise_box"]["lower"][0].get<double>(), state["optimise_box"]["upper"][0].get<double>());
+}
