@@ -89,6 +89,20 @@ TEST(quantities, SampleValuesAreTheWholeDerivation) {
   EXPECT_DOUBLE_EQ(sampleQuantity(Quantity::Time, t)[5000], 5.0);
 }
 
+// Several quantities at once (the figures take speed and jerk together) are each the values
+// sampleQuantity gives, whether derived, per axis or read as they are.
+TEST(quantities, SeveralAtOnceAreEachTheSameValues) {
+  const Trajectory t = wavyPath(140'000);
+  const std::vector<Quantity> asked = {Quantity::Jerk, Quantity::Line, Quantity::Speed, Quantity::VelocityX, Quantity::Time};
+  const std::vector<std::vector<double>> together = sampleQuantities(asked, t);
+  ASSERT_EQ(together.size(), asked.size());
+  for (std::size_t j = 0; j < asked.size(); ++j) {
+    const std::vector<double> alone = sampleQuantity(asked[j], t);
+    ASSERT_EQ(together[j].size(), alone.size());
+    for (std::size_t i = 0; i < alone.size(); ++i) ASSERT_EQ(together[j][i], alone[i]) << quantityInfo(asked[j]).name << " " << i;
+  }
+}
+
 // A view of part of a run (the app's curves) gets exactly the values of the whole derivation,
 // at the run's ends and across the derivation's internal pieces too.
 TEST(quantities, RangeValuesAreTheWholeRunsValues) {

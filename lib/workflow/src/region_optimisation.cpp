@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <future>
 #include <limits>
 #include <tuple>
 
@@ -96,17 +97,22 @@ double passSpacing(const SurfaceRun& run) {
 
 // What every candidate is judged against: the program's own figures, measured once per box.
 struct Baseline {
-  const Program& program;
-  const SurfaceRun& run;
-  QualityFigures whole;
-  double passSpacing;  // mm
-  std::optional<std::tuple<Vec3, Vec3, QualityFigures>> region;
+  Baseline(const Program& program, const SurfaceRun& run)
+      : program(program), run(run), values(figureValues(*run.samples, *run.mesh)),
+        whole(measureQualityFigures(values, *run.samples, *run.mesh)), passSpacing(isurface::passSpacing(run)) {}
 
   const QualityFigures& regionIn(const Vec3& lower, const Vec3& upper, LineRange lines) {
     if (!region || std::get<0>(*region) != lower || std::get<1>(*region) != upper)
-      region.emplace(lower, upper, measureQualityFigures(*run.samples, *run.mesh, FigureWindow{lines, lower, upper}));
+      region.emplace(lower, upper, measureQualityFigures(values, *run.samples, *run.mesh, FigureWindow{lines, lower, upper}));
     return std::get<2>(*region);
   }
+
+  const Program& program;
+  const SurfaceRun& run;
+  FigureValues values;
+  QualityFigures whole;
+  double passSpacing;  // mm
+  std::optional<std::tuple<Vec3, Vec3, QualityFigures>> region;
 };
 
 // The box a candidate is judged in and the program's own figures there: the box asked for (or
@@ -149,13 +155,19 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   if (!reread.ok()) throw std::runtime_error("the new program does not interpret: " + reread.errors.front().str());
   r.program = std::make_shared<const Program>(std::move(reread.program));
   measureBefore(r, before, request);
+  // The paths' distance needs no simulation: it is measured on a second core meanwhile.
+  std::future<double> pathDistance = std::async(std::launch::async, [&] {
+    return polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
+  });
   r.after = surfaceRun(std::make_shared<const Trajectory>(simulateRun(*r.program, machine, progressStage(progress, 0.1, 0.9))),
                        r.program.get(), before.run.gapLimit);
-  r.regionAfter = measureQualityFigures(*r.after.samples, *r.after.mesh, FigureWindow{r.result.newRange, r.lower, r.upper});
+  {
+    const FigureValues after = figureValues(*r.after.samples, *r.after.mesh);
+    r.regionAfter = measureQualityFigures(after, *r.after.samples, *r.after.mesh, FigureWindow{r.result.newRange, r.lower, r.upper});
+    r.wholeAfter = measureQualityFigures(after, *r.after.samples, *r.after.mesh);
+  }
   r.wholeBefore = before.whole;
-  r.wholeAfter = measureQualityFigures(*r.after.samples, *r.after.mesh);
-  r.maxPathDistance =
-      polylineDistance(regionPoints(program, request.lines), regionPoints(*r.program, r.result.newRange));
+  r.maxPathDistance = pathDistance.get();
   r.timeBefore = machiningTime(*before.run.samples);
   r.timeAfter = machiningTime(*r.after.samples);
   r.regionTimeBefore = timeOnLines(*before.run.samples, request.lines);
@@ -398,7 +410,7 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // (rounded_corners.h, taut_path.h), each with its speed peaks trimmed. Each distinct
   // candidate is simulated and judged; the objective chooses among those no worse than the
   // program. When none is, the first one's figures and reason are reported.
-  Baseline baseline{program, before, measureQualityFigures(*before.samples, *before.mesh), passSpacing(before), std::nullopt};
+  Baseline baseline(program, before);
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
   std::optional<double> deviationTarget;  // um: what the program's own run deviates by (p99)

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <future>
+#include <limits>
 #include <vector>
 
 #include "isurface/analysis/quantities.h"
@@ -53,36 +55,59 @@ double percentileOf(std::vector<double>& values, double percent) {
   return values[k];
 }
 
-QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window) {
+FigureValues figureValues(const Trajectory& samples, const SurfaceMesh& mesh) {
+  FigureValues values;
+  if (samples.size() == 0 || mesh.vertexSample.empty()) return values;
+  // The surface's values on a second core while this one derives the motion of every sample.
+  std::future<std::vector<float>> inconsistency = std::async(std::launch::async, [&] {
+    return vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
+  });
+  std::future<std::vector<float>> deviation;
+  if (samples.hasFeedback())
+    deviation = std::async(std::launch::deferred, [&] { return vertexQuantity(Quantity::Deviation, samples, mesh); });
+  {
+    const std::vector<std::vector<double>> speedAndJerk = sampleQuantities({Quantity::Speed, Quantity::Jerk}, samples);
+    const std::vector<double>& speed = speedAndJerk[0];
+    const std::vector<double>& jerk = speedAndJerk[1];
+    const double cycle = samples.cycle > 0 ? samples.cycle : 0.001;
+    const MovingMean mean(speed, static_cast<std::size_t>(std::lround(0.5 * kFluctuationWindow / cycle)));
+    const std::size_t vertices = mesh.vertexSample.size();
+    values.speedOffMean.resize(vertices);
+    values.jerk.resize(vertices);
+    for (std::size_t v = 0; v < vertices; ++v) {
+      const std::size_t i = mesh.vertexSample[v];
+      values.speedOffMean[v] = std::isfinite(speed[i]) ? speed[i] - mean.at(i) : std::numeric_limits<double>::quiet_NaN();
+      values.jerk[v] = jerk[i];
+    }
+  }
+  if (deviation.valid()) values.deviation = deviation.get();
+  values.inconsistency = inconsistency.get();
+  return values;
+}
+
+QualityFigures measureQualityFigures(const FigureValues& values, const Trajectory& samples, const SurfaceMesh& mesh,
+                                     const FigureWindow& window) {
   QualityFigures f;
   if (samples.size() == 0 || mesh.vertexSample.empty()) return f;
-  const std::vector<double> speed = sampleQuantity(Quantity::Speed, samples);
-  const std::vector<double> jerk = sampleQuantity(Quantity::Jerk, samples);
-  const std::vector<float> inconsistency = vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
-  std::vector<float> deviation;
-  f.hasDeviation = samples.hasFeedback();
-  if (f.hasDeviation) deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
-  const double cycle = samples.cycle > 0 ? samples.cycle : 0.001;
-  const MovingMean mean(speed, static_cast<std::size_t>(std::lround(0.5 * kFluctuationWindow / cycle)));
-
+  f.hasDeviation = !values.deviation.empty();
   std::vector<double> jerks, inconsistencies, deviations;
   double sumSquares = 0, inconsistencySum = 0;
   std::size_t inconsistencyCount = 0;
   RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
     const std::size_t i = mesh.vertexSample[v];
-    if (!inside(samples, i, lineOf[i], window) || !std::isfinite(speed[i])) continue;
+    const double d = values.speedOffMean[v];
+    if (!inside(samples, i, lineOf[i], window) || std::isnan(d)) continue;
     ++f.samples;
-    const double d = speed[i] - mean.at(i);
     sumSquares += d * d;
-    jerks.push_back(jerk[i]);
+    jerks.push_back(values.jerk[v]);
     if (mesh.previousPassNeighbour[v] != kNoVertex || mesh.nextPassNeighbour[v] != kNoVertex) ++f.betweenPasses;
-    if (std::isfinite(inconsistency[v])) {
-      inconsistencies.push_back(inconsistency[v]);
-      inconsistencySum += inconsistency[v];
+    if (std::isfinite(values.inconsistency[v])) {
+      inconsistencies.push_back(values.inconsistency[v]);
+      inconsistencySum += values.inconsistency[v];
       ++inconsistencyCount;
     }
-    if (f.hasDeviation) deviations.push_back(std::fabs(deviation[v]));
+    if (f.hasDeviation) deviations.push_back(std::fabs(values.deviation[v]));
   }
   f.speedFluctuation = f.samples ? std::sqrt(sumSquares / static_cast<double>(f.samples)) : 0.0;
   f.inconsistencyMean = inconsistencyCount ? inconsistencySum / static_cast<double>(inconsistencyCount) : 0.0;
@@ -90,6 +115,10 @@ QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMes
   f.jerkP99 = percentileOf(jerks, 99);
   f.deviationP99 = percentileOf(deviations, 99);
   return f;
+}
+
+QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window) {
+  return measureQualityFigures(figureValues(samples, mesh), samples, mesh, window);
 }
 
 namespace {

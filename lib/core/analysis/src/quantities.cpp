@@ -67,13 +67,13 @@ double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
 // Derives the samples [first, last) (with their stencil margins) and calls
 // take(sample, kinematics, index in kinematics) for each.
 template <class Take>
-void deriveRange(const Trajectory& s, Quantity q, std::size_t first, std::size_t last, Take&& take) {
+void deriveRange(const Trajectory& s, bool perAxis, std::size_t first, std::size_t last, Take&& take) {
   const std::size_t n = s.size();
   const std::size_t from = first >= kStencilMargin ? first - kStencilMargin : 0;
   const std::size_t to = std::min(n, last + kStencilMargin);
   const double* t = s.irregularTime ? s.time.data() + from : nullptr;
   const Kinematics k = deriveKinematics(s.x.data() + from, s.y.data() + from, s.z.data() + from, t, to - from,
-                                        s.cycle, isPerAxis(q));
+                                        s.cycle, perAxis);
   for (std::size_t i = first; i < last; ++i) take(i, k, i - from);
 }
 
@@ -258,24 +258,37 @@ void sampleQuantityRange(Quantity q, const Trajectory& samples, std::size_t firs
     return;
   }
   for (std::size_t from = first; from < last; from += kKinematicsChunk) {
-    deriveRange(samples, q, from, std::min(last, from + kKinematicsChunk), [&](std::size_t i, const Kinematics& k, std::size_t local) {
+    deriveRange(samples, isPerAxis(q), from, std::min(last, from + kKinematicsChunk), [&](std::size_t i, const Kinematics& k, std::size_t local) {
       out[i - first] = static_cast<float>(kinematicValue(q, k, local));
     });
   }
 }
 
 std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples) {
-  checkSampleQuantity(q, samples);
+  return std::move(sampleQuantities({q}, samples).front());
+}
+
+std::vector<std::vector<double>> sampleQuantities(const std::vector<Quantity>& qs, const Trajectory& samples) {
   const std::size_t n = samples.size();
-  std::vector<double> out(n);
-  if (!isKinematic(q) || storedChannel(q, samples)) {
-    PlainValues value(q, samples);
-    for (std::size_t i = 0; i < n; ++i) out[i] = value(i);
-    return out;
+  std::vector<std::vector<double>> out(qs.size(), std::vector<double>(n));
+  std::vector<std::size_t> derived;  // of qs
+  bool perAxis = false;
+  for (std::size_t j = 0; j < qs.size(); ++j) {
+    checkSampleQuantity(qs[j], samples);
+    if (isKinematic(qs[j]) && !storedChannel(qs[j], samples)) {
+      derived.push_back(j);
+      perAxis = perAxis || isPerAxis(qs[j]);
+      continue;
+    }
+    PlainValues value(qs[j], samples);
+    for (std::size_t i = 0; i < n; ++i) out[j][i] = value(i);
   }
+  if (derived.empty()) return out;
   for (std::size_t first = 0; first < n; first += kKinematicsChunk) {
-    deriveRange(samples, q, first, std::min(n, first + kKinematicsChunk),
-                [&](std::size_t i, const Kinematics& k, std::size_t local) { out[i] = kinematicValue(q, k, local); });
+    deriveRange(samples, perAxis, first, std::min(n, first + kKinematicsChunk),
+                [&](std::size_t i, const Kinematics& k, std::size_t local) {
+                  for (const std::size_t j : derived) out[j][i] = kinematicValue(qs[j], k, local);
+                });
   }
   return out;
 }

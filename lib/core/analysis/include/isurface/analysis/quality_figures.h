@@ -6,6 +6,7 @@
 #include <cstddef>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include "isurface/base/line_range.h"
 #include "isurface/base/trajectory.h"
@@ -31,6 +32,18 @@ struct QualityFigures {
   bool hasDeviation = false;
 };
 
+// What the figures are taken from, per vertex of the surface: derived once for a run (most of the
+// work of measuring it), then measured in any number of windows.
+struct FigureValues {
+  std::vector<double> speedOffMean;   // mm/min, the path speed less its moving average; NaN where the speed is not finite
+  std::vector<double> jerk;           // mm/s^3, |j|
+  std::vector<float> inconsistency;   // mm/min, adjacent-pass speed inconsistency
+  std::vector<float> deviation;       // um, predicted deviation (signed); empty without feedback
+};
+
+FigureValues figureValues(const Trajectory& samples, const SurfaceMesh& mesh);
+QualityFigures measureQualityFigures(const FigureValues& values, const Trajectory& samples, const SurfaceMesh& mesh,
+                                     const FigureWindow& window = {});
 QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window = {});
 
 // The nearest-rank percentile (0..100) of finite values; 0 when there are none. Reorders `values`.

@@ -47,6 +47,8 @@ std::optional<Quantity> parseQuantity(const std::string& name);
 // Values per sample (Quantity::onSurface == false). Throws InputError when the samples lack
 // what the quantity needs (e.g. no feedback channels).
 std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples);
+// Several of them, each as sampleQuantity gives it: the motion is derived once for all.
+std::vector<std::vector<double>> sampleQuantities(const std::vector<Quantity>& qs, const Trajectory& samples);
 // The same values for samples [first, last) only (clamped to the samples), into `out`: what a
 // view of part of a long run needs, without the whole run's values in memory.
 void sampleQuantityRange(Quantity q, const Trajectory& samples, std::size_t first, std::size_t last, float* out);
