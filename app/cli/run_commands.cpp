@@ -20,7 +20,8 @@ namespace {
 // each run allocating and freeing channels of a hundred megabytes. Taken from fresh mappings,
 // every page of them faults in anew, which on a virtual machine took two thirds of `optimize
 // --all cameo.nc` (343 s; 117 s with the heap kept): freed memory stays with the process for
-// the next candidate (peak 4.35 GB instead of 4.07). A thread's own arena is a mapping of its
+// the next candidate (peak 4.35 GB instead of 4.07; 4.5-4.6 GB since the figures and the
+// paths' distance are measured on a second thread). A thread's own arena is a mapping of its
 // own, given back when it empties: every thread allocates from the one heap.
 void keepFreedMemory() {
   mallopt(M_MMAP_MAX, 0);

@@ -3,6 +3,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <limits>
 #include <vector>
@@ -122,4 +123,29 @@ TEST(qualityFigures, OneRunsValuesMeasuredInTwoWindowsAreEachWindowsFigures) {
   }
   EXPECT_LT(measureQualityFigures(values, t, mesh, right).samples, measureQualityFigures(values, t, mesh).samples);
   EXPECT_GT(measureQualityFigures(values, t, mesh, right).samples, 0u);
+}
+
+// A sample whose speed is not finite (a dump's own "v" channel with gaps) is left out of every
+// figure, and only it: not its neighbours in the moving average.
+TEST(qualityFigures, SamplesOfNoFiniteSpeedAreLeftOut) {
+  const Program program = interpretGcode("G21 G90 G17\nG0 X0 Y0 Z1\nG1 Z0 F2000\nG1 X10\nG1 Y0.5\nG1 X0\nG1 Y1\nG1 X10\nG0 Z5\nM2\n",
+                                         "three-passes.nc")
+                              .program;
+  auto samples = std::make_shared<Trajectory>(simulateRun(program, defaultMachine()));
+  const SurfaceRun run = surfaceRun(samples, &program);
+  const SurfaceMesh& mesh = *run.mesh;
+  ASSERT_GT(mesh.vertexSample.size(), 20u);
+  const std::size_t all = measureQualityFigures(*samples, mesh).samples;
+  std::vector<double> speed = sampleQuantity(Quantity::Speed, *samples);
+  speed[mesh.vertexSample[5]] = std::numeric_limits<double>::quiet_NaN();
+  speed[mesh.vertexSample[10]] = std::numeric_limits<double>::infinity();
+  speed[mesh.vertexSample[15]] = -std::numeric_limits<double>::infinity();
+  samples->extra.emplace_back("v", speed);
+  const QualityFigures f = measureQualityFigures(*samples, mesh);
+  EXPECT_EQ(f.samples, all - 3);
+  EXPECT_TRUE(std::isfinite(f.speedFluctuation));
+  EXPECT_GT(f.speedFluctuation, 0.0);
+  FigureValues ofAnotherSurface = figureValues(*samples, mesh);
+  ofAnotherSurface.jerk.pop_back();
+  EXPECT_THROW(measureQualityFigures(ofAnotherSurface, *samples, mesh), std::invalid_argument);
 }

@@ -92,15 +92,22 @@ TEST(quantities, SampleValuesAreTheWholeDerivation) {
 // Several quantities at once (the figures take speed and jerk together) are each the values
 // sampleQuantity gives, whether derived, per axis or read as they are.
 TEST(quantities, SeveralAtOnceAreEachTheSameValues) {
-  const Trajectory t = wavyPath(140'000);
+  Trajectory t = wavyPath(140'000);
+  const Kinematics k = deriveKinematics(t.x.data(), t.y.data(), t.z.data(), nullptr, t.size(), t.cycle, true);
   const std::vector<Quantity> asked = {Quantity::Jerk, Quantity::Line, Quantity::Speed, Quantity::VelocityX, Quantity::Time};
-  const std::vector<std::vector<double>> together = sampleQuantities(asked, t);
-  ASSERT_EQ(together.size(), asked.size());
-  for (std::size_t j = 0; j < asked.size(); ++j) {
-    const std::vector<double> alone = sampleQuantity(asked[j], t);
-    ASSERT_EQ(together[j].size(), alone.size());
-    for (std::size_t i = 0; i < alone.size(); ++i) ASSERT_EQ(together[j][i], alone[i]) << quantityInfo(asked[j]).name << " " << i;
+  for (const bool storedJerk : {false, true}) {
+    if (storedJerk) t.extra.emplace_back("jerk", std::vector<double>(t.size(), 7.5));
+    const std::vector<std::vector<double>> together = sampleQuantities(asked, t);
+    ASSERT_EQ(together.size(), asked.size());
+    for (std::size_t i = 0; i < t.size(); ++i) {
+      ASSERT_EQ(together[0][i], storedJerk ? 7.5 : k.jerk[i]) << i;
+      ASSERT_EQ(together[1][i], double(t.line[i])) << i;
+      ASSERT_EQ(together[2][i], 60 * k.speed[i]) << i;
+      ASSERT_EQ(together[3][i], 60 * k.axisVel[0][i]) << i;
+      ASSERT_EQ(together[4][i], t.timeAt(i)) << i;
+    }
   }
+  EXPECT_THROW(sampleQuantities({Quantity::Speed, Quantity::FollowingError}, t), InputError);
 }
 
 // A view of part of a run (the app's curves) gets exactly the values of the whole derivation,

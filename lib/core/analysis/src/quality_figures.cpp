@@ -7,6 +7,7 @@
 #include <cmath>
 #include <future>
 #include <limits>
+#include <stdexcept>
 #include <vector>
 
 #include "isurface/analysis/quantities.h"
@@ -89,6 +90,10 @@ QualityFigures measureQualityFigures(const FigureValues& values, const Trajector
                                      const FigureWindow& window) {
   QualityFigures f;
   if (samples.size() == 0 || mesh.vertexSample.empty()) return f;
+  const std::size_t vertices = mesh.vertexSample.size();
+  if (values.speedOffMean.size() != vertices || values.jerk.size() != vertices || values.inconsistency.size() != vertices ||
+      (!values.deviation.empty() && values.deviation.size() != vertices))
+    throw std::invalid_argument("figure values of another surface");
   f.hasDeviation = !values.deviation.empty();
   std::vector<double> jerks, inconsistencies, deviations;
   double sumSquares = 0, inconsistencySum = 0;

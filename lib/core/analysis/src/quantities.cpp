@@ -269,12 +269,12 @@ std::vector<double> sampleQuantity(Quantity q, const Trajectory& samples) {
 }
 
 std::vector<std::vector<double>> sampleQuantities(const std::vector<Quantity>& qs, const Trajectory& samples) {
+  for (const Quantity q : qs) checkSampleQuantity(q, samples);  // before a channel's memory is taken
   const std::size_t n = samples.size();
   std::vector<std::vector<double>> out(qs.size(), std::vector<double>(n));
   std::vector<std::size_t> derived;  // of qs
   bool perAxis = false;
   for (std::size_t j = 0; j < qs.size(); ++j) {
-    checkSampleQuantity(qs[j], samples);
     if (isKinematic(qs[j]) && !storedChannel(qs[j], samples)) {
       derived.push_back(j);
       perAxis = perAxis || isPerAxis(qs[j]);

@@ -42,6 +42,7 @@ struct FigureValues {
 };
 
 FigureValues figureValues(const Trajectory& samples, const SurfaceMesh& mesh);
+// `values`: figureValues(samples, mesh); std::invalid_argument when they are of another surface.
 QualityFigures measureQualityFigures(const FigureValues& values, const Trajectory& samples, const SurfaceMesh& mesh,
                                      const FigureWindow& window = {});
 QualityFigures measureQualityFigures(const Trajectory& samples, const SurfaceMesh& mesh, const FigureWindow& window = {});
