@@ -63,9 +63,6 @@ FigureValues figureValues(const Trajectory& samples, const SurfaceMesh& mesh) {
   std::future<std::vector<float>> inconsistency = std::async(std::launch::async, [&] {
     return vertexQuantity(Quantity::SpeedInconsistency, samples, mesh);
   });
-  std::future<std::vector<float>> deviation;
-  if (samples.hasFeedback())
-    deviation = std::async(std::launch::deferred, [&] { return vertexQuantity(Quantity::Deviation, samples, mesh); });
   {
     const std::vector<std::vector<double>> speedAndJerk = sampleQuantities({Quantity::Speed, Quantity::Jerk}, samples);
     const std::vector<double>& speed = speedAndJerk[0];
@@ -81,7 +78,7 @@ FigureValues figureValues(const Trajectory& samples, const SurfaceMesh& mesh) {
       values.jerk[v] = jerk[i];
     }
   }
-  if (deviation.valid()) values.deviation = deviation.get();
+  if (samples.hasFeedback()) values.deviation = vertexQuantity(Quantity::Deviation, samples, mesh);
   values.inconsistency = inconsistency.get();
   return values;
 }
