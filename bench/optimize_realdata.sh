@@ -15,7 +15,7 @@ set -euo pipefail
 cd "$(dirname "$0")/.."
 if [ "${1:-}" = --every-mode ]; then
   exec "${2:-build}/bin/cli_tests" --gtest_also_run_disabled_tests \
-    --gtest_filter='regionOptimizer.*LongRealProgram:regionOptimizer.NoModeWritesAWorseCameo*:regionOptimizer.NoModeWritesAWorseStellabee'
+    --gtest_filter='regionOptimizer.*LongRealProgram:regionOptimizerLong.NoModeWritesAWorseCameo*:regionOptimizerLong.NoModeWritesAWorseStellabee'
 fi
 build=${1:-build}
 shift || true

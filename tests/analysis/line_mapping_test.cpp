@@ -127,7 +127,7 @@ RecordingAgreement mapRecording(const Trajectory& recording, const Program& prog
 TEST(lineMapping, recordingMatchesLinuxcncProgramLines) {
   const std::string tracePath = test::realdataPath("linuxcnc_test.halsampler.txt");
   const std::string programPath = test::realdataPath("linuxcnc_test.ngc");
-  if (!test::fileExists(tracePath) || !test::fileExists(programPath)) GTEST_SKIP() << "no shared realdata";
+  ISURFACE_SKIP_WITHOUT_REALDATA(tracePath, programPath);
   const Trajectory recording = importHalsampler(tracePath);
   const InterpretResult interpreted = interpretGcodeFile(programPath);
   ASSERT_TRUE(interpreted.ok());

@@ -94,7 +94,7 @@ TEST(compareCli, badInputsExitWithTwoAndWriteNothing) {
 TEST(compareCli, linuxcncRecordingAgainstOurSimulation) {
   const std::string recording = realdataPath("linuxcnc_test.halsampler.txt");
   const std::string program = realdataPath("linuxcnc_test.ngc");
-  if (!fileExists(recording)) GTEST_SKIP() << "no shared realdata";
+  ISURFACE_SKIP_WITHOUT_REALDATA(recording, program);
   const std::string trace = scratch("lcnc.biip");
   ASSERT_EQ(runCli("import halsampler " + recording + " -o " + trace).exitCode, 0);
   const std::string sim = simulated(program, "lcnc-sim.biip", sourcePath("resources/machines/linuxcnc-sim.json"));

@@ -128,7 +128,7 @@ TEST(gcodeCanonCli, FailedOutputLeavesNoFile) {
 
 TEST(gcodeCanonCli, RealProgram) {
   const std::string path = test::realdataPath("communicator.nc");
-  if (!test::fileExists(path)) GTEST_SKIP() << "no communicator.nc";
+  ISURFACE_SKIP_WITHOUT_REALDATA(path);
   const std::string out = (test::scratchDir() / "communicator.canon").string();
   const test::CommandResult r = test::runCli("canon " + path + " -o " + out);
   EXPECT_EQ(r.exitCode, 0) << r.err;

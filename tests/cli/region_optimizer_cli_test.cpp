@@ -68,7 +68,7 @@ TEST(regionOptimizer, ProgressSaysWhichCandidateIsSimulated) {
 // time and stays within 0.01 mm of the path; whether it is kept is the closed loop's call (no
 // figure, the predicted deviation included, may grow by more than 2 %): kept, the output is the
 // new program; not kept, it is the old one byte for byte and the report says why.
-TEST(regionOptimizer, AutoOnTheTransitionSampleHalvesFluctuationAndInconsistency) {
+TEST(regionOptimizerLong, AutoOnTheTransitionSampleHalvesFluctuationAndInconsistency) {
   const std::string input = sourcePath("samples/transition-surface.nc");
   const std::string out = (scratchDir() / "transition-auto.nc").string(), report = (scratchDir() / "auto.json").string();
   const CommandResult r = runCli("optimize " + input + " --auto -o " + out + " --report " + report);
@@ -191,21 +191,19 @@ const std::vector<std::string> kWholeProgramModes = {"--all", "--auto", "--auto 
 }  // namespace
 
 // Whatever the mode and the objective, what `optimize` writes is never worse than what it was
-// given (expectNeverWorse). On every bundled sample and on a program written as a CAM system
-// writes one (tests/support/cam_style_transition.h).
-TEST(regionOptimizer, NoModeWritesAWorseProgram) {
+// given (expectNeverWorse): on a program written as a CAM system writes one
+// (tests/support/cam_style_transition.h), every mode, small enough for every run of the suite.
+TEST(regionOptimizer, NoModeWritesAWorseCamStyleProgram) {
   const std::string cam = writeScratch("cam-style-transition.nc", isurface::testing::camStyleTransitionProgram());
-#ifdef ISURFACE_SANITIZED
-  // Under the sanitizers, which look for memory errors rather than results, the small CAM-style
-  // program alone runs every path (the samples take minutes there).
-  const std::pair<std::string, std::vector<std::string>> cases[] = {{cam, kEveryMode}};
-#else
+  for (const std::string& mode : kEveryMode) EXPECT_TRUE(treated(expectNeverWorse(cam, mode))) << mode;
+}
+
+// The same on every bundled sample (minutes: label `long`).
+TEST(regionOptimizerLong, NoModeWritesAWorseSample) {
   const std::pair<std::string, std::vector<std::string>> cases[] = {
       {sourcePath("samples/transition-surface.nc"), kEveryMode},
-      {cam, kEveryMode},
       {sourcePath("samples/wuzhishan.nc"), {"--auto", "--all"}},
       {sourcePath("samples/cola-bottle-bottom.nc"), {"--auto"}}};
-#endif
   for (const auto& [program, modes] : cases)
     for (const std::string& mode : modes) EXPECT_TRUE(treated(expectNeverWorse(program, mode))) << program << " " << mode;
 }
@@ -221,8 +219,8 @@ TEST(regionOptimizer, NoModeWritesAWorseProgram) {
 // word iSurface refuses: those are refused with an error, the others never, but for a region
 // where nothing between passes can be measured (linuxcnc_test.ngc's box: the outlines of slots
 // and circles of a 2D profiling program, no surface).
-TEST(regionOptimizer, NoModeWritesAWorseSmallRealProgram) {
-  if (!fileExists(realdataPath("communicator.nc"))) GTEST_SKIP() << "no shared realdata";
+TEST(regionOptimizerLong, NoModeWritesAWorseSmallRealProgram) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(realdataPath("communicator.nc"));
   const std::vector<std::string> treated = {"communicator.nc", "linuxcnc_test.ngc"};
   int kept = 0;
   for (const char* name : {"communicator.nc", "linuxcnc_test.ngc", "linuxcnc_comp.ngc", "linuxcnc_daisy.ngc",
@@ -253,18 +251,18 @@ const char* const kLongRealPrograms[] = {"cameo.nc", "stellabee1.ngc"};
 
 // One test per mode, so that they run beside each other: each simulates the whole program once per
 // candidate (5 minutes here on a slow machine).
-TEST(regionOptimizer, NoModeWritesAWorseCameo) {
-  if (!fileExists(realdataPath("cameo.nc"))) GTEST_SKIP() << "no shared realdata";
+TEST(regionOptimizerLong, NoModeWritesAWorseCameo) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(realdataPath("cameo.nc"));
   expectNeverRefused("cameo.nc", {"--all"});
 }
 
-TEST(regionOptimizer, NoModeWritesAWorseCameoAuto) {
-  if (!fileExists(realdataPath("cameo.nc"))) GTEST_SKIP() << "no shared realdata";
+TEST(regionOptimizerLong, NoModeWritesAWorseCameoAuto) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(realdataPath("cameo.nc"));
   expectNeverRefused("cameo.nc", {"--auto"});
 }
 
-TEST(regionOptimizer, NoModeWritesAWorseStellabee) {
-  if (!fileExists(realdataPath("stellabee1.ngc"))) GTEST_SKIP() << "no shared realdata";
+TEST(regionOptimizerLong, NoModeWritesAWorseStellabee) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(realdataPath("stellabee1.ngc"));
   expectNeverRefused("stellabee1.ngc", {"--auto"});
 }
 

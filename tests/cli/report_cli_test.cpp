@@ -87,7 +87,7 @@ TEST(Report, ABundledSample) {
 
 TEST(Report, AProgramWrittenByOthers) {
   const std::string program = std::string(ISURFACE_SHARED_DIR) + "/realdata/linuxcnc_test.ngc";
-  if (!fs::exists(program)) GTEST_SKIP() << program << " is not here";
+  ISURFACE_SKIP_WITHOUT_REALDATA(program);
   checkReport("linuxcnc-test", program);
 }
 
@@ -214,7 +214,7 @@ TEST(Report, ASecondRunStandsBesideIt) {
 
 // The program re-optimised: before and after maps, the difference, and the figures of the
 // region and of the whole program.
-TEST(Report, AnOptimisationShowsBeforeAndAfter) {
+TEST(ReportLong, AnOptimisationShowsBeforeAndAfter) {
   const std::string html = (scratchDir() / "optimised.html").string(), json = (scratchDir() / "optimised.json").string();
   const auto r = runCli("report " + std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc -o " + html +
                         " --json " + json + " --regions 1 --optimize auto");

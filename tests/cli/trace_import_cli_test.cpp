@@ -61,7 +61,7 @@ TEST(traceImport, cliRejectsBadInputsWithExitCode2) {
 
 TEST(traceImport, halsamplerRecordingKeepsLines) {
   const std::string path = realdataPath("linuxcnc_test.halsampler.txt");
-  if (!test::fileExists(path)) GTEST_SKIP() << "no shared realdata";
+  ISURFACE_SKIP_WITHOUT_REALDATA(path);
   const std::vector<std::uint32_t> expected = recordedLines(path);
   const std::string out = (scratchDir() / "linuxcnc.biip").string();
   const auto r = runCli("import halsampler " + path + " -o " + out);
@@ -87,7 +87,7 @@ TEST(traceImport, halsamplerRecordingKeepsLines) {
 
 TEST(traceImport, umichPresetImports) {
   const std::string path = realdataPath("umich_experiment_01.csv");
-  if (!test::fileExists(path)) GTEST_SKIP() << "no shared realdata";
+  ISURFACE_SKIP_WITHOUT_REALDATA(path);
   const Trajectory t = importCsv(path, umichPreset());
   EXPECT_EQ(t.size(), 1055u);
   EXPECT_DOUBLE_EQ(t.cycle, 0.1);

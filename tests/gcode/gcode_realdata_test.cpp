@@ -38,8 +38,7 @@ double worstRadiusMismatch(const Program& p) {
 
 }  // namespace
 
-#define REQUIRE_REALDATA(name)                                                  \
-  if (!test::fileExists(test::realdataPath(name))) GTEST_SKIP() << "no " << name
+#define REQUIRE_REALDATA(name) ISURFACE_SKIP_WITHOUT_REALDATA(test::realdataPath(name))
 
 TEST(gcodeRealdata, Cameo) {
   REQUIRE_REALDATA("cameo.nc");

@@ -141,7 +141,7 @@ TEST(rs274Differential, LinuxCncProgramsGiveRs274sMoves) {
   std::size_t compared = 0;
   for (const char* name : {"linuxcnc_factorial", "linuxcnc_flowsnake", "linuxcnc_daisy", "linuxcnc_comp"}) {
     const std::string program = realdataPath(std::string(name) + ".ngc");
-    if (!fileExists(program)) GTEST_SKIP() << program << " is missing";
+    ISURFACE_SKIP_WITHOUT_REALDATA(program);
     expectSameMoves(program, sourcePath("tests/data/rs274/realdata/" + std::string(name) + ".canon"), compared);
   }
   EXPECT_GT(compared, 3000u);

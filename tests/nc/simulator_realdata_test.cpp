@@ -31,8 +31,7 @@ MotionExtremes check(const Program& p, const Machine& m, bool geometry) {
   return checker.finish();
 }
 
-#define REQUIRE_REALDATA(name)                                               \
-  if (!isurface::test::fileExists(realdataPath(name))) GTEST_SKIP() << "no " << realdataPath(name)
+#define REQUIRE_REALDATA(name) ISURFACE_SKIP_WITHOUT_REALDATA(realdataPath(name))
 
 }  // namespace
 

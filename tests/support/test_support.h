@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <initializer_list>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -19,6 +20,16 @@ inline std::string realdataPath(const std::string& name) {
   return std::string(ISURFACE_SHARED_DIR) + "/realdata/" + name;
 }
 inline bool fileExists(const std::string& path) { return std::filesystem::exists(path); }
+
+// Tests that need the real inputs of ../shared/realdata (programs and traces written by others,
+// not in the repository) skip with one line naming the folder when it is not beside the clone.
+#define ISURFACE_SKIP_WITHOUT_REALDATA(...)                                                          \
+  do {                                                                                             \
+    for (const std::string& needed : std::initializer_list<std::string>{__VA_ARGS__})              \
+      if (!::isurface::test::fileExists(needed))                                                   \
+        GTEST_SKIP() << "needs " << needed << " (the real inputs of " << ISURFACE_SHARED_DIR        \
+                     << "/realdata/, not beside this clone)";                                      \
+  } while (0)
 
 inline std::string readFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

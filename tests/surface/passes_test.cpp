@@ -412,7 +412,7 @@ INSTANTIATE_TEST_SUITE_P(parts, SamplePartPasses,
 
 TEST(passes, CameoRasterPrefix) {
   const std::string path = realdataPath("cameo.nc");
-  if (!fileExists(path)) GTEST_SKIP() << "no " << path;
+  ISURFACE_SKIP_WITHOUT_REALDATA(path);
   // The first 600 lines: full-width raster lines along X with Y steps of 0.25 to 0.5 mm.
   std::ifstream in(path);
   std::string text, line;

@@ -96,7 +96,7 @@ TEST(regionOptimisation, ACandidateWorseThanTheProgramIsNotKept) {
   EXPECT_TRUE(whyNotKept(r).has_value());
 }
 
-TEST(regionOptimisation, ACandidateNoWorseOnAnyFigureIsKept) {
+TEST(regionOptimisationLong, ACandidateNoWorseOnAnyFigureIsKept) {
   // The worst region of another sample, as --auto takes it: better on every figure, not slower.
   const std::string path = sourcePath("samples/wuzhishan.nc");
   const Program program = readProgram(path);
@@ -161,7 +161,7 @@ TEST(regionOptimisation, ACandidateThatHelpsByLessThanTwoPercentIsNotWritten) {
   }
 }
 
-TEST(regionOptimisation, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedAgain) {
+TEST(regionOptimisationLong, ACandidateThatWritesAnEarlierOnesProgramIsNotSimulatedAgain) {
   // Every interval of the transition's worst region is planned at the programmed feed, so the
   // feeds planned across passes change nothing: those candidates are the paper's plan again.
   const ChosenRegion worst = worstRegion(transition().before, "transition-surface.nc");

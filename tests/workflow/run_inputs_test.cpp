@@ -103,7 +103,7 @@ TEST(runInputs, AHaasProgramReadsAsItsControlReadsIt) {
   // Mastercam output for a Haas control: inch by the control's default (its G20 comes later in
   // some of its programs), Fanuc's G80 that leaves G0-G3 in effect.
   const std::string program = realdataPath("nist_827-9999-904_OP1.NC");
-  if (!fileExists(program)) GTEST_SKIP() << program << " is missing";
+  ISURFACE_SKIP_WITHOUT_REALDATA(program);
   EXPECT_THROW(readProgram(program), InputError);  // RS274/NGC: axis words after G80
   std::vector<std::string> warnings;
   const Program p = readProgram(program, {}, &warnings, loadMachine(sourcePath("resources/machines/fanuc-inch.json")));

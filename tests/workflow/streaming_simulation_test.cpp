@@ -121,7 +121,7 @@ TEST(StreamingFeedPlan, EverySegmentEqualsTheWholeProgramPlan) {
   }
 }
 
-TEST(StreamingSimulation, SamplesEqualTheWholeProgramSimulation) {
+TEST(StreamingSimulationLong, SamplesEqualTheWholeProgramSimulation) {
   const Machine m = defaultMachine();
   for (const std::string& path : test::samplesAndRealPrograms()) {
     SCOPED_TRACE(path);
