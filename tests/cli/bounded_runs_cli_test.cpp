@@ -48,7 +48,7 @@ TEST(BoundedRuns, BinaryDataOnAPipeIsRefusedAtOnce) {
 TEST(BoundedRuns, AProgramThroughAPipeReadsAsFromItsFile) {
   const std::string program = writeScratch("piped.nc", "G21 G90\nG1 X10 Y5 F600\nG2 X20 Y5 I5 J0\nM2\n");
   const auto direct = runCli("canon " + program);
-  const std::string piped = std::string("sh -c 'cat ") + program + " | " + ISURFACE_CLI + " canon /dev/stdin'";
+  const std::string piped = std::string("sh -c 'cat ") + program + " | " + ::isurface::test::cliProgram() + " canon /dev/stdin'";
   const auto throughPipe = isurface::test::runShell(piped);
   EXPECT_EQ(direct.exitCode, 0);
   EXPECT_EQ(throughPipe.exitCode, 0) << throughPipe.err;

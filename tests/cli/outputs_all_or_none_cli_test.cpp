@@ -94,7 +94,7 @@ TEST(Outputs, ALegalLongNameIsWritten) {
 
 TEST(Outputs, StandardOutputOnAFullDiskIsAFailure) {
   for (const std::string args : {"sample --list", "sts --paper-tables"}) {
-    const std::string command = std::string(ISURFACE_CLI) + " " + args + " >/dev/full 2>/dev/null </dev/null";
+    const std::string command = std::string(::isurface::test::cliProgram()) + " " + args + " >/dev/full 2>/dev/null </dev/null";
     const int status = std::system(command.c_str());
     ASSERT_TRUE(WIFEXITED(status));
     EXPECT_NE(WEXITSTATUS(status), 0) << args << " wrote to a full disk and said it succeeded";
@@ -110,7 +110,7 @@ TEST(Outputs, ASignalLeavesNoTemporaryFileBehind) {
     const pid_t child = ::fork();
     ASSERT_GE(child, 0);
     if (child == 0) {
-      ::execl(ISURFACE_CLI, ISURFACE_CLI, "simulate", program.c_str(), "-o", dump.c_str(), static_cast<char*>(nullptr));
+      ::execl(::isurface::test::cliProgram(), ::isurface::test::cliProgram(), "simulate", program.c_str(), "-o", dump.c_str(), static_cast<char*>(nullptr));
       ::_exit(127);
     }
     bool writing = false;

@@ -39,7 +39,7 @@ TEST(regionOptimizer, CommandWritesTheProgramAndTheComparison) {
 // each update a "LABEL NN%" line that a reader parses; no terminal codes down a pipe.
 TEST(regionOptimizer, ProgressSaysWhichCandidateIsSimulated) {
   const std::string out = (scratchDir() / "optimized-progress.nc").string();
-  const CommandResult r = runShell("ISURFACE_PROGRESS=1 " + std::string(ISURFACE_CLI) + " optimize " +
+  const CommandResult r = runShell("ISURFACE_PROGRESS=1 " + std::string(::isurface::test::cliProgram()) + " optimize " +
                                    sourcePath("samples/transition-surface.nc") + " --lines 105-400 -o " + out);
   ASSERT_EQ(r.exitCode, 0) << r.err;
   EXPECT_NE(r.err.find("\roptimising, candidate 1: each pass its own interval feeds "), std::string::npos) << r.err;

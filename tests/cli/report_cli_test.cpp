@@ -81,12 +81,12 @@ std::string checkReport(const std::string& name, const std::string& program) {
 }  // namespace
 
 TEST(Report, ABundledSample) {
-  const std::string html = checkReport("transition", std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc");
+  const std::string html = checkReport("transition", std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc");
   EXPECT_NE(readAll(html).find("Programmed feeds"), std::string::npos);
 }
 
 TEST(Report, AProgramWrittenByOthers) {
-  const std::string program = std::string(ISURFACE_SHARED_DIR) + "/realdata/linuxcnc_test.ngc";
+  const std::string program = std::string(::isurface::test::sharedDir()) + "/realdata/linuxcnc_test.ngc";
   ISURFACE_SKIP_WITHOUT_REALDATA(program);
   checkReport("linuxcnc-test", program);
 }
@@ -94,7 +94,7 @@ TEST(Report, AProgramWrittenByOthers) {
 // The page as a reader sees it: Debian's Chromium (apt-get install chromium) draws it headless.
 TEST(Report, OpensInABrowserAndIsNotBlank) {
   if (!fs::exists("/usr/bin/chromium")) GTEST_SKIP() << "Debian's chromium is not installed";
-  const std::string html = checkReport("browser", std::string(ISURFACE_SOURCE_DIR) + "/samples/cola-bottle-bottom.nc");
+  const std::string html = checkReport("browser", std::string(::isurface::test::sourceDir()) + "/samples/cola-bottle-bottom.nc");
   const std::string shot = (scratchDir() / "report-shot.png").string();
   const auto r = runShell("timeout 120 chromium --headless --no-sandbox --disable-gpu --hide-scrollbars "
                           "--window-size=1200,1600 --enable-logging=stderr --v=0 --screenshot=" + shot + " file://" + html);
@@ -110,7 +110,7 @@ TEST(Report, OpensInABrowserAndIsNotBlank) {
 
 // A CI job gates on the report: a threshold crossed is exit code 1, the report written anyway.
 TEST(Report, AThresholdCrossedFailsTheJob) {
-  const std::string program = std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc";
+  const std::string program = std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc";
   const std::string html = (scratchDir() / "gate.html").string();
   const auto crossed = runCli("report " + program + " -o " + html + " --regions 1 --fail-on 'jerk>1'");
   EXPECT_EQ(crossed.exitCode, 1) << crossed.err;
@@ -127,7 +127,7 @@ TEST(Report, ABatchRanksEveryProgramOfAFolder) {
   const fs::path in = scratchDir() / "batch-in", out = scratchDir() / "batch-out";
   fs::remove_all(in), fs::remove_all(out);
   fs::create_directories(in);
-  fs::copy_file(std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc", in / "transition.nc");
+  fs::copy_file(std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc", in / "transition.nc");
   std::ofstream(in / "stops.nc") << "G21 G90\nG1 X10 F600\nG4 P-\n";  // an error: listed, not reported
   std::ofstream(in / "notes.txt") << "\x01\x02 binary";              // not a program: left out
   const auto r = runCli("report --batch " + in.string() + " -o " + out.string() + " --regions 1");
@@ -161,7 +161,7 @@ std::string sectionOf(const std::string& html, const std::string& id) {
 // Each region gets a close-up of the map around it, besides where it lies on the whole part.
 TEST(Report, EachRegionHasACloseUp) {
   const std::string html = (scratchDir() / "closeups.html").string(), json = (scratchDir() / "closeups.json").string();
-  const auto r = runCli("report " + std::string(ISURFACE_SOURCE_DIR) + "/samples/wuzhishan.nc -o " + html + " --json " +
+  const auto r = runCli("report " + std::string(::isurface::test::sourceDir()) + "/samples/wuzhishan.nc -o " + html + " --json " +
                         json + " --regions 2");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string text = readAll(html);
@@ -191,9 +191,9 @@ TEST(Report, EachRegionHasACloseUp) {
 // A second run of the program (another machine's dump) beside this one: both speed maps, the
 // difference and the figures of both, from the independent figures module.
 TEST(Report, ASecondRunStandsBesideIt) {
-  const std::string program = std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc";
+  const std::string program = std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc";
   const std::string other = (scratchDir() / "transition-linuxcnc.biip").string();
-  ASSERT_EQ(runCli("simulate " + program + " -o " + other + " --machine " + std::string(ISURFACE_SOURCE_DIR) +
+  ASSERT_EQ(runCli("simulate " + program + " -o " + other + " --machine " + std::string(::isurface::test::sourceDir()) +
                    "/resources/machines/linuxcnc-sim.json").exitCode, 0);
   const std::string html = (scratchDir() / "beside.html").string(), json = (scratchDir() / "beside.json").string();
   const auto r = runCli("report " + program + " -o " + html + " --json " + json + " --regions 1 --compare " + other);
@@ -207,7 +207,7 @@ TEST(Report, ASecondRunStandsBesideIt) {
   EXPECT_GT(c["this_run"]["surface_samples"].get<double>(), 1000);
   EXPECT_NE(c["this_run"]["machining_time_s"].get<double>(), c["compared_run"]["machining_time_s"].get<double>());
   // A compared run that is not of this program is refused, as compare refuses it.
-  const auto wrong = runCli("report " + program + " -o " + html + " --compare " + std::string(ISURFACE_SOURCE_DIR) +
+  const auto wrong = runCli("report " + program + " -o " + html + " --compare " + std::string(::isurface::test::sourceDir()) +
                             "/samples/wuzhishan.nc");
   EXPECT_EQ(wrong.exitCode, 2) << wrong.err;
 }
@@ -216,7 +216,7 @@ TEST(Report, ASecondRunStandsBesideIt) {
 // region and of the whole program.
 TEST(ReportLong, AnOptimisationShowsBeforeAndAfter) {
   const std::string html = (scratchDir() / "optimised.html").string(), json = (scratchDir() / "optimised.json").string();
-  const auto r = runCli("report " + std::string(ISURFACE_SOURCE_DIR) + "/samples/transition-surface.nc -o " + html +
+  const auto r = runCli("report " + std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc -o " + html +
                         " --json " + json + " --regions 1 --optimize auto");
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string section = sectionOf(readAll(html), "optimisation");

@@ -71,7 +71,7 @@ TEST(window, StartsDrawsAndQuitsUnderXvfb) {
   const std::string home = (scratchDir() / "home").string();
   std::filesystem::create_directories(home);
   const std::string command = "HOME=" + home + " timeout 120 xvfb-run -a -s '-screen 0 1280x800x24' " +
-                              std::string(ISURFACE_GUI) + " --exit-after-frames 20 " +
+                              std::string(::isurface::test::guiProgram()) + " --exit-after-frames 20 " +
                               sourcePath("samples/wuzhishan.nc") + " > " + home + "/log 2>&1";
   const int status = std::system(command.c_str());
   EXPECT_EQ(WEXITSTATUS(status), 0) << readFile(home + "/log");
@@ -154,9 +154,9 @@ TEST(window, AnIdleWindowTakesNoProcessorTime) {
   // Processor ticks (1/100 s) the window's process takes in 2 s windows, until two in a row are
   // quiet (the program has loaded and the window settled) or 90 s have passed.
   const std::string script =
-      "HOME=" + home + " timeout 150 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(ISURFACE_GUI) + " " + program +
+      "HOME=" + home + " timeout 150 xvfb-run -a -s '-screen 0 1280x800x24' " + std::string(::isurface::test::guiProgram()) + " " + program +
       " > " + home + "/log 2>&1 &\n"
-      "pid=; for i in $(seq 1 100); do pid=$(pgrep -f '^" + std::string(ISURFACE_GUI) + " " + program + "' | head -1); "
+      "pid=; for i in $(seq 1 100); do pid=$(pgrep -f '^" + std::string(::isurface::test::guiProgram()) + " " + program + "' | head -1); "
       "[ -n \"$pid\" ] && break; sleep 0.2; done\n"
       "[ -z \"$pid\" ] && { echo 'no window process'; exit 2; }\n"
       "quiet=0; last=; for i in $(seq 1 45); do a=$(awk '{print $14+$15}' /proc/$pid/stat); sleep 2; "

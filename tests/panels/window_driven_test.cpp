@@ -63,7 +63,7 @@ class DrivenWindow {
     server_ = spawn({xvfb, ":" + std::to_string(display_), "-screen", "0", "1600x1000x24", "-nolisten", "tcp"}, {},
                     (home / "xvfb.log").string());
     waitUntil([&] { return std::filesystem::exists("/tmp/.X11-unix/X" + std::to_string(display_)); }, 20);
-    std::vector<std::string> args{ISURFACE_GUI};
+    std::vector<std::string> args{::isurface::test::guiProgram()};
     args.insert(args.end(), files.begin(), files.end());
     window_ = spawn(args, {"DISPLAY=:" + std::to_string(display_), "HOME=" + home.string(), "ISURFACE_STATE_FILE=" + statePath()},
                     logPath());

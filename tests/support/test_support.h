@@ -11,13 +11,15 @@
 #include <string>
 #include <sys/wait.h>
 
+#include "test_locations.h"
+
 namespace isurface::test {
 
 inline std::string sourcePath(const std::string& relative) {
-  return std::string(ISURFACE_SOURCE_DIR) + "/" + relative;
+  return std::string(sourceDir()) + "/" + relative;
 }
 inline std::string realdataPath(const std::string& name) {
-  return std::string(ISURFACE_SHARED_DIR) + "/realdata/" + name;
+  return std::string(sharedDir()) + "/realdata/" + name;
 }
 inline bool fileExists(const std::string& path) { return std::filesystem::exists(path); }
 
@@ -27,7 +29,7 @@ inline bool fileExists(const std::string& path) { return std::filesystem::exists
   do {                                                                                             \
     for (const std::string& needed : std::initializer_list<std::string>{__VA_ARGS__})              \
       if (!::isurface::test::fileExists(needed))                                                   \
-        GTEST_SKIP() << "needs " << needed << " (the real inputs of " << ISURFACE_SHARED_DIR        \
+        GTEST_SKIP() << "needs " << needed << " (the real inputs of " << ::isurface::test::sharedDir() \
                      << "/realdata/, not beside this clone)";                                      \
   } while (0)
 
@@ -66,7 +68,7 @@ inline std::filesystem::path scratchDir() {
   return folder.path();
 }
 
-#ifdef ISURFACE_CLI  // only tests/cli runs the command line
+#ifdef ISURFACE_TESTS_RUN_CLI  // only tests/cli runs the command line
 struct CommandResult {
   int exitCode = -1;
   std::string out;  // stdout
@@ -88,7 +90,7 @@ inline CommandResult runShell(const std::string& commandLine) {
 }
 
 // Runs isurface-cli with the given argument string (shell syntax).
-inline CommandResult runCli(const std::string& args) { return runShell(std::string(ISURFACE_CLI) + " " + args); }
+inline CommandResult runCli(const std::string& args) { return runShell(std::string(cliProgram()) + " " + args); }
 #endif
 
 }  // namespace isurface::test
