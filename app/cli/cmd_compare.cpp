@@ -53,7 +53,7 @@ nlohmann::json rangeJson(const RangeDifference& r) {
 
 nlohmann::json unmatchedJson(const std::vector<UnmatchedLine>& lines) {
   nlohmann::json out = nlohmann::json::array();
-  for (const UnmatchedLine& u : lines) out.push_back({{"line", u.line}, {"samples", u.samples}, {"time_s", u.time}});
+  for (const UnmatchedLine& u : lines) out.push_back({{"line", u.line}, {"samples", u.samples}, {"time_s", u.time}, {"merged_into", u.mergedInto}});
   return out;
 }
 
@@ -110,7 +110,8 @@ nlohmann::json reportJson(const CompareOptions& o, const RunComparison& c, Compa
 
 void printSummary(const CompareOptions& o, const RunComparison& c, ComparisonQuantity quantity) {
   const DifferenceFigures& t = c.total;
-  std::printf("%zu common lines (%zu only in A, %zu only in B); time on them A %.3f s, B %.3f s, B - A %+.3f s (%+.1f%%)\n",
+  std::printf("%zu common lines (%zu only in A, %zu only in B, each compared with the common line before it); "
+              "motion time A %.3f s, B %.3f s, B - A %+.3f s (%+.2f%%)\n",
               c.lines.size(), c.onlyInA.size(), c.onlyInB.size(), t.timeA, t.timeB, t.timeDifference,
               t.timeA > 0 ? 100.0 * t.timeDifference / t.timeA : 0.0);
   std::printf("speed B - A: mean %+.1f mm/min, largest %+.1f mm/min; position at the same arc length: max %.4f mm; "

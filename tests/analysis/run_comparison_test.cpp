@@ -124,7 +124,7 @@ TEST(runComparison, aSlowerFeedOnSomeLinesShowsThereAndOnlyThere) {
   EXPECT_EQ(c.worstRanges(ComparisonQuantity::Speed, 100).size(), c.ranges.size());
 }
 
-TEST(runComparison, linesOnlyOneRunHasAreReportedAndSplitRanges) {
+TEST(runComparison, linesOnlyOneRunHasAreReportedAndMergedIntoTheLineBefore) {
   const Trajectory a = simulateText(zigzag(1200), "a.nc");
   // B lost line 5 and has samples of a line 40 that A never reached.
   Trajectory b = filtered(a, [&](std::size_t i) { return a.line[i] != 5; });
@@ -133,17 +133,32 @@ TEST(runComparison, linesOnlyOneRunHasAreReportedAndSplitRanges) {
   const RunComparison c = compareRuns(a, b);
   ASSERT_EQ(c.onlyInA.size(), 1u);
   EXPECT_EQ(c.onlyInA.front().line, 5u);
+  EXPECT_EQ(c.onlyInA.front().mergedInto, 4u);
   EXPECT_GT(c.onlyInA.front().time, 0.5);  // s, 20 mm at 1200 mm/min
   ASSERT_EQ(c.onlyInB.size(), 1u);
   EXPECT_EQ(c.onlyInB.front().line, 40u);
+  EXPECT_EQ(c.onlyInB.front().mergedInto, 11u);
   EXPECT_EQ(c.onlyInB.front().samples, 10u);
   EXPECT_LT(c.coverageA, 0.95);
-  for (const RangeDifference& r : c.ranges) EXPECT_FALSE(r.firstLine < 5 && r.lastLine > 5);
-  for (std::size_t i = 0; i < a.size(); ++i) {
-    if (a.line[i] == 5) {
-      EXPECT_TRUE(std::isnan(c.speedDifference[i]));
-    }
-  }
+  for (const LineDifference& line : c.lines) EXPECT_NE(line.line, 5u);
+  // The totals are the whole runs: A's line 5 is in them, though B has no time for it.
+  EXPECT_NEAR(c.total.timeA, c.durationA, 2 * a.cycle);
+  EXPECT_NEAR(c.total.timeB, c.durationB, 2 * b.cycle);
+}
+
+// A blending control (LinuxCNC) runs a short line inside the blend of its neighbours and reports
+// its samples under the line before: the same motion, the same total time.
+TEST(runComparison, aLineRunInsideABlendCostsTheTotalNothing) {
+  const Trajectory a = simulateText(zigzag(1200), "simulated.nc");
+  Trajectory b = a;
+  b.line.clear();
+  for (std::size_t i = 0; i < a.size(); ++i) b.line.push_back(a.line[i] == 5 ? 4u : a.line[i]);
+  const RunComparison c = compareRuns(a, b);
+  EXPECT_NEAR(c.total.timeDifference, 0.0, 2 * a.cycle);
+  EXPECT_NEAR(c.total.timeA, c.durationA, 2 * a.cycle);
+  ASSERT_EQ(c.onlyInA.size(), 1u);
+  EXPECT_EQ(c.onlyInA.front().mergedInto, 4u);
+  for (const LineDifference& line : c.lines) EXPECT_NEAR(line.figures.timeDifference, 0.0, 2 * a.cycle) << line.line;
 }
 
 TEST(runComparison, degenerateLinesGiveFiniteFigures) {

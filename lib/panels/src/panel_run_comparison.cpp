@@ -30,7 +30,7 @@ std::string summaryOf(const RunComparison& c, const std::string& nameB) {
                         worst.figures.timeDifference);
   }
   if (!c.onlyInA.empty() || !c.onlyInB.empty())
-    text += fmt::format("; {} lines only here, {} only in B", c.onlyInA.size(), c.onlyInB.size());
+    text += fmt::format("; {} lines only here, {} only in B (each compared with the common line before it)", c.onlyInA.size(), c.onlyInB.size());
   return text;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 #include "isurface/base/diagnostic.h"
 #include "isurface/analysis/quantities.h"
@@ -43,10 +44,20 @@ struct LineIndex {
   const std::size_t* begin(std::uint32_t line) const { return samples.data() + offsets[slot(line)]; }
 };
 
-// `keys`: the key each line is indexed under (see RunComparisonOptions::lineKeyA); the index
-// then speaks of keys where it says lines.
-LineIndex indexLines(const Trajectory& t, const std::vector<std::uint32_t>& keys) {
-  const auto keyOf = [&](std::uint32_t line) { return line != 0 && line < keys.size() ? keys[line] : line; };
+// The key a line of a run is compared under: the caller's (RunComparisonOptions::lineKeyA), then,
+// for a key only this run has, the common key it is merged into.
+struct LineKeys {
+  const std::vector<std::uint32_t>& given;
+  std::unordered_map<std::uint32_t, std::uint32_t> mergedInto;
+  std::uint32_t operator()(std::uint32_t line) const {
+    const std::uint32_t key = line != 0 && line < given.size() ? given[line] : line;
+    const auto merged = mergedInto.find(key);
+    return merged == mergedInto.end() ? key : merged->second;
+  }
+};
+
+// The index speaks of keys where it says lines.
+LineIndex indexLines(const Trajectory& t, const LineKeys& keyOf) {
   LineIndex index;
   // Samples come in runs of one line: the run's slot is looked up once.
   std::uint32_t lastLine = 0;
@@ -222,24 +233,48 @@ void requireLines(const Trajectory& t) {
                                 "no G-code line channel to align by (import the trace with --gcode to map its samples to lines)"});
 }
 
-std::size_t linesSamples(const LineIndex& index, const std::vector<std::uint32_t>& lines) {
-  std::size_t n = 0;
-  for (std::uint32_t line : lines) n += index.count(line);
-  return n;
+// The share of a run's samples with a line that lie on lines both runs have.
+double coverage(const LineIndex& index, const std::vector<UnmatchedLine>& onlyHere) {
+  std::size_t alone = 0;
+  for (const UnmatchedLine& u : onlyHere) alone += u.samples;
+  const std::size_t all = index.samples.size();
+  return all > 0 ? double(all - alone) / double(all) : 0.0;
 }
 
-UnmatchedLine unmatched(const Trajectory& t, const LineIndex& index, std::uint32_t line) {
-  UnmatchedLine u{line, index.count(line), 0.0};
+UnmatchedLine unmatched(const Trajectory& t, const LineIndex& index, std::uint32_t line, std::uint32_t into) {
+  UnmatchedLine u{line, index.count(line), 0.0, into};
   for (std::size_t k = 0; k < u.samples; ++k) u.time += sampleDuration(t, index.begin(line)[k]);
   return u;
 }
 
-}  // namespace
+// A blending control runs a short line inside a blend with its neighbours and may never report
+// it, so a line (key) one run has and the other has not is compared as part of the common line
+// before it in that run's order (the first common one when none comes before): the totals
+// then cover the whole motion of both runs. Returns the lines merged, in the run's order.
+std::vector<UnmatchedLine> mergeLinesOnlyHere(const Trajectory& t, const LineIndex& here, const LineIndex& there,
+                                              LineKeys& keys) {
+  std::vector<UnmatchedLine> merged;
+  std::uint32_t lastCommon = 0;
+  std::vector<std::uint32_t> beforeFirstCommon;
+  for (std::uint32_t line : here.order) {
+    if (there.count(line) != 0) {
+      if (lastCommon == 0)
+        for (std::uint32_t early : beforeFirstCommon) keys.mergedInto[early] = line;
+      lastCommon = line;
+      continue;
+    }
+    if (lastCommon == 0) beforeFirstCommon.push_back(line);
+    else keys.mergedInto[line] = lastCommon;
+  }
+  for (std::uint32_t line : here.order)
+    if (const auto into = keys.mergedInto.find(line); into != keys.mergedInto.end())
+      merged.push_back(unmatched(t, here, line, into->second));
+  return merged;
+}
 
-RunComparison compareRuns(const Trajectory& a, const Trajectory& b, const RunComparisonOptions& options) {
-  requireLines(a);
-  requireLines(b);
-  const LineIndex ia = indexLines(a, options.lineKeyA), ib = indexLines(b, options.lineKeyB);
+// Both runs indexed by keys that both have.
+RunComparison compareMerged(const Trajectory& a, const Trajectory& b, const LineIndex& ia, const LineIndex& ib,
+                            const RunComparisonOptions& options) {
   RunComparison out;
   out.cycleA = a.cycle;
   out.durationA = ia.lastTime - ia.firstTime;
@@ -248,31 +283,30 @@ RunComparison compareRuns(const Trajectory& a, const Trajectory& b, const RunCom
   out.speedDifference.assign(a.size(), kNoValue);
   out.positionDistance.assign(a.size(), kNoValue);
   out.timeDifference.assign(a.size(), kNoValue);
-
-  std::vector<std::uint32_t> common;
-  // Where a line only A has stands between two common lines: a range must not span it.
-  std::vector<bool> breakBefore;
-  bool gap = false;
-  for (std::uint32_t line : ia.order) {
-    if (ib.count(line) == 0) {
-      out.onlyInA.push_back(unmatched(a, ia, line));
-      gap = true;
-      continue;
-    }
-    common.push_back(line);
-    breakBefore.push_back(gap);
-    gap = false;
-  }
-  for (std::uint32_t line : ib.order)
-    if (ia.count(line) == 0) out.onlyInB.push_back(unmatched(b, ib, line));
-  if (common.empty())
-    throw InputError(Diagnostic{b.source, 0, 0, "shares no G-code line with " + a.source + ": nothing to compare"});
-
   Aligner aligner(a, b, out);
-  for (std::uint32_t line : common) out.lines.push_back(aligner.compareLine(line, ia, ib));
-  out.coverageA = double(linesSamples(ia, common)) / double(std::max<std::size_t>(1, ia.samples.size()));
-  out.coverageB = double(linesSamples(ib, common)) / double(std::max<std::size_t>(1, ib.samples.size()));
-  groupRanges(out, breakBefore, options);
+  for (std::uint32_t line : ia.order) out.lines.push_back(aligner.compareLine(line, ia, ib));
+  groupRanges(out, options);
+  return out;
+}
+
+}  // namespace
+
+RunComparison compareRuns(const Trajectory& a, const Trajectory& b, const RunComparisonOptions& options) {
+  requireLines(a);
+  requireLines(b);
+  LineKeys keysA{options.lineKeyA, {}}, keysB{options.lineKeyB, {}};
+  const LineIndex givenA = indexLines(a, keysA), givenB = indexLines(b, keysB);
+  if (!std::any_of(givenA.lines.begin(), givenA.lines.end(), [&](std::uint32_t key) { return givenB.count(key) != 0; }))
+    throw InputError(Diagnostic{b.source, 0, 0, "shares no G-code line with " + a.source + ": nothing to compare"});
+  std::vector<UnmatchedLine> onlyInA = mergeLinesOnlyHere(a, givenA, givenB, keysA);
+  std::vector<UnmatchedLine> onlyInB = mergeLinesOnlyHere(b, givenB, givenA, keysB);
+  RunComparison out = onlyInA.empty() && onlyInB.empty()
+                          ? compareMerged(a, b, givenA, givenB, options)
+                          : compareMerged(a, b, indexLines(a, keysA), indexLines(b, keysB), options);
+  out.coverageA = coverage(givenA, onlyInA);
+  out.coverageB = coverage(givenB, onlyInB);
+  out.onlyInA = std::move(onlyInA);
+  out.onlyInB = std::move(onlyInB);
   return out;
 }
 

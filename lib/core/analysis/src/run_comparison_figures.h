@@ -45,8 +45,7 @@ class FigureAccumulator {
 // Adds a line's (or range's) figures to those of a larger stretch.
 void mergeFigures(DifferenceFigures& into, const DifferenceFigures& f);
 
-// Fills out.ranges and out.total from out.lines. breakBefore[k]: a line only run A has stands
-// between common lines k - 1 and k.
-void groupRanges(RunComparison& out, const std::vector<bool>& breakBefore, const RunComparisonOptions& options);
+// Fills out.ranges and out.total from out.lines.
+void groupRanges(RunComparison& out, const RunComparisonOptions& options);
 
 }  // namespace isurface

@@ -48,14 +48,14 @@ void mergeFigures(DifferenceFigures& into, const DifferenceFigures& f) {
   }
 }
 
-void groupRanges(RunComparison& out, const std::vector<bool>& breakBefore, const RunComparisonOptions& options) {
+void groupRanges(RunComparison& out, const RunComparisonOptions& options) {
   const std::size_t maxLines = std::max<std::size_t>(1, options.maxRangeLines);
   int sign = 0;
   for (std::size_t k = 0; k < out.lines.size(); ++k) {
     const LineDifference& line = out.lines[k];
     mergeFigures(out.total, line.figures);
     const int s = timeSign(line.figures, options.timeTolerance);
-    const bool startRange = out.ranges.empty() || breakBefore[k] || s != sign ||
+    const bool startRange = out.ranges.empty() || s != sign ||
                             out.ranges.back().lineCount >= maxLines;
     if (startRange) {
       out.ranges.push_back(RangeDifference{line.line, line.line, 0, {}});

@@ -55,11 +55,15 @@ struct RangeDifference {
   DifferenceFigures figures;
 };
 
-// A line that only one of the runs has samples of.
+// A line that only one of the runs has samples of (a blending control may run a short line
+// inside a blend and never report it). It is compared as part of `mergedInto`, the line both
+// runs have that comes before it in its run (the first such line when none comes before), so
+// that the totals cover the whole motion of both runs.
 struct UnmatchedLine {
   std::uint32_t line = 0;
   std::size_t samples = 0;
   double time = 0;  // s
+  std::uint32_t mergedInto = 0;
 };
 
 // What the ranges are ranked by (and a map is coloured by).
@@ -70,12 +74,14 @@ const char* comparisonQuantityLabel(ComparisonQuantity q);  // legend title
 const char* comparisonQuantityUnit(ComparisonQuantity q);   // "mm/min", "mm", "s"
 
 struct RunComparison {
-  std::vector<LineDifference> lines;        // lines both runs have, in A's order
+  std::vector<LineDifference> lines;        // lines both runs have (with the lines merged into
+                                            // them), in A's order
   std::vector<RangeDifference> ranges;      // consecutive common lines grouped, in A's order
   std::vector<UnmatchedLine> onlyInA, onlyInB;
-  DifferenceFigures total;                  // over every common line
+  DifferenceFigures total;                  // over every line: the whole motion of both runs
   double durationA = 0, durationB = 0;      // s, first to last sample with a line
-  double coverageA = 0, coverageB = 0;      // share of each run's samples with a line on common lines
+  double coverageA = 0, coverageB = 0;      // share of each run's samples with a line on lines
+                                            // both runs have
   bool feedbackCompared = false;
   double cycleA = 0.001;                    // s
 
