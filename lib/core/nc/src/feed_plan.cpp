@@ -199,6 +199,7 @@ class Planner {
   struct Entry {
     PlannedSegment planned;   // cap and entryLimit (the start junction's limit) set when added
     double axisAccel = 0;     // mm/s^2 along it that its axes allow, no shares
+    double accelCap = kInfinity;  // mm/s^2, its ramps' limit on a tight arc (curveAccelLimit)
     double centripetal = 0;   // mm/s^2 on an arc at its speed cap
     double entryRadius = 0;   // mm, three-point radius at its start junction between lines
     double entryForward = 0;  // mm/s, the forward pass's speed at its start
@@ -251,6 +252,8 @@ class Planner {
     ps.cap = speed;
     ps.accel = tangentialAccel(seg);
     e.axisAccel = ps.accel / budget_.tangentialAccel;
+    e.accelCap = seg.arc ? curveAccelLimit(seg.arcGeometry.minRadius()) : kInfinity;
+    ps.accel = std::min(ps.accel, e.accelCap);
     e.centripetal = seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0;
     e.entryRadius = junctionRadius_;
     if (segments_ == 0) {
@@ -287,7 +290,7 @@ class Planner {
     const double normal = std::max({e.centripetal, junctionCentripetal(e.planned.entryLimit, e.entryRadius),
                                     junctionCentripetal(exitLimit, exitRadius)});
     const double available = e.axisAccel * (1.0 - budget_.cornerAccel) - normal;
-    e.planned.accel = std::clamp(available, e.planned.accel, most * e.axisAccel);
+    e.planned.accel = std::min(std::clamp(available, e.planned.accel, most * e.axisAccel), e.accelCap);
   }
 
   // After a forced commit: the forward pass again from the speed committed at the window's
@@ -316,7 +319,9 @@ class Planner {
 
   // Speed limit on a curve of radius r (mm): centripetal acceleration and its turning rate,
   // the deviation the filters cause on a curve, and (arcs) the chord error between samples.
-  double curvatureLimit(double radius, double accel, bool chordBetweenSamples) const {
+  // `onArc`: an exact arc, whose ramps addSegment holds within curveAccelLimit; else the
+  // radius through three points of short G1 moves.
+  double curvatureLimit(double radius, double accel, bool onArc) const {
     if (!(radius > kLengthEpsilon)) return kSlowestSpeed;
     if (!std::isfinite(radius)) return kInfinity;
     double v = std::sqrt(budget_.normalAccel * accel * radius);
@@ -324,17 +329,31 @@ class Planner {
     // A curve of radius r traversed at v with tangential acceleration a, averaged over the
     // filters (S = U1 + U2, U uniform over T1 and T2), falls inside by
     // E[(v S + a S^2 / 2)^2] / (2 r) = (v^2 E[S^2] + a^2 E[S^4] / 4) / (2 r).
+    // On an arc the ramps are held within curveAccelLimit (addSegment), so that at least half
+    // the tolerance is left for the speed: an arc of 0.3 mm is passed at a few hundred mm/min,
+    // not at a crawl.
     const double s2 = (t1_ * t1_ + t2_ * t2_) / 12.0;
-    const double s4 = std::pow(t1_, 4) / 80.0 + std::pow(t2_, 4) / 80.0 + t1_ * t1_ * t2_ * t2_ / 24.0;
     if (s2 > 0) {
-      const double a = budget_.tangentialAccel * accel;
-      const double room = 2.0 * radius * smoothingTolerance_ - a * a * s4 / 4.0;
+      const double a = std::min(budget_.tangentialAccel * accel, onArc ? curveAccelLimit(radius) : kInfinity);
+      const double room = 2.0 * radius * smoothingTolerance_ - a * a * filterMoment4() / 4.0;
       v = std::min(v, room > 0 ? std::sqrt(room / s2) : kSlowestSpeed);
     }
     const double e = machine_.chordTolerance;
-    if (chordBetweenSamples && 2.0 * radius > e)
+    if (onArc && 2.0 * radius > e)
       v = std::min(v, 2.0 * std::sqrt(2.0 * radius * e - e * e) / machine_.cycle);
     return v;
+  }
+
+  // E[S^4] of the filters' combined delay S = U1 + U2 (U uniform over T1 and T2), s^4.
+  double filterMoment4() const {
+    return std::pow(t1_, 4) / 80.0 + std::pow(t2_, 4) / 80.0 + t1_ * t1_ * t2_ * t2_ / 24.0;
+  }
+
+  // The tangential acceleration (mm/s^2) on a curve of radius r (mm) whose share of the filters'
+  // deviation, a^2 E[S^4] / 4, is at most half the smoothing tolerance's 2 r tol.
+  double curveAccelLimit(double radius) const {
+    const double s4 = filterMoment4();
+    return s4 > 0 && radius > 0 ? 2.0 * std::sqrt(radius * smoothingTolerance_ / s4) : kInfinity;
   }
 
   // 0 means the corner is too sharp to pass in motion: stop there for `hold` seconds.
