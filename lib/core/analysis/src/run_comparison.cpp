@@ -22,6 +22,10 @@ constexpr float kNoValue = std::numeric_limits<float>::quiet_NaN();
 // handover of blending controllers (LinuxCNC's is under a millimetre at ordinary feeds), less
 // than a typical pass.
 constexpr double kPathSearchRadius = 2.0;
+// At most this much (mm) is added to it for a line one run travels further on than the other:
+// a line with others merged into it (see mergeLinesOnlyHere) may be metres longer in one run,
+// and the search is linear in its radius.
+constexpr double kLargestLengthAllowance = 10.0;
 
 // The samples of every line of a run, grouped by line (CSR layout over the lines that occur,
 // so that a line numbered 4294967295 costs what line 1 does), and the run's own timing.
@@ -172,7 +176,7 @@ class Aligner {
     const std::size_t na = ia.count(line), nb = ib.count(line);
     const std::vector<double> arcA = lineArcLength(a_, sa, na), arcB = lineArcLength(b_, sb, nb);
     const std::vector<double> standA = standFractions(arcA);
-    searchRadius_ = kPathSearchRadius + std::abs(arcA.back() - arcB.back());
+    searchRadius_ = kPathSearchRadius + std::min(std::abs(arcA.back() - arcB.back()), kLargestLengthAllowance);
     FigureAccumulator acc;
     for (std::size_t k = 0; k < na; ++k) acc.addTime(sampleDuration(a_, sa[k]), 0.0);
     for (std::size_t k = 0; k < nb; ++k) acc.addTime(0.0, sampleDuration(b_, sb[k]));
