@@ -236,6 +236,12 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
+  if (groups.has(kGroupPathControl) && groups.code[kGroupPathControl] == kG64) {
+    for (char letter : {'P', 'Q'})
+      if (block.has(letter) && !(block.get(letter) >= 0))
+        return fail(block.col(letter), fmt::format("G64 {} must be a tolerance of 0 or more", letter));
+    applyPathBlending(block);
+  }
   if (groups.has(kGroupUnits)) {
     unitsStated_ = true;
     if (!unitsRecorded_) result_.program.inch = state_.inch;
@@ -363,10 +369,29 @@ void InterpreterState::applyModalCodes(const GroupedCodes& groups) {
   if (groups.has(kGroupUnits)) state_.inch = groups.code[kGroupUnits] == kG20;
   if (groups.has(kGroupToolLength)) state_.toolLength = groups.code[kGroupToolLength];
   if (groups.has(kGroupCoordSystem)) state_.coordSystem = groups.code[kGroupCoordSystem];
-  if (groups.has(kGroupPathControl)) state_.exactStop = groups.code[kGroupPathControl] != kG64;
+  if (groups.has(kGroupPathControl)) {
+    state_.exactStop = groups.code[kGroupPathControl] != kG64;
+    state_.exactPath = groups.code[kGroupPathControl] == kG61;
+  }
   if (groups.has(kGroupDistance)) state_.incremental = groups.code[kGroupDistance] == kG91;
   if (groups.has(kGroupArcDistance)) state_.arcAbsolute = groups.code[kGroupArcDistance] == kG90_1;
   if (groups.has(kGroupRetract)) state_.retractToR = groups.code[kGroupRetract] == kG99;
+}
+
+// G64 alone blends without a tolerance of its own; P without Q merges lines within P, as
+// LinuxCNC reads it. Told to the program (and a streaming sink) only when they change.
+void InterpreterState::applyPathBlending(const Block& block) {
+  const double toMm = state_.inch ? 25.4 : 1.0;
+  const double blend = block.has('P') ? block.get('P') * toMm : 0.0;
+  const double merge = block.has('Q') ? block.get('Q') * toMm : blend;
+  if (blend == state_.blendTolerance && merge == state_.mergeTolerance) return;
+  state_.blendTolerance = blend;
+  state_.mergeTolerance = merge;
+  const PathBlending change{movesMade(), blend, merge};
+  std::vector<PathBlending>& changes = result_.program.blending;
+  if (!changes.empty() && changes.back().firstMove == change.firstMove) changes.back() = change;
+  else changes.push_back(change);
+  if (sink_) sink_->blendingChanged(change);
 }
 
 }  // namespace gcode

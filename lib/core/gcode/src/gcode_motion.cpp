@@ -87,7 +87,7 @@ void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uin
   m.column = moveColumn();
   m.feed = feed;
   m.kind = kind;
-  m.flags = static_cast<std::uint8_t>((state_.exactStop ? kExactStop : 0) | extraFlags);
+  m.flags = static_cast<std::uint8_t>(pathFlags() | extraFlags);
   if (kind != MoveKind::Dwell) state_.position = end;
 }
 
@@ -102,7 +102,7 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
   m.feed = feed;
   m.kind = kind;
   m.plane = state_.plane;
-  m.flags = state_.exactStop ? kExactStop : 0;
+  m.flags = pathFlags();
   m.turns = static_cast<std::uint16_t>(turns);
   state_.position = end;
 }

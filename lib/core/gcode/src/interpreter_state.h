@@ -73,6 +73,9 @@ struct ModalState {
   bool arcAbsolute = false;     // G90.1
   bool inverseTime = false;     // G93
   bool exactStop = false;       // G61 / G61.1
+  bool exactPath = false;       // G61
+  double blendTolerance = 0;    // mm, G64 P
+  double mergeTolerance = 0;    // mm, G64 Q
   bool retractToR = false;      // G99 (default G98: back to the initial level)
   int cutterComp = kG40;
   int toolLength = kG49;
@@ -132,6 +135,10 @@ class InterpreterState {
   bool executeBlock(const Block& block);
   bool groupCodes(const Block& block, GroupedCodes& groups);
   void applyModalCodes(const GroupedCodes& groups);
+  void applyPathBlending(const Block& block);
+  std::uint8_t pathFlags() const {
+    return static_cast<std::uint8_t>((state_.exactStop ? kExactStop : 0) | (state_.exactPath ? kExactPath : 0));
+  }
   void warnOnce(bool& done, std::uint32_t column, std::string message);
 
   // gcode_motion.cpp

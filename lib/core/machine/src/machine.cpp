@@ -206,8 +206,13 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
   if (root.contains("control")) {
     const json& c = root["control"];
     if (!c.is_object()) fail(source, "control must be an object");
-    rejectUnknownKeys(c, {"dialect", "units_at_power_on", "plane_at_power_on", "distance_at_power_on", "subroutine_path"},
+    rejectUnknownKeys(c, {"dialect", "planner", "units_at_power_on", "plane_at_power_on", "distance_at_power_on", "subroutine_path"},
                       "control.", source);
+    if (c.contains("planner")) {
+      const std::string p = c["planner"].is_string() ? c["planner"].get<std::string>() : "";
+      if (p != "generic" && p != "linuxcnc-2.9") fail(source, "control.planner must be \"generic\" or \"linuxcnc-2.9\"");
+      m.control.planner = p == "generic" ? TrajectoryPlanner::Generic : TrajectoryPlanner::LinuxCnc29;
+    }
     if (c.contains("dialect")) {
       const std::string d = c["dialect"].is_string() ? c["dialect"].get<std::string>() : "";
       if (d != "linuxcnc" && d != "fanuc") fail(source, "control.dialect must be \"linuxcnc\" or \"fanuc\"");

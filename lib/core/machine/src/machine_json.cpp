@@ -10,6 +10,8 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
+const char* plannerName(TrajectoryPlanner p) { return p == TrajectoryPlanner::LinuxCnc29 ? "linuxcnc-2.9" : "generic"; }
+
 json limitsJson(const Machine& m) {
   json axes = json::object();
   const char* names[3] = {"x", "y", "z"};
@@ -26,7 +28,8 @@ json limitsJson(const Machine& m) {
           {"cycle_s", m.cycle},
           {"rapid_mm_min", mmPerSToMmPerMin(m.rapidVelocity)},
           {"chord_tolerance_mm", m.chordTolerance},
-          {"axes", axes}};
+          {"axes", axes},
+          {"control", {{"planner", plannerName(m.control.planner)}}}};
 }
 
 const char* planeName(Plane p) { return p == Plane::XY ? "G17" : p == Plane::ZX ? "G18" : "G19"; }
@@ -40,7 +43,8 @@ std::string machineDescriptionJson(const Machine& m) {
   json root = limitsJson(m);
   root["reference_positions_mm"] = {{"g28", {m.g28Position.x(), m.g28Position.y(), m.g28Position.z()}},
                                     {"g30", {m.g30Position.x(), m.g30Position.y(), m.g30Position.z()}}};
-  json control = {{"dialect", m.control.fanuc ? "fanuc" : "linuxcnc"},
+  json control = {{"planner", plannerName(m.control.planner)},
+                  {"dialect", m.control.fanuc ? "fanuc" : "linuxcnc"},
                   {"units_at_power_on", m.control.inch ? "inch" : "mm"}};
   if (m.control.modesNamed) {
     control["plane_at_power_on"] = planeName(m.control.plane);

@@ -1,5 +1,7 @@
 #include "isurface/nc/simulator.h"
 
+#include "isurface/nc/linuxcnc_motion.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -36,10 +38,39 @@ void checkRunLength(double seconds, const Machine& machine, const Move* move, co
                   machine.longestRun / 3600, machine.longestRun / machine.cycle, machine.cycle * 1000)});
 }
 
+// The program through LinuxCNC 2.9's planner, cycle by cycle.
+SimulationReport simulateOnLinuxCnc(const Program& program, const Machine& machine, SampleSink& sink,
+                                    const ProgressCallback& progress) {
+  LinuxCncMotion motion(machine, program.start, sink);
+  std::size_t nextBlending = 0;
+  for (std::size_t i = 0; i < program.moves.size(); ++i) {
+    while (nextBlending < program.blending.size() && program.blending[nextBlending].firstMove <= i)
+      motion.blendingChanged(program.blending[nextBlending++]);
+    try {
+      motion.add(i, program.moves[i], program.startOf(i));
+    } catch (const InputError& e) {
+      throw naming(e, program.source);
+    }
+    if ((i & 4095) == 0) {
+      checkRunLength(motion.plannedSeconds(), machine, &program.moves[i], program.source);
+      if (progress) progress(double(i) / double(program.moves.size()));
+    }
+  }
+  const InterpolationSummary summary = motion.finish();
+  checkRunLength(summary.duration, machine, nullptr, program.source);
+  SimulationReport report;
+  report.samples = summary.samples;
+  report.machiningTime = summary.duration;
+  report.segments = motion.segments();
+  report.pathLength = motion.pathLength();
+  return report;
+}
+
 }  // namespace
 
 SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
                           const ProgressCallback& progress) {
+  if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) return simulateOnLinuxCnc(program, machine, sink, progress);
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
   });
@@ -100,6 +131,11 @@ StreamingSimulation::StreamingSimulation(const Machine& machine, const Vec3& sta
       moveStart_(start) {
   report_.filterTime1 = planner_.filterTime1();
   report_.filterTime2 = planner_.filterTime2();
+  if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) linuxcnc_ = std::make_unique<LinuxCncMotion>(machine, start, sink);
+}
+
+void StreamingSimulation::blendingChanged(const PathBlending& blending) {
+  if (linuxcnc_) linuxcnc_->blendingChanged(blending);
 }
 
 StreamingSimulation::~StreamingSimulation() = default;
@@ -107,6 +143,14 @@ StreamingSimulation::~StreamingSimulation() = default;
 void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) {
   if (simulationError_) return;
   try {
+    if (linuxcnc_) {
+      for (std::size_t i = 0; i < count; ++i) {
+        linuxcnc_->add(firstIndex + i, moves[i], moveStart_);
+        moveStart_ = moves[i].end;
+      }
+      checkRunLength(linuxcnc_->plannedSeconds(), machine_, count ? &moves[count - 1] : nullptr, source_);
+      return;
+    }
     for (std::size_t i = 0; i < count; ++i) {
       if (firstIndex + i > 0xffffffffu)
         throw InputError(
@@ -170,6 +214,19 @@ void StreamingSimulation::countDwellsBefore(std::uint64_t index) {
 SimulationReport StreamingSimulation::finish() {
   if (simulationError_) throw *simulationError_;
   InterpolationSummary summary;
+  if (linuxcnc_) {
+    try {
+      summary = linuxcnc_->finish();
+      checkRunLength(summary.duration, machine_, nullptr, source_);
+    } catch (const InputError& e) {
+      throw naming(e, source_);
+    }
+    report_.samples = summary.samples;
+    report_.machiningTime = summary.duration;
+    report_.segments = linuxcnc_->segments();
+    report_.pathLength = linuxcnc_->pathLength();
+    return report_;
+  }
   try {
     planner_.finish();
     planner_.take(final_);

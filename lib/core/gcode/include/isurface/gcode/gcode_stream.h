@@ -26,6 +26,8 @@ class MoveSink {
     (void)moves, (void)firstIndex;
     return false;
   }
+  // G64's tolerances from move `blending.firstMove` on; told before that move is consumed.
+  virtual void blendingChanged(const PathBlending& blending) { (void)blending; }
 };
 
 // What interpretGcodeStream leaves besides the moves: a Program without its moves.

@@ -21,6 +21,16 @@ enum class MoveKind : std::uint8_t {
 enum MoveFlags : std::uint8_t {
   kExactStop = 1,  // G61 in effect: the move ends at standstill
   kStopAfter = 2,  // a program stop, tool change or spindle change follows: end at standstill
+  kExactPath = 4,  // G61 (with kExactStop): LinuxCNC keeps the feed through tangent junctions, G61.1 does not
+};
+
+// G64's tolerances from a move on (RS274/NGC `G64 P- Q-`, in mm): `blend` how far a blend may
+// leave the programmed corner, `merge` how far points of collinear-ish short lines may lie off
+// the one line a control may join them into (LinuxCNC's naive-CAM detector). 0: not given.
+struct PathBlending {
+  std::uint64_t firstMove = 0;
+  double blend = 0;
+  double merge = 0;
 };
 
 // 64 bytes. The start of a move is the end of the previous one (Program::start for the first).
@@ -46,6 +56,7 @@ struct Program {
   Vec3 start = Vec3::Zero();        // position before the first move, mm
   std::vector<Move> moves;
   std::vector<Diagnostic> warnings; // non-fatal notes (e.g. cutter compensation ignored)
+  std::vector<PathBlending> blending; // each G64 that changed the tolerances, in move order
   std::uint32_t lineCount = 0;      // physical lines in the source
   bool inch = false;                // written in inches: the first G20/G21 was G20 (or the control's default)
 

@@ -19,8 +19,14 @@ struct AxisLimits {
   double velocityLoopTimeConstant = 0.002; // s, first-order lag of the velocity loop
 };
 
-// How the control reads G-code: the dialect, and the units it is in before a program says.
+// Whose trajectory planning a simulation follows: the generic look-ahead planner, or LinuxCNC
+// 2.9's (its blends, naive-CAM merging and per-cycle trapezoids; docs/controls.md).
+enum class TrajectoryPlanner : unsigned char { Generic, LinuxCnc29 };
+
+// How the control reads G-code and plans motion: the dialect, the units it is in before a
+// program says, and its trajectory planner.
 struct ControlModes {
+  TrajectoryPlanner planner = TrajectoryPlanner::Generic;
   bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
   bool inch = false;   // G20 at power-on
   Plane plane = Plane::XY;    // G17 at power-on

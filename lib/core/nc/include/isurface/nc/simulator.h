@@ -10,6 +10,7 @@
 #include "isurface/base/diagnostic.h"
 #include "isurface/gcode/gcode_stream.h"
 #include "isurface/nc/interpolator.h"
+#include "isurface/nc/linuxcnc_motion.h"
 
 namespace isurface {
 
@@ -42,6 +43,7 @@ class StreamingSimulation : public MoveSink {
   // An InputError of planning (or of the sink: a full disk) is kept, not thrown, so that the
   // interpreter can go on to report the program's own errors first; later moves are ignored.
   void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override;
+  void blendingChanged(const PathBlending& blending) override;
   // After the last move: the rest of the samples. Throws the error kept by consume(), if any.
   SimulationReport finish();
 
@@ -54,7 +56,8 @@ class StreamingSimulation : public MoveSink {
   SampleSink& sink_;
   StreamingFeedPlanner planner_;
   std::string source_;
-  std::unique_ptr<StreamingInterpolator> interpolator_;  // once the dwell before the first motion is known
+  std::unique_ptr<StreamingInterpolator> interpolator_;
+  std::unique_ptr<LinuxCncMotion> linuxcnc_;  // the machine's control is LinuxCNC 2.9  // once the dwell before the first motion is known
   Vec3 start_;
   Vec3 moveStart_;                 // where the next move handed over starts
   // The moves that may become segments, from the one being interpolated on.

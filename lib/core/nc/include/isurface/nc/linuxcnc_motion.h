@@ -1,0 +1,40 @@
+#pragma once
+// The motion of LinuxCNC 2.9's trajectory planner, cycle by cycle, for a machine whose control
+// is `linuxcnc-2.9`: its naive-CAM joining of short lines (G64 Q), blend arcs within G64 P,
+// parabolic and tangent junctions, exact path (G61) and exact stop (G61.1), the look-ahead over
+// 50 segments and the per-cycle trapezoid with split cycles. No jerk limit: version 2.9 has
+// none. What it leaves out, and why, is in docs/controls.md.
+#include <cstdint>
+#include <memory>
+
+#include "isurface/gcode/program.h"
+#include "isurface/nc/interpolator.h"
+
+namespace isurface {
+
+class LinuxCncMotion {
+ public:
+  // `start`: the position before the first move, mm. The machine and the sink must outlive it.
+  LinuxCncMotion(const Machine& machine, const Vec3& start, SampleSink& sink);
+  ~LinuxCncMotion();
+  LinuxCncMotion(const LinuxCncMotion&) = delete;
+  LinuxCncMotion& operator=(const LinuxCncMotion&) = delete;
+
+  // G64's tolerances from move `blending.firstMove` on (told before that move is added).
+  void blendingChanged(const PathBlending& blending);
+  // The program's move `index`, which starts at `start`; samples every cycle that no later
+  // move can change.
+  void add(std::uint64_t index, const Move& move, const Vec3& start);
+  // No more moves: the rest of the motion.
+  InterpolationSummary finish();
+
+  double pathLength() const;          // mm, of the moves with motion
+  std::size_t segments() const;       // moves with motion
+  double plannedSeconds() const;      // s, of the samples made so far
+
+ private:
+  struct Impl;
+  std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace isurface

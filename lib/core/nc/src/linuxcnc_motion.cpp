@@ -1,0 +1,353 @@
+// LinuxCNC 2.9's motion: its canon's naive-CAM joining, its queue with blends and look-ahead
+// (tpAddLine, tpAddCircle, tpRunOptimization), run cycle by cycle into samples.
+#include "isurface/nc/linuxcnc_motion.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <vector>
+
+#include "isurface/base/geometry.h"
+#include "isurface/nc/servo.h"
+#include "linuxcnc_blend.h"
+#include "linuxcnc_cycle.h"
+
+namespace isurface {
+
+using namespace linuxcnc;
+
+namespace {
+
+constexpr int kLookAheadDepth = 50;        // ARC_BLEND_OPTIMIZATION_DEPTH
+constexpr int kPeaksBeforeStopping = 4;    // TP_OPTIMIZATION_CUTOFF
+constexpr double kMinSegmentCycles = 1.02; // TP_MIN_SEGMENT_CYCLES
+constexpr std::size_t kMostJoinedLines = 100;
+// Segments queued ahead of the one moving: more than the look-ahead reaches, as on a control
+// whose task reads the program far ahead of the motion.
+constexpr std::size_t kQueueAhead = 4 * kLookAheadDepth;
+constexpr std::size_t kBatch = 4096;
+
+struct ChainPoint {
+  Vec3 end;
+  SegmentPart part;
+};
+
+}  // namespace
+
+struct LinuxCncMotion::Impl {
+  Impl(const Machine& m, const Vec3& start, SampleSink& s) : machine(m), sink(s), canonEnd(start), startPosition(start) {
+    queue.position = start;
+    queue.cycle = m.cycle;
+    for (int i = 0; i < 3; ++i) {
+      bounds.velocity[i] = m.axes[i].maxVelocity;
+      bounds.acceleration[i] = m.axes[i].maxAcceleration;
+    }
+    bounds.cycle = m.cycle;
+    if (sink.wantsFeedback())
+      for (int i = 0; i < 3; ++i) servos.emplace_back(m.axes[i], m.cycle, start[i]);
+  }
+
+  const Machine& machine;
+  SampleSink& sink;
+  AxisBounds bounds{};
+  MotionQueue queue;
+  std::vector<AxisServo> servos;
+  std::vector<SimSample> batch;
+  InterpolationSummary summary;
+  Vec3 canonEnd;  // where the next segment starts, mm
+  Vec3 startPosition;
+  std::vector<ChainPoint> chain;
+  PathBlending blending;
+  std::deque<PathBlending> pendingBlending;
+  double pathLength = 0;
+  std::size_t segments = 0;
+  SegmentPart lastPart{0, 0, 0, 0};
+
+  void add(std::uint64_t index, const Move& move, const Vec3& start);
+  void joinOrFlush(const Move& move, const SegmentPart& part);
+  bool joinable(const Move& move) const;
+  void flushChain();
+  void enqueueLine(const Vec3& from, const Vec3& to, bool traverse, float feed, std::uint8_t flags,
+                   std::vector<SegmentPart> parts);
+  void enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part);
+  void enqueue(Segment tc, std::uint8_t flags);
+  void joinToPrevious(Segment& tc);
+  void finalize(Segment& s) const;
+  void optimize();
+  void runAhead(std::size_t keep);
+  void emit(const SegmentPart& part);
+  void push(const Vec3& position, const SegmentPart& part);
+  void hold(double seconds);
+  void flushBatch();
+};
+
+void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3& start) {
+  while (!pendingBlending.empty() && pendingBlending.front().firstMove <= index) {
+    blending = pendingBlending.front();
+    pendingBlending.pop_front();
+  }
+  const SegmentPart part{0, static_cast<std::uint32_t>(index), move.line, move.feed};
+  if (move.kind == MoveKind::Dwell) {
+    flushChain();
+    runAhead(0);
+    lastPart = part;
+    hold(move.dwellSeconds());
+    return;
+  }
+  if (move.isArc()) {
+    flushChain();
+    enqueueArc(start, move, part);
+  } else if ((move.end - start).norm() < 1e-12) {
+    // A move of no length: nothing queued; a stop it asks for still holds.
+  } else if (move.kind == MoveKind::Linear && !(move.flags & kExactStop) && blending.merge > 0) {
+    joinOrFlush(move, part);
+  } else {
+    flushChain();
+    enqueueLine(start, move.end, move.kind == MoveKind::Rapid, move.feed, move.flags, {part});
+  }
+  // A program stop, tool or spindle change waits until the motion queued is done: the last
+  // segment ends as it would end the program (at its own acceleration).
+  if (move.flags & kStopAfter) {
+    flushChain();
+    runAhead(0);
+  }
+  runAhead(kQueueAhead);
+}
+
+bool LinuxCncMotion::Impl::joinable(const Move& move) const {
+  if (chain.empty()) return true;
+  if (chain.size() > kMostJoinedLines || chain.front().part.feed != move.feed) return false;
+  for (const ChainPoint& p : chain)
+    if (distanceToSegment(p.end, canonEnd, move.end) > blending.merge) return false;
+  return true;
+}
+
+void LinuxCncMotion::Impl::joinOrFlush(const Move& move, const SegmentPart& part) {
+  if (!joinable(move)) flushChain();
+  chain.push_back({move.end, part});
+}
+
+void LinuxCncMotion::Impl::flushChain() {
+  if (chain.empty()) return;
+  const Vec3 from = canonEnd, to = chain.back().end;
+  const Vec3 along = (to - from).normalized();
+  std::vector<SegmentPart> parts;
+  parts.reserve(chain.size());
+  Vec3 partStart = from;
+  for (const ChainPoint& p : chain) {
+    SegmentPart part = p.part;
+    part.from = std::max(0.0, (partStart - from).dot(along));
+    parts.push_back(part);
+    partStart = p.end;
+  }
+  const float feed = chain.back().part.feed;
+  chain.clear();
+  enqueueLine(from, to, false, feed, 0, std::move(parts));
+}
+
+void LinuxCncMotion::Impl::enqueueLine(const Vec3& from, const Vec3& to, bool traverse, float feed,
+                                       std::uint8_t flags, std::vector<SegmentPart> parts) {
+  Segment tc;
+  tc.shape = Shape::Line;
+  tc.start = from;
+  tc.end = to;
+  tc.target = (to - from).norm();
+  canonEnd = to;
+  if (tc.target < 1e-12) return;
+  tc.direction = (to - from) / tc.target;
+  tc.traverse = traverse;
+  const double axisVelocity = lineVelocityLimit(machine, tc.direction);
+  tc.maxVelocity = traverse ? std::min(axisVelocity, machine.rapidVelocity) : axisVelocity;
+  tc.requested = traverse ? tc.maxVelocity : feed / 60.0;
+  tc.maxAcceleration = lineAccelerationLimit(machine, tc.direction);
+  tc.parts = std::move(parts);
+  enqueue(std::move(tc), flags);
+}
+
+void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part) {
+  Segment tc;
+  tc.shape = Shape::Arc;
+  tc.arc = ArcGeometry::from(start, move);
+  tc.start = start;
+  tc.end = move.end;
+  tc.target = tc.arc.length();
+  canonEnd = move.end;
+  if (tc.target < 1e-12) return;
+  // The axes the arc moves: its plane's, and the normal one for a helix.
+  const PlaneAxes axes = tc.arc.axes;
+  double velocity = std::min(machine.axes[axes.u].maxVelocity, machine.axes[axes.v].maxVelocity);
+  double acceleration = std::min(machine.axes[axes.u].maxAcceleration, machine.axes[axes.v].maxAcceleration);
+  if (std::abs(tc.arc.endW - tc.arc.startW) > 1e-12) {
+    velocity = std::min(velocity, machine.axes[axes.w].maxVelocity);
+    acceleration = std::min(acceleration, machine.axes[axes.w].maxAcceleration);
+  }
+  tc.maxVelocity = velocity;
+  tc.requested = move.feed / 60.0;
+  tc.maxAcceleration = acceleration;
+  tc.parts = {part};
+  enqueue(std::move(tc), move.flags);
+}
+
+void LinuxCncMotion::Impl::enqueue(Segment tc, std::uint8_t flags) {
+  tc.nominalLength = tc.target;
+  tc.targetVelocity = tc.requested;
+  tc.maxVelocity = std::min(tc.maxVelocity, tc.target / machine.cycle);
+  tc.cycle = machine.cycle;
+  tc.tolerance = blending.blend;
+  tc.term = !(flags & kExactStop) ? Term::Parabolic : (flags & kExactPath) ? Term::Exact : Term::Stop;
+  pathLength += tc.target;
+  ++segments;
+  joinToPrevious(tc);
+  queue.segments.push_back(std::move(tc));
+  optimize();
+}
+
+// How the new segment meets the one before it (tpFinalizeAndEnqueue, tpHandleBlendArc).
+void LinuxCncMotion::Impl::joinToPrevious(Segment& tc) {
+  if (queue.segments.empty()) return;
+  Segment* prev = &queue.segments.back();
+  tc.blendBefore = prev->term == Term::Parabolic;
+  if (prev->traverse != tc.traverse) setTerm(prev, &tc, Term::Stop);
+  if (prev->progress <= prev->target / 2 && setUpTangent(*prev, tc, bounds) == TangentCheck::Kink) {
+    std::optional<BlendArc> blend;
+    if (prev->term == Term::Parabolic && !prev->finalized) blend = lineLineBlend(*prev, tc, bounds);
+    if (blend && chooseBestBlend(*prev, tc, &blend->segment) == Joint::Arc) {
+      const double trimmed = (blend->arcEnd - tc.start).norm();
+      tc.start = blend->arcEnd;
+      tc.target = (tc.end - tc.start).norm();
+      for (SegmentPart& p : tc.parts) p.from = std::max(0.0, p.from - trimmed);
+      blend->segment.parts = {tc.parts.front()};
+      blend->segment.parts.front().from = 0;
+      blend->segment.cycle = machine.cycle;
+      if (blend->consumesPrevious && !prev->active) {
+        queue.segments.pop_back();
+        prev = nullptr;
+        tc.blendBefore = false;
+      } else {
+        blend->segment.lead = 0;
+        prev->end = blend->arcStart;
+        prev->target = (prev->end - prev->start).norm();
+        setTerm(prev, &tc, Term::Tangent);
+      }
+      queue.segments.push_back(std::move(blend->segment));
+    } else if (!blend) {
+      chooseBestBlend(*prev, tc, nullptr);
+    }
+  }
+  if (prev) finalize(*prev);
+}
+
+void LinuxCncMotion::Impl::finalize(Segment& s) const {
+  if (s.finalized) return;
+  s.maxVelocity = std::min(s.maxVelocity, s.target / machine.cycle);
+  if (s.shape == Shape::Arc) {
+    const bool parabolic = s.blendBefore || s.term == Term::Parabolic;
+    const double a = parabolic ? s.maxAcceleration / 2 : s.maxAcceleration;
+    s.maxVelocity = std::min(s.maxVelocity, std::sqrt(kNormalShare * a * s.arc.minRadius()));
+  }
+  s.finalized = true;
+}
+
+// The backward pass over the last segments queued (tpRunOptimization).
+void LinuxCncMotion::Impl::optimize() {
+  std::deque<Segment>& q = queue.segments;
+  const int length = static_cast<int>(q.size());
+  int peaks = 0;
+  bool nonTangent = false;
+  for (int x = 1; x < kLookAheadDepth + 2; ++x) {
+    const int index = length - x;
+    if (index < 1) return;
+    Segment& tc = q[static_cast<std::size_t>(index)];
+    Segment& prev = q[static_cast<std::size_t>(index - 1)];
+    if (prev.term != Term::Tangent) {
+      if (nonTangent) return;
+      nonTangent = true;
+      continue;
+    }
+    if (prev.progress / prev.target >= 0.25 || prev.splitting || prev.blendingNext) return;
+    if (!tc.finalized) {
+      // The last segment may still lose half of its length to a blend.
+      prev.finalVelocity = std::min(prev.maxVelocity, std::min(peakVelocity(tangentialAcceleration(tc), tc.target),
+                                                               maxTargetVelocity(tc)));
+      if (prev.kinkVelocity >= 0) prev.finalVelocity = std::min(prev.finalVelocity, prev.kinkVelocity);
+      tc.finalVelocity = 0;
+    } else {
+      double startVelocity = std::sqrt(tc.finalVelocity * tc.finalVelocity + 2.0 * tangentialAcceleration(tc) * tc.target);
+      double limit = std::min(tc.maxVelocity, prev.maxVelocity);
+      if (prev.kinkVelocity >= 0) limit = std::min(limit, prev.kinkVelocity);
+      if (startVelocity >= limit) {
+        startVelocity = limit;
+        prev.atPeak = true;
+      }
+      prev.finalVelocity = startVelocity;
+      tc.maxVelocity = std::min(tc.maxVelocity, tc.target / (machine.cycle * kMinSegmentCycles));
+    }
+    if (tc.atPeak && ++peaks > kPeaksBeforeStopping) return;
+  }
+}
+
+void LinuxCncMotion::Impl::runAhead(std::size_t keep) {
+  while (queue.segments.size() > keep) emit(runCycle(queue));
+}
+
+void LinuxCncMotion::Impl::emit(const SegmentPart& part) {
+  // The position before the first cycle, as a recording starts.
+  if (summary.samples == 0 && batch.empty()) push(startPosition, part);
+  lastPart = part;
+  push(queue.position, part);
+}
+
+void LinuxCncMotion::Impl::push(const Vec3& position, const SegmentPart& part) {
+  SimSample s{};
+  s.line = part.line;
+  s.block = part.block;
+  s.x = position.x();
+  s.y = position.y();
+  s.z = position.z();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  s.fbX = servos.empty() ? nan : servos[0].step(s.x);
+  s.fbY = servos.empty() ? nan : servos[1].step(s.y);
+  s.fbZ = servos.empty() ? nan : servos[2].step(s.z);
+  s.feed = part.feed;
+  batch.push_back(s);
+  if (batch.size() >= kBatch) flushBatch();
+}
+
+void LinuxCncMotion::Impl::hold(double seconds) {
+  const auto cycles = static_cast<std::uint64_t>(std::llround(std::max(0.0, seconds) / machine.cycle));
+  for (std::uint64_t i = 0; i < cycles; ++i) emit(lastPart);
+}
+
+void LinuxCncMotion::Impl::flushBatch() {
+  summary.samples += batch.size();
+  if (!batch.empty()) sink.consumeBatch(batch);
+  batch.clear();
+}
+
+LinuxCncMotion::LinuxCncMotion(const Machine& machine, const Vec3& start, SampleSink& sink)
+    : impl_(std::make_unique<Impl>(machine, start, sink)) {}
+
+LinuxCncMotion::~LinuxCncMotion() = default;
+
+void LinuxCncMotion::blendingChanged(const PathBlending& blending) { impl_->pendingBlending.push_back(blending); }
+
+void LinuxCncMotion::add(std::uint64_t index, const Move& move, const Vec3& start) { impl_->add(index, move, start); }
+
+InterpolationSummary LinuxCncMotion::finish() {
+  impl_->flushChain();
+  impl_->runAhead(0);
+  impl_->flushBatch();
+  InterpolationSummary summary = impl_->summary;
+  summary.duration = summary.samples > 0 ? double(summary.samples - 1) * impl_->machine.cycle : 0.0;
+  return summary;
+}
+
+double LinuxCncMotion::pathLength() const { return impl_->pathLength; }
+std::size_t LinuxCncMotion::segments() const { return impl_->segments; }
+double LinuxCncMotion::plannedSeconds() const {
+  return double(impl_->summary.samples + impl_->batch.size()) * impl_->machine.cycle;
+}
+
+}  // namespace isurface

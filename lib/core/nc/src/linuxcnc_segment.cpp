@@ -1,0 +1,90 @@
+#include "linuxcnc_segment.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace isurface::linuxcnc {
+
+Vec3 Segment::pointAt(double s) const {
+  switch (shape) {
+    case Shape::Line:
+      return target > 0 ? Vec3(start + (end - start) * (s / target)) : start;
+    case Shape::Arc:
+      return arc.at(target > 0 ? std::clamp(s / target, 0.0, 1.0) : 0.0);
+    case Shape::Blend:
+      if (s <= lead) return start + direction * s;
+      {
+        const double a = radius > 0 ? std::min((s - lead) / radius, angle) : 0.0;
+        return centre + radius * (std::cos(a) * e0 + std::sin(a) * e1);
+      }
+  }
+  return start;
+}
+
+Vec3 Segment::startTangent() const {
+  switch (shape) {
+    case Shape::Line: return direction;
+    case Shape::Arc: return arc.tangentAt(0);
+    case Shape::Blend: return direction;
+  }
+  return direction;
+}
+
+Vec3 Segment::endTangent() const {
+  switch (shape) {
+    case Shape::Line: return direction;
+    case Shape::Arc: return arc.tangentAt(1);
+    case Shape::Blend: return (-std::sin(angle) * e0 + std::cos(angle) * e1).normalized();
+  }
+  return direction;
+}
+
+const SegmentPart& Segment::partAt(double s) const {
+  auto it = std::upper_bound(parts.begin(), parts.end(), s, [](double v, const SegmentPart& p) { return v < p.from; });
+  return it == parts.begin() ? parts.front() : *(it - 1);
+}
+
+double overallAcceleration(const Segment& s) {
+  double scale = 1.0 - std::max(s.kinkReduction, s.kinkReductionBefore);
+  if (s.blendBefore || s.term == Term::Parabolic) scale *= 0.5;
+  return s.maxAcceleration * scale;
+}
+
+double tangentialAcceleration(const Segment& s) {
+  const double a = overallAcceleration(s);
+  return s.curved() ? a * kTangentialShare : a;
+}
+
+namespace {
+
+template <typename Limit>
+double projectedLimit(const Machine& m, const Vec3& d, Limit limit) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < 3; ++i)
+    if (std::abs(d[i]) > 1e-12) best = std::min(best, limit(m.axes[i]) / std::abs(d[i]));
+  return best;
+}
+
+}  // namespace
+
+double lineVelocityLimit(const Machine& m, const Vec3& d) {
+  return projectedLimit(m, d, [](const AxisLimits& a) { return a.maxVelocity; });
+}
+
+double lineAccelerationLimit(const Machine& m, const Vec3& d) {
+  return projectedLimit(m, d, [](const AxisLimits& a) { return a.maxAcceleration; });
+}
+
+double inscribedInPlane(const Vec3& n, const Vec3& bounds) {
+  double extent[3];
+  for (int i = 0; i < 3; ++i) {
+    Vec3 planar = -n * n[i];
+    planar[i] += 1.0;
+    const double scale = std::max(planar.cwiseAbs().norm(), 1e-12);
+    extent[i] = bounds[i] / scale;
+  }
+  return std::min({extent[0], extent[1], extent[2]});
+}
+
+}  // namespace isurface::linuxcnc
