@@ -7,6 +7,9 @@
 #include <cmath>
 #include <deque>
 #include <limits>
+#include <stdexcept>
+
+#include <fmt/format.h>
 #include <vector>
 
 #include "isurface/base/geometry.h"
@@ -28,6 +31,7 @@ constexpr std::size_t kMostJoinedLines = 100;
 // whose task reads the program far ahead of the motion.
 constexpr std::size_t kQueueAhead = 4 * kLookAheadDepth;
 constexpr std::size_t kBatch = 4096;
+constexpr std::size_t kStalledCycles = 100000;
 
 struct ChainPoint {
   Vec3 end;
@@ -69,7 +73,7 @@ struct LinuxCncMotion::Impl {
   void joinOrFlush(const Move& move, const SegmentPart& part);
   bool joinable(const Move& move) const;
   void flushChain();
-  void enqueueLine(const Vec3& from, const Vec3& to, bool traverse, float feed, std::uint8_t flags,
+  void enqueueLine(Vec3 from, Vec3 to, bool traverse, float feed, std::uint8_t flags,
                    std::vector<SegmentPart> parts);
   void enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part);
   void enqueue(Segment tc, std::uint8_t flags);
@@ -129,25 +133,16 @@ void LinuxCncMotion::Impl::joinOrFlush(const Move& move, const SegmentPart& part
   chain.push_back({move.end, part});
 }
 
+// The joined lines become one segment, reported (as LinuxCNC reports it) under the last line.
 void LinuxCncMotion::Impl::flushChain() {
   if (chain.empty()) return;
-  const Vec3 from = canonEnd, to = chain.back().end;
-  const Vec3 along = (to - from).normalized();
-  std::vector<SegmentPart> parts;
-  parts.reserve(chain.size());
-  Vec3 partStart = from;
-  for (const ChainPoint& p : chain) {
-    SegmentPart part = p.part;
-    part.from = std::max(0.0, (partStart - from).dot(along));
-    parts.push_back(part);
-    partStart = p.end;
-  }
-  const float feed = chain.back().part.feed;
+  const Vec3 to = chain.back().end;
+  const SegmentPart last = chain.back().part;
   chain.clear();
-  enqueueLine(from, to, false, feed, 0, std::move(parts));
+  enqueueLine(canonEnd, to, false, last.feed, 0, {last});
 }
 
-void LinuxCncMotion::Impl::enqueueLine(const Vec3& from, const Vec3& to, bool traverse, float feed,
+void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, bool traverse, float feed,
                                        std::uint8_t flags, std::vector<SegmentPart> parts) {
   Segment tc;
   tc.shape = Shape::Line;
@@ -289,7 +284,21 @@ void LinuxCncMotion::Impl::optimize() {
 }
 
 void LinuxCncMotion::Impl::runAhead(std::size_t keep) {
-  while (queue.segments.size() > keep) emit(runCycle(queue));
+  std::size_t stalled = 0;
+  while (queue.segments.size() > keep) {
+    const double before = queue.segments.front().progress;
+    const std::size_t length = queue.segments.size();
+    emit(runCycle(queue));
+    // A segment that neither moves nor ends is a fault of this model, never a long run.
+    stalled = queue.segments.size() == length && queue.segments.front().progress == before ? stalled + 1 : 0;
+    if (stalled > kStalledCycles) {
+      const Segment& s = queue.segments.front();
+      throw std::logic_error(fmt::format("LinuxCNC motion stalled on line {} (progress {} of {} mm, speed {} mm/s, final {}, "
+                                         "max {}, requested {}, acceleration {} tangential {}, term {})",
+                                         s.parts.front().line, s.progress, s.target, s.velocity, s.finalVelocity,
+                                         s.maxVelocity, s.requested, s.maxAcceleration, tangentialAcceleration(s), int(s.term)));
+    }
+  }
 }
 
 void LinuxCncMotion::Impl::emit(const SegmentPart& part) {
