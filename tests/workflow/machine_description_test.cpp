@@ -5,6 +5,7 @@
 #include "isurface/gcode/gcode_interpreter.h"
 #include "isurface/machine/machine.h"
 #include "isurface/workflow/run_inputs.h"
+#include "test_locations.h"
 
 using namespace isurface;
 
@@ -56,4 +57,15 @@ TEST(MachineDescription, G28GoesToTheReferencePositionItGives) {
   }
   EXPECT_TRUE(reached28);
   EXPECT_TRUE(reached30);
+}
+
+TEST(MachineDescription, ThePlannerIsNamedKeptAndCheckedAndTheLinuxcncSimMachineUsesLinuxcnc29) {
+  EXPECT_EQ(parseMachine("{}", "m.json").control.planner, TrajectoryPlanner::Generic);
+  const Machine m = parseMachine(R"({"control": {"planner": "linuxcnc-2.9"}})", "m.json");
+  EXPECT_EQ(m.control.planner, TrajectoryPlanner::LinuxCnc29);
+  EXPECT_EQ(parseMachine(machineDescriptionJson(m), "again.json").control.planner, TrajectoryPlanner::LinuxCnc29);
+  EXPECT_NE(machineLimitsJson(m).find("linuxcnc-2.9"), std::string::npos);
+  EXPECT_NE(refusal(R"({"control": {"planner": "linuxcnc"}})").find("control.planner"), std::string::npos);
+  const Machine sim = loadMachine(std::string(test::sourceDir()) + "/resources/machines/linuxcnc-sim.json");
+  EXPECT_EQ(sim.control.planner, TrajectoryPlanner::LinuxCnc29);
 }
