@@ -108,16 +108,15 @@ TEST(compareCli, linuxcncRecordingAgainstOurSimulation) {
   EXPECT_TRUE(report["only_in_a"].empty());
   EXPECT_TRUE(report["only_in_b"].empty());
   EXPECT_GT(report["run_a"]["line_coverage"].get<double>(), 0.99);
-  // Our planner takes a few percent longer than LinuxCNC's.
+  // The machine's linuxcnc-2.9 control agrees with LinuxCNC's planner within 2 % in total and
+  // blends the rectangle's corners as it does; the worst range is where lines meet arcs at an
+  // angle (docs/controls.md).
   const double percent = report["totals"]["time_difference_percent"].get<double>();
-  EXPECT_GT(percent, 2.0);
-  EXPECT_LT(percent, 7.0);
-  // LinuxCNC's G64 blends cut the 90-degree corners of the final rectangle by millimetres; our
-  // path stays within 0.01 mm of them.
+  EXPECT_GT(percent, -2.0);
+  EXPECT_LT(percent, 2.0);
   const double pathDistance = report["totals"]["max_path_distance_mm"].get<double>();
-  EXPECT_GT(pathDistance, 1.0);
-  EXPECT_LT(pathDistance, 3.0);
+  EXPECT_LT(pathDistance, 1.0);
   const auto& worst = report["worst_ranges"][0];
-  EXPECT_GE(worst["lines"][1].get<int>(), 247) << worst.dump();
+  EXPECT_GE(worst["lines"][1].get<int>(), 246) << worst.dump();
   EXPECT_GT(std::filesystem::file_size(png), 10000u);
 }
