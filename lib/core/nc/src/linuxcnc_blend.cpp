@@ -172,7 +172,6 @@ std::optional<BlendArc> lineLineBlend(const Segment& prev, const Segment& next, 
   arc.term = Term::Tangent;
   arc.traverse = prev.traverse;
   arc.finalized = true;
-  (void)binormal;
   return blend;
 }
 

@@ -159,7 +159,7 @@ SegmentPart runCycle(MotionQueue& queue) {
       if (tc.velocity <= next->velocity) reporting = next;
     }
   }
-  const SegmentPart part = reporting->partAt(reporting->progress);
+  const SegmentPart part = reporting->part;
   if (tc.remove) queue.segments.pop_front();
   return part;
 }

@@ -67,14 +67,13 @@ struct LinuxCncMotion::Impl {
   std::deque<PathBlending> pendingBlending;
   double pathLength = 0;
   std::size_t segments = 0;
-  SegmentPart lastPart{0, 0, 0, 0};
+  SegmentPart lastPart{};
 
   void add(std::uint64_t index, const Move& move, const Vec3& start);
   void joinOrFlush(const Move& move, const SegmentPart& part);
   bool joinable(const Move& move) const;
   void flushChain();
-  void enqueueLine(Vec3 from, Vec3 to, bool traverse, float feed, std::uint8_t flags,
-                   std::vector<SegmentPart> parts);
+  void enqueueLine(Vec3 from, Vec3 to, bool traverse, std::uint8_t flags, const SegmentPart& part);
   void enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part);
   void enqueue(Segment tc, std::uint8_t flags);
   void joinToPrevious(Segment& tc);
@@ -92,7 +91,7 @@ void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3
     blending = pendingBlending.front();
     pendingBlending.pop_front();
   }
-  const SegmentPart part{0, static_cast<std::uint32_t>(index), move.line, move.feed};
+  const SegmentPart part{static_cast<std::uint32_t>(index), move.line, move.feed};
   if (move.kind == MoveKind::Dwell) {
     flushChain();
     runAhead(0);
@@ -109,7 +108,7 @@ void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3
     joinOrFlush(move, part);
   } else {
     flushChain();
-    enqueueLine(start, move.end, move.kind == MoveKind::Rapid, move.feed, move.flags, {part});
+    enqueueLine(start, move.end, move.kind == MoveKind::Rapid, move.flags, part);
   }
   // A program stop, tool or spindle change waits until the motion queued is done: the last
   // segment ends as it would end the program (at its own acceleration).
@@ -139,11 +138,11 @@ void LinuxCncMotion::Impl::flushChain() {
   const Vec3 to = chain.back().end;
   const SegmentPart last = chain.back().part;
   chain.clear();
-  enqueueLine(canonEnd, to, false, last.feed, 0, {last});
+  enqueueLine(canonEnd, to, false, 0, last);
 }
 
-void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, bool traverse, float feed,
-                                       std::uint8_t flags, std::vector<SegmentPart> parts) {
+void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, bool traverse, std::uint8_t flags,
+                                       const SegmentPart& part) {
   Segment tc;
   tc.shape = Shape::Line;
   tc.start = from;
@@ -155,9 +154,9 @@ void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, bool traverse, float 
   tc.traverse = traverse;
   const double axisVelocity = lineVelocityLimit(machine, tc.direction);
   tc.maxVelocity = traverse ? std::min(axisVelocity, machine.rapidVelocity) : axisVelocity;
-  tc.requested = traverse ? tc.maxVelocity : feed / 60.0;
+  tc.requested = traverse ? tc.maxVelocity : part.feed / 60.0;
   tc.maxAcceleration = lineAccelerationLimit(machine, tc.direction);
-  tc.parts = std::move(parts);
+  tc.part = part;
   enqueue(std::move(tc), flags);
 }
 
@@ -181,7 +180,7 @@ void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const
   tc.maxVelocity = velocity;
   tc.requested = move.feed / 60.0;
   tc.maxAcceleration = acceleration;
-  tc.parts = {part};
+  tc.part = part;
   enqueue(std::move(tc), move.flags);
 }
 
@@ -209,12 +208,9 @@ void LinuxCncMotion::Impl::joinToPrevious(Segment& tc) {
     std::optional<BlendArc> blend;
     if (prev->term == Term::Parabolic && !prev->finalized) blend = lineLineBlend(*prev, tc, bounds);
     if (blend && chooseBestBlend(*prev, tc, &blend->segment) == Joint::Arc) {
-      const double trimmed = (blend->arcEnd - tc.start).norm();
       tc.start = blend->arcEnd;
       tc.target = (tc.end - tc.start).norm();
-      for (SegmentPart& p : tc.parts) p.from = std::max(0.0, p.from - trimmed);
-      blend->segment.parts = {tc.parts.front()};
-      blend->segment.parts.front().from = 0;
+      blend->segment.part = tc.part;
       blend->segment.cycle = machine.cycle;
       if (blend->consumesPrevious && !prev->active) {
         queue.segments.pop_back();
@@ -295,7 +291,7 @@ void LinuxCncMotion::Impl::runAhead(std::size_t keep) {
       const Segment& s = queue.segments.front();
       throw std::logic_error(fmt::format("LinuxCNC motion stalled on line {} (progress {} of {} mm, speed {} mm/s, final {}, "
                                          "max {}, requested {}, acceleration {} tangential {}, term {})",
-                                         s.parts.front().line, s.progress, s.target, s.velocity, s.finalVelocity,
+                                         s.part.line, s.progress, s.target, s.velocity, s.finalVelocity,
                                          s.maxVelocity, s.requested, s.maxAcceleration, tangentialAcceleration(s), int(s.term)));
     }
   }

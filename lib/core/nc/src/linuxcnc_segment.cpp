@@ -40,11 +40,6 @@ Vec3 Segment::endTangent() const {
   return direction;
 }
 
-const SegmentPart& Segment::partAt(double s) const {
-  auto it = std::upper_bound(parts.begin(), parts.end(), s, [](double v, const SegmentPart& p) { return v < p.from; });
-  return it == parts.begin() ? parts.front() : *(it - 1);
-}
-
 double overallAcceleration(const Segment& s) {
   double scale = 1.0 - std::max(s.kinkReduction, s.kinkReductionBefore);
   if (s.blendBefore || s.term == Term::Parabolic) scale *= 0.5;

@@ -3,7 +3,6 @@
 // its naive-CAM detector), an arc or helix, or a blend arc it inserted at a corner, with the
 // planning state its trajectory planner keeps per segment. Units: mm, s.
 #include <cstdint>
-#include <vector>
 
 #include "isurface/gcode/arc.h"
 #include "isurface/machine/machine.h"
@@ -18,9 +17,9 @@ enum class Shape : std::uint8_t { Line, Arc, Blend };
 constexpr double kTangentialShare = 0.5;
 constexpr double kNormalShare = 0.8660254037844386;
 
-// A program move the segment runs through, from `from` mm of the segment's length on.
+// The program move a segment's samples are reported under: LinuxCNC reports lines it joined
+// under the last, and a blend arc under the line after it.
 struct SegmentPart {
-  double from;
   std::uint32_t block;
   std::uint32_t line;
   float feed;
@@ -54,13 +53,12 @@ struct Segment {
   bool blendBefore = false;  // a parabolic blend with the previous segment
   bool finalized = false, active = false, splitting = false, remove = false;
   bool blendingNext = false, onFinalDeceleration = false, ramp = false, atPeak = false;
-  std::vector<SegmentPart> parts;  // ascending `from`; at least one
+  SegmentPart part{};
 
   bool curved() const { return shape != Shape::Line; }
   Vec3 pointAt(double s) const;   // s in mm along the segment, 0..target
   Vec3 startTangent() const;
   Vec3 endTangent() const;
-  const SegmentPart& partAt(double s) const;
 };
 
 // LinuxCNC's accelerations of a segment: the whole (less what kinks keep, halved in a

@@ -131,7 +131,11 @@ StreamingSimulation::StreamingSimulation(const Machine& machine, const Vec3& sta
       moveStart_(start) {
   report_.filterTime1 = planner_.filterTime1();
   report_.filterTime2 = planner_.filterTime2();
-  if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) linuxcnc_ = std::make_unique<LinuxCncMotion>(machine, start, sink);
+  // LinuxCNC 2.9 has no corner or jerk filters: its samples are the planner's own.
+  if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) {
+    linuxcnc_ = std::make_unique<LinuxCncMotion>(machine, start, sink);
+    report_.filterTime1 = report_.filterTime2 = 0;
+  }
 }
 
 void StreamingSimulation::blendingChanged(const PathBlending& blending) {
