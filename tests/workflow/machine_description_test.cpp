@@ -69,3 +69,23 @@ TEST(MachineDescription, ThePlannerIsNamedKeptAndCheckedAndTheLinuxcncSimMachine
   const Machine sim = loadMachine(std::string(test::sourceDir()) + "/resources/machines/linuxcnc-sim.json");
   EXPECT_EQ(sim.control.planner, TrajectoryPlanner::LinuxCnc29);
 }
+
+TEST(MachineDescription, TheRiseTimeIsTheDescriptionsOwnOrItsLargestAOverJAndStaysWhenALimitIsLowered) {
+  // The default's axes: 2000 / 100000 and 1500 / 75000 mm/s^2 over mm/s^3.
+  EXPECT_DOUBLE_EQ(defaultMachine().control.accelerationRiseTime, 0.02);
+  // Not inherited from the default: derived from the description's own axes.
+  const Machine slow = parseMachine(R"({"axes": {"z": {"max_jerk_mm_s3": 15000}}})", "m.json");
+  EXPECT_DOUBLE_EQ(slow.control.accelerationRiseTime, 0.1);
+  const Machine given = parseMachine(R"({"control": {"acceleration_rise_time_s": 0.05}})", "m.json");
+  EXPECT_DOUBLE_EQ(given.control.accelerationRiseTime, 0.05);
+  // Written back, it is read as given even where the limits are then lowered.
+  Machine lowered = parseMachine(machineDescriptionJson(given), "again.json");
+  EXPECT_DOUBLE_EQ(lowered.control.accelerationRiseTime, 0.05);
+  EXPECT_NE(machineLimitsJson(given).find("\"acceleration_rise_time_s\":0.05"), std::string::npos);
+  // No jerk limit: no filter to rise, and 0 is read back.
+  const Machine noJerk = loadMachine(std::string(test::sourceDir()) + "/resources/machines/linuxcnc-sim.json");
+  EXPECT_EQ(noJerk.control.accelerationRiseTime, 0.0);
+  EXPECT_EQ(parseMachine(machineDescriptionJson(noJerk), "again.json").control.accelerationRiseTime, 0.0);
+  EXPECT_NE(refusal(R"({"control": {"acceleration_rise_time_s": -1}})").find("acceleration_rise_time_s"), std::string::npos);
+  EXPECT_NE(refusal(R"({"control": {"acceleration_rise_time_s": 0}})").find("jerk limit"), std::string::npos);
+}

@@ -203,15 +203,24 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
         fail(source, where + "velocity_loop_time_constant_s must be >= 0");
     }
   }
+  bool riseTimeGiven = false;
   if (root.contains("control")) {
     const json& c = root["control"];
     if (!c.is_object()) fail(source, "control must be an object");
-    rejectUnknownKeys(c, {"dialect", "planner", "units_at_power_on", "plane_at_power_on", "distance_at_power_on", "subroutine_path"},
+    rejectUnknownKeys(c,
+                      {"dialect", "planner", "acceleration_rise_time_s", "units_at_power_on", "plane_at_power_on",
+                       "distance_at_power_on", "subroutine_path"},
                       "control.", source);
     if (c.contains("planner")) {
       const std::string p = c["planner"].is_string() ? c["planner"].get<std::string>() : "";
       if (p != "generic" && p != "linuxcnc-2.9") fail(source, "control.planner must be \"generic\" or \"linuxcnc-2.9\"");
       m.control.planner = p == "generic" ? TrajectoryPlanner::Generic : TrajectoryPlanner::LinuxCnc29;
+    }
+    riseTimeGiven = c.contains("acceleration_rise_time_s");
+    if (riseTimeGiven) {
+      m.control.accelerationRiseTime = number(c, "acceleration_rise_time_s", 0.0, source, "control.");
+      if (m.control.accelerationRiseTime < 0 || m.control.accelerationRiseTime > 1.0)
+        fail(source, "control.acceleration_rise_time_s must be from 0 to 1 s");
     }
     if (c.contains("dialect")) {
       const std::string d = c["dialect"].is_string() ? c["dialect"].get<std::string>() : "";
@@ -255,6 +264,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
     m.g28Position = position(refs, "g28", m.g28Position, source);
     m.g30Position = position(refs, "g30", m.g30Position, source);
   }
+  if (!riseTimeGiven) m.control.accelerationRiseTime = largestRiseTime(m);
+  if (m.jerkLimited() && !(m.control.accelerationRiseTime > 0))
+    fail(source, "control.acceleration_rise_time_s must be greater than 0 on a machine with a jerk limit");
   // Checked on every axis, given or inherited from the default: a new cycle_s alone can make
   // the default servo diverge.
   static const char* axisNames[3] = {"x", "y", "z"};
@@ -267,6 +279,13 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
 }
 
 }  // namespace
+
+double largestRiseTime(const Machine& m) {
+  if (!m.jerkLimited()) return 0;
+  double t = 0;
+  for (const AxisLimits& axis : m.axes) t = std::max(t, axis.maxAcceleration / axis.maxJerk);
+  return t;
+}
 
 Machine defaultMachine() {
   static const Machine machine = parseOnto(builtInFallback(), defaultMachineJson(), "default machine");

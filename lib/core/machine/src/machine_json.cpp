@@ -29,7 +29,8 @@ json limitsJson(const Machine& m) {
           {"rapid_mm_min", mmPerSToMmPerMin(m.rapidVelocity)},
           {"chord_tolerance_mm", m.chordTolerance},
           {"axes", axes},
-          {"control", {{"planner", plannerName(m.control.planner)}}}};
+          {"control", {{"planner", plannerName(m.control.planner)},
+                       {"acceleration_rise_time_s", m.control.accelerationRiseTime}}}};
 }
 
 const char* planeName(Plane p) { return p == Plane::XY ? "G17" : p == Plane::ZX ? "G18" : "G19"; }
@@ -44,6 +45,7 @@ std::string machineDescriptionJson(const Machine& m) {
   root["reference_positions_mm"] = {{"g28", {m.g28Position.x(), m.g28Position.y(), m.g28Position.z()}},
                                     {"g30", {m.g30Position.x(), m.g30Position.y(), m.g30Position.z()}}};
   json control = {{"planner", plannerName(m.control.planner)},
+                  {"acceleration_rise_time_s", m.control.accelerationRiseTime},
                   {"dialect", m.control.fanuc ? "fanuc" : "linuxcnc"},
                   {"units_at_power_on", m.control.inch ? "inch" : "mm"}};
   if (m.control.modesNamed) {

@@ -43,10 +43,11 @@ FilterTimes chooseFilters(const Machine& machine, const LimitBudget& budget) {
   FilterTimes f;
   if (machine.jerkLimited()) {
     // A ramp of acceleration a, averaged over T1, changes acceleration at 2a/T1 at most (from
-    // +a to -a): T1 = 2 a / j keeps the tangential jerk within its share on every axis.
-    for (const AxisLimits& axis : machine.axes)
-      f.t1 = std::max(f.t1, 2.0 * budget.tangentialAccel * axis.maxAcceleration /
-                                (budget.tangentialJerk * axis.maxJerk));
+    // +a to -a): with the tangential shares of acceleration and jerk, T1 is the rise time a/j
+    // scaled by 2 a-share / j-share. The rise time is the control's setting, lengthened where the
+    // axes' own a/j is longer: a lower acceleration leaves T1 as it is, a lower jerk lengthens it.
+    const double rise = std::max(machine.control.accelerationRiseTime, largestRiseTime(machine));
+    f.t1 = 2.0 * budget.tangentialAccel / budget.tangentialJerk * rise;
   }
   // The corner filter spreads a corner's velocity step; a few cycles at least even without a
   // jerk limit, so that a corner is not a one-cycle acceleration spike.
@@ -90,6 +91,12 @@ class Planner {
     t2_ = f.t2;
     smoothingTolerance_ = budget.cornerTolerance * machine.chordTolerance;
     settleTime_ = t1_ + t2_;
+    for (int a = 0; a < 3; ++a) {
+      const AxisLimits& axis = machine.axes[a];
+      filterAccel_[a] = machine.jerkLimited() ? 0.5 * budget.tangentialJerk * axis.maxJerk * t1_
+                                              : budget.tangentialAccel * axis.maxAcceleration;
+      rampAccel_[a] = std::min(budget.tangentialAccel * axis.maxAcceleration, filterAccel_[a]);
+    }
   }
 
   double filterTime1() const { return t1_; }
@@ -238,7 +245,8 @@ class Planner {
       const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
       speed = std::min(speed, planeVelocity);
       if (pitch > kRatioEpsilon) speed = std::min(speed, ax[g.axes.w].maxVelocity / pitch);
-      speed = std::min(speed, curvatureLimit(g.minRadius(), planeAccel, true));
+      speed = std::min(speed, curvatureLimit(g.minRadius(), planeAccel,
+                                              std::min(filterAccel_[g.axes.u], filterAccel_[g.axes.v]), true));
     } else {
       speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
     }
@@ -307,21 +315,20 @@ class Planner {
 
   // The acceleration along the path that keeps every axis within its share, mm/s^2.
   double tangentialAccel(const PathSegment& seg) const {
-    const auto& ax = machine_.axes;
-    if (!seg.arc)
-      return budget_.tangentialAccel * projectedLimit(seg.direction, [&](int a) { return ax[a].maxAcceleration; });
+    if (!seg.arc) return projectedLimit(seg.direction, [&](int a) { return rampAccel_[a]; });
     const ArcGeometry& g = seg.arcGeometry;
-    double accel = std::min(ax[g.axes.u].maxAcceleration, ax[g.axes.v].maxAcceleration);
+    double accel = std::min(rampAccel_[g.axes.u], rampAccel_[g.axes.v]);
     const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
-    if (pitch > kRatioEpsilon) accel = std::min(accel, ax[g.axes.w].maxAcceleration / pitch);
-    return budget_.tangentialAccel * accel;
+    if (pitch > kRatioEpsilon) accel = std::min(accel, rampAccel_[g.axes.w] / pitch);
+    return accel;
   }
 
   // Speed limit on a curve of radius r (mm): centripetal acceleration and its turning rate,
   // the deviation the filters cause on a curve, and (arcs) the chord error between samples.
-  // `onArc`: an exact arc, whose ramps addSegment holds within curveAccelLimit; else the
-  // radius through three points of short G1 moves.
-  double curvatureLimit(double radius, double accel, bool onArc) const {
+  // `accel`: the axes' acceleration in the curve's plane; `rampBound`: the most its ramps may use
+  // (filterAccel_). `onArc`: an exact arc, whose ramps addSegment holds within curveAccelLimit;
+  // else the radius through three points of short G1 moves.
+  double curvatureLimit(double radius, double accel, double rampBound, bool onArc) const {
     if (!(radius > kLengthEpsilon)) return kSlowestSpeed;
     if (!std::isfinite(radius)) return kInfinity;
     double v = std::sqrt(budget_.normalAccel * accel * radius);
@@ -334,7 +341,7 @@ class Planner {
     // not at a crawl.
     const double s2 = (t1_ * t1_ + t2_ * t2_) / 12.0;
     if (s2 > 0) {
-      const double a = std::min(budget_.tangentialAccel * accel, onArc ? curveAccelLimit(radius) : kInfinity);
+      const double a = std::min(rampBound, onArc ? curveAccelLimit(radius) : kInfinity);
       const double room = 2.0 * radius * smoothingTolerance_ - a * a * filterMoment4() / 4.0;
       v = std::min(v, room > 0 ? std::sqrt(room / s2) : kSlowestSpeed);
     }
@@ -375,7 +382,11 @@ class Planner {
       // Averaged over the filters, the samples around a corner passed at v with tangential
       // acceleration up to a lie off the path by about
       //   |turn| / 2 * (v (T1 + T2) / 4 + a (T1^2 + T2^2) / 24).
-      const double accel = std::max(accelIn, tangentialAccel(out));
+      const double accel =
+          machine_.jerkLimited()
+              ? std::max(projectedLimit(in.endTangent(), [&](int a) { return filterAccel_[a]; }),
+                         projectedLimit(out.startTangent(), [&](int a) { return filterAccel_[a]; }))
+              : std::max(accelIn, tangentialAccel(out));
       const double budget = 2.0 * smoothingTolerance_ / turnNorm - accel * (t1_ * t1_ + t2_ * t2_) / 24.0;
       if (budget <= 0) {
         // Stopped at the corner for h, the filters (width W = T1 + T2, taken as uniform, which
@@ -393,7 +404,7 @@ class Planner {
       // Short G1 moves approximate a curve: its radius from three points limits the speed.
       const double radius = threePointRadius(in.start, in.end, out.end);
       junctionRadius_ = radius;
-      v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), false));
+      v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), filterAccel_.minCoeff(), false));
     }
     return v;
   }
@@ -402,6 +413,11 @@ class Planner {
   const LimitBudget budget_;
   const std::string source_;
   double t1_ = 0, t2_ = 0;
+  // mm/s^2 per axis: the most a ramp may use with the jerk filter T1 (the tangential share of
+  // jerk over T1 / 2; without a jerk limit, the tangential share of acceleration), which bounds
+  // the filters' deviation whatever the acceleration limits are; and what ramps use (also within
+  // the tangential share of acceleration).
+  Vec3 filterAccel_ = Vec3::Zero(), rampAccel_ = Vec3::Zero();
   double settleTime_ = 0;  // s for the filters to drain
   double smoothingTolerance_ = 0;
   double holdBefore_ = 0;  // s of dwell before the first motion

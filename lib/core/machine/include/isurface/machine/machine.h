@@ -27,6 +27,12 @@ enum class TrajectoryPlanner : unsigned char { Generic, LinuxCnc29 };
 // program says, and its trajectory planner.
 struct ControlModes {
   TrajectoryPlanner planner = TrajectoryPlanner::Generic;
+  // s, how long the control takes to build up an axis's full acceleration at its jerk limit: the
+  // time its jerk filter spreads a change of acceleration over (Fanuc's time constant after
+  // interpolation, Siemens' jerk filter time). A setting of the control, not of the axes: lowering
+  // an acceleration leaves it as it is. A description that does not give it gets the largest a / j
+  // of its own axes; 0 without a jerk limit.
+  double accelerationRiseTime = 0;
   bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
   bool inch = false;   // G20 at power-on
   Plane plane = Plane::XY;    // G17 at power-on
@@ -57,6 +63,10 @@ struct Machine {
 
   bool jerkLimited() const { return axes[0].maxJerk > 0 && axes[1].maxJerk > 0 && axes[2].maxJerk > 0; }
 };
+
+// s, the largest a / j of the machine's axes (0 without a jerk limit): the rise time a description
+// that does not name one gets.
+double largestRiseTime(const Machine& m);
 
 // Parses a machine description. Units in the file are mm, s and mm/min for velocities (as on a
 // control panel); every missing key takes the default's value. Throws InputError naming the
