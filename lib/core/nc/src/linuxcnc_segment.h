@@ -28,10 +28,11 @@ struct SegmentPart {
 struct Segment {
   Shape shape = Shape::Line;
   // Line: start..end. Arc: `arc`. Blend: a straight lead of `lead` mm from `start` along
-  // `direction`, then an arc of `radius` about `centre` from `e0` towards `e1` over `angle` rad.
+  // `direction`, then LinuxCNC's spherical arc about `centre` from `centre + rStart` to
+  // `centre + rEnd` over `angle` rad, run at `radius` (|rStart|) mm per rad.
   Vec3 start = Vec3::Zero(), end = Vec3::Zero(), direction = Vec3::Zero();
   ArcGeometry arc;
-  Vec3 centre = Vec3::Zero(), e0 = Vec3::Zero(), e1 = Vec3::Zero();
+  Vec3 centre = Vec3::Zero(), rStart = Vec3::Zero(), rEnd = Vec3::Zero();
   double radius = 0, angle = 0, lead = 0;
 
   double target = 0;         // mm, length
