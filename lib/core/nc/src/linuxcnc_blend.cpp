@@ -22,7 +22,7 @@ double intersectionAngle(const Vec3& u1, const Vec3& u2) { return std::acos(std:
 
 double peakVelocity(double a, double length) { return std::sqrt(std::max(0.0, a * length)); }
 
-double maxTargetVelocity(const Segment& s) { return std::min(s.targetVelocity, s.maxVelocity); }
+double maxTargetVelocity(const Segment& s) { return std::min(s.requested, s.maxVelocity); }
 
 void setTerm(Segment* prev, Segment* next, Term term) {
   if (next) next->blendBefore = term == Term::Parabolic;
@@ -158,7 +158,6 @@ std::optional<Segment> blendSegment(const Segment& prev, const Segment& next, co
   arc.target = arc.lead + arc.radius * arc.angle;
   arc.nominalLength = arc.target;
   arc.requested = plan.vRequested;
-  arc.targetVelocity = plan.vRequested;
   arc.maxVelocity = std::min(plan.vPlan, arc.target / cycle);
   arc.maxAcceleration = plan.aMax;
   arc.tolerance = next.tolerance;

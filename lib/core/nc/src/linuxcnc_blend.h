@@ -64,7 +64,8 @@ Joint chooseBestBlend(Segment& prev, Segment& next, const Segment* arc);
 void parabolicBlendVelocities(const Segment& tc, const Segment& next, double targetThis, double targetNext,
                               double& vThis, double& vNext, double* vNet);
 
-// The speed a segment may at most be commanded: its feed, its limits.
+// The speed a segment may at most be commanded: its feed, its limits (tcGetMaxTargetVel of a
+// move not synchronised with the spindle).
 double maxTargetVelocity(const Segment& s);
 // sqrt(a L): the peak of a triangle profile over `length` mm at `a` mm/s^2.
 double peakVelocity(double a, double length);

@@ -188,7 +188,6 @@ void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const
 
 void LinuxCncMotion::Impl::enqueue(Segment tc, std::uint8_t flags) {
   tc.nominalLength = tc.target;
-  tc.targetVelocity = tc.requested;
   tc.maxVelocity = std::min(tc.maxVelocity, tc.target / machine.cycle);
   tc.cycle = machine.cycle;
   tc.tolerance = blending.blend;

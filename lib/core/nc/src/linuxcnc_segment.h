@@ -39,7 +39,6 @@ struct Segment {
   double nominalLength = 0;  // mm, before blends trimmed it
   double progress = 0;       // mm
   double requested = 0;      // mm/s, the feed (the axis-limited speed for rapids)
-  double targetVelocity = 0; // mm/s
   double maxVelocity = 0;    // mm/s
   double maxAcceleration = 0;// mm/s^2
   double tolerance = 0;      // mm, G64 P (0: none)
@@ -47,7 +46,7 @@ struct Segment {
   double velocity = 0;       // mm/s, now
   double kinkVelocity = -1;  // mm/s, < 0: none
   double kinkReduction = 0, kinkReductionBefore = 0;  // share of acceleration kept for a kink
-  double blendVelocity = 0, velocityAtBlendStart = 0, terminalVelocity = 0;  // mm/s
+  double blendVelocity = 0, terminalVelocity = 0;  // mm/s
   double cycle = 0;          // s, of this segment's next update (shorter in a split cycle)
   Term term = Term::Parabolic;
   bool traverse = false;     // a rapid
