@@ -22,7 +22,7 @@ double intersectionAngle(const Vec3& u1, const Vec3& u2) { return std::acos(std:
 
 double peakVelocity(double a, double length) { return std::sqrt(std::max(0.0, a * length)); }
 
-double maxTargetVelocity(const Segment& s) { return std::min(s.targetVelocity, s.maxVelocity); }
+double maxTargetVelocity(const Segment& s) { return std::min(s.requested, s.maxVelocity); }
 
 void setTerm(Segment* prev, Segment* next, Term term) {
   if (next) next->blendBefore = term == Term::Parabolic;
@@ -105,73 +105,99 @@ Joint chooseBestBlend(Segment& prev, Segment& next, const Segment* arc) {
   return best;
 }
 
-std::optional<BlendArc> lineLineBlend(const Segment& prev, const Segment& next, const AxisBounds& bounds) {
-  if (prev.shape != Shape::Line || next.shape != Shape::Line) return std::nullopt;
-  const Vec3 u1 = prev.direction, u2 = next.direction;
-  const double theta = intersectionAngle(u1, u2);
-  if (kPi / 2 - theta < kAngleEpsilon || theta < kAngleEpsilon) return std::nullopt;
-  const Vec3 binormal = u1.cross(u2).normalized();
-  const Vec3 normal = (u2 - u1).normalized();
-  const Vec3 corner = next.start;
-  const double phi = kPi - 2 * theta;
-
+void planKinematics(const Segment& prev, const Segment& next, const Vec3& binormal, double vAltitude,
+                    const AxisBounds& bounds, BlendPlan& plan) {
+  plan.phi = kPi - 2 * plan.theta;
   // The tolerance: each side's G64 P (or a quarter of its length), never more than a quarter.
   const double t1 = prev.tolerance > 0 ? prev.tolerance : prev.nominalLength * 0.25;
   const double t2 = next.tolerance > 0 ? next.tolerance : next.nominalLength * 0.25;
-  const double tolerance = std::min({t1, t2, prev.nominalLength * 0.25, next.nominalLength * 0.25});
-  const double aMax = inscribedInPlane(binormal, bounds.acceleration);
-  const double aNormal = aMax * kNormalShare;
-  const double vRequested = std::max(prev.requested, next.requested);
+  plan.tolerance = std::min({t1, t2, prev.nominalLength * 0.25, next.nominalLength * 0.25});
+  plan.aMax = inscribedInPlane(binormal, bounds.acceleration);
+  plan.aNormal = plan.aMax * kNormalShare;
+  plan.vRequested = std::max(prev.requested, next.requested);
   const double vPlanar = inscribedInPlane(binormal, bounds.velocity);
+  plan.vGoal = std::min(plan.vRequested, std::max(vAltitude, vPlanar));
+}
+
+bool planRadius(BlendPlan& plan) {
+  const double dTolerance = std::cos(plan.theta) * plan.tolerance / (1.0 - std::sin(plan.theta));
+  const double dGeometry = std::min({plan.l1, plan.l2, dTolerance});
+  const double rGeometry = std::tan(plan.theta) * dGeometry;
+  plan.vPlan = std::min(std::sqrt(plan.aNormal * rGeometry), plan.vGoal);
+  // As small a radius as reaches the speed a parabolic blend of these lengths would have.
+  const double aParabolic = plan.aMax * 0.5;
+  const double vTriangle = std::sqrt(2.0 * aParabolic * dGeometry);
+  const double sBlend = std::min(vTriangle, plan.vPlan) / aParabolic * plan.vPlan;
+  const double rBlend = std::min(sBlend / plan.phi, rGeometry);
+  plan.rPlan = std::max(plan.vPlan * plan.vPlan / plan.aNormal, rBlend);
+  plan.dPlan = plan.rPlan / std::tan(plan.theta);
+  return plan.rPlan >= 1e-12 && plan.rPlan * plan.phi >= kMinArcLength;
+}
+
+bool consumesRest(const Segment& prev, double trim, double vPlan, double cycle) {
+  if (prev.shape != Shape::Line) return false;
+  return (prev.target - trim) / vPlan < kGapCycles * cycle && !prev.blendBefore;
+}
+
+std::optional<Segment> blendSegment(const Segment& prev, const Segment& next, const BlendPlan& plan, const Vec3& arcStart,
+                                    const Vec3& arcEnd, const Vec3& centre, double lead, double cycle) {
+  Segment arc;
+  arc.shape = Shape::Blend;
+  arc.centre = centre;
+  arc.rStart = arcStart - centre;
+  arc.rEnd = arcEnd - centre;
+  const double r0 = arc.rStart.norm(), r1 = arc.rEnd.norm();
+  if (r0 < 1e-12 || r1 < 1e-12) return std::nullopt;  // ARC_MIN_RADIUS
+  arc.radius = r0;
+  arc.angle = std::acos(std::clamp(arc.rStart.dot(arc.rEnd) / (r0 * r1), -1.0, 1.0));
+  if (arc.angle < 1e-6) return std::nullopt;  // ARC_MIN_ANGLE
+  arc.lead = lead;
+  arc.direction = prev.endTangent();
+  arc.start = arcStart - arc.direction * lead;
+  arc.end = arcEnd;
+  arc.target = arc.lead + arc.radius * arc.angle;
+  arc.nominalLength = arc.target;
+  arc.requested = plan.vRequested;
+  arc.maxVelocity = std::min(plan.vPlan, arc.target / cycle);
+  arc.maxAcceleration = plan.aMax;
+  arc.tolerance = next.tolerance;
+  arc.term = Term::Tangent;
+  arc.traverse = prev.traverse;
+  arc.finalized = true;
+  return arc;
+}
+
+std::optional<BlendArc> lineLineBlend(const Segment& prev, const Segment& next, const AxisBounds& bounds) {
+  if (prev.shape != Shape::Line || next.shape != Shape::Line) return std::nullopt;
+  const Vec3 u1 = prev.direction, u2 = next.direction;
+  BlendPlan plan;
+  plan.theta = intersectionAngle(u1, u2);
+  if (kPi / 2 - plan.theta < kAngleEpsilon || plan.theta < kAngleEpsilon) return std::nullopt;
+  const Vec3 binormal = u1.cross(u2).normalized();
+  const Vec3 normal = (u2 - u1).normalized();
+  const Vec3 corner = next.start;
+
+  // The speed two lines allow: the altitude of the triangle of their speed vectors.
+  const double phi = kPi - 2 * plan.theta;
   const double phiEffective = std::min(phi, kPi * 0.49);
   const double v1 = std::min(prev.maxVelocity, next.maxVelocity / std::cos(phiEffective));
   const double v2 = std::min(next.maxVelocity, prev.maxVelocity / std::cos(phiEffective));
   const double base = (u2 * v2 - u1 * v1).norm();
   const double vAltitude = base > 0 ? v1 * v2 * std::sin(phi) / base : 0.0;
-  const double vGoal = std::min(vRequested, std::max(vAltitude, vPlanar));
-
-  const double l1 = std::min(prev.target, prev.nominalLength * kBlendDistanceShare);
-  const double l2 = next.target * kBlendDistanceShare;
-  const double dTolerance = std::cos(theta) * tolerance / (1.0 - std::sin(theta));
-  const double dGeometry = std::min({l1, l2, dTolerance});
-  const double rGeometry = std::tan(theta) * dGeometry;
-  const double vPlan = std::min(std::sqrt(aNormal * rGeometry), vGoal);
-  // As small a radius as reaches the speed a parabolic blend of these lengths would have.
-  const double aParabolic = aMax * 0.5;
-  const double vTriangle = std::sqrt(2.0 * aParabolic * dGeometry);
-  const double sBlend = std::min(vTriangle, vPlan) / aParabolic * vPlan;
-  const double rBlend = std::min(sBlend / phi, rGeometry);
-  const double rPlan = std::max(vPlan * vPlan / aNormal, rBlend);
-  const double dPlan = rPlan / std::tan(theta);
-  if (!(rPlan >= 1e-12) || rPlan * phi < kMinArcLength) return std::nullopt;
+  planKinematics(prev, next, binormal, vAltitude, bounds, plan);
+  plan.l1 = std::min(prev.target, prev.nominalLength * kBlendDistanceShare);
+  plan.l2 = next.target * kBlendDistanceShare;
+  if (!planRadius(plan)) return std::nullopt;
 
   BlendArc blend;
-  blend.arcStart = corner - u1 * dPlan;
-  blend.arcEnd = corner + u2 * dPlan;
-  const double rest = prev.target - dPlan;
-  blend.consumesPrevious = rest / vPlan < kGapCycles * bounds.cycle && !prev.blendBefore;
-  Segment& arc = blend.segment;
-  arc.shape = Shape::Blend;
-  arc.centre = corner + normal * (rPlan / std::sin(theta));
-  arc.radius = (blend.arcStart - arc.centre).norm();
-  arc.e0 = (blend.arcStart - arc.centre) / arc.radius;
-  const Vec3 toEnd = blend.arcEnd - arc.centre;
-  arc.e1 = (toEnd - arc.e0 * arc.e0.dot(toEnd)).normalized();
-  arc.angle = std::acos(std::clamp(arc.e0.dot(toEnd.normalized()), -1.0, 1.0));
-  arc.lead = blend.consumesPrevious ? std::max(0.0, rest) : 0.0;
-  arc.direction = u1;
-  arc.start = blend.arcStart - u1 * arc.lead;
-  arc.end = blend.arcEnd;
-  arc.target = arc.lead + arc.radius * arc.angle;
-  arc.nominalLength = arc.target;
-  arc.requested = vRequested;
-  arc.targetVelocity = vRequested;
-  arc.maxVelocity = std::min(vPlan, arc.target / bounds.cycle);
-  arc.maxAcceleration = aMax;
-  arc.tolerance = next.tolerance;
-  arc.term = Term::Tangent;
-  arc.traverse = prev.traverse;
-  arc.finalized = true;
+  blend.arcStart = corner - u1 * plan.dPlan;
+  blend.arcEnd = corner + u2 * plan.dPlan;
+  blend.consumesPrevious = consumesRest(prev, plan.dPlan, plan.vPlan, bounds.cycle);
+  const double lead = blend.consumesPrevious ? std::max(0.0, prev.target - plan.dPlan) : 0.0;
+  const Vec3 centre = corner + normal * (plan.rPlan / std::sin(plan.theta));
+  std::optional<Segment> arc = blendSegment(prev, next, plan, blend.arcStart, blend.arcEnd, centre, lead, bounds.cycle);
+  if (!arc) return std::nullopt;
+  blend.segment = std::move(*arc);
   return blend;
 }
 

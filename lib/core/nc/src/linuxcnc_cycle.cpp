@@ -79,7 +79,6 @@ void checkEnd(Segment& tc, const Segment* next, double cycle) {
 // One update of a segment over its `cycle`; moves the queue's position with it.
 void updateCycle(MotionQueue& queue, Segment& tc, const Segment* next) {
   const Vec3 before = tc.pointAt(tc.progress);
-  if (!tc.blendingNext) tc.velocityAtBlendStart = tc.velocity;
   Update u{};
   if (!(tc.ramp && tc.term == Term::Tangent && ramp(tc, next, u))) u = trapezoid(tc, next);
   double v = tc.velocity + u.acceleration * tc.cycle;
@@ -93,16 +92,6 @@ void updateCycle(MotionQueue& queue, Segment& tc, const Segment* next) {
   tc.onFinalDeceleration = std::abs(u.desired - tc.velocity) < kVelocityEpsilon && u.acceleration < 0;
   checkEnd(tc, next, queue.cycle);
   queue.position += tc.pointAt(tc.progress) - before;
-}
-
-// A parabolic blend: the next segment speeds up as this one slows down.
-void updateBlend(MotionQueue& queue, Segment& tc, Segment& next) {
-  const double saved = next.targetVelocity;
-  const double dv = tc.velocityAtBlendStart - tc.velocity;
-  const double progress = std::clamp(dv / std::max(tc.velocityAtBlendStart, kVelocityEpsilon), 0.0, 1.0);
-  next.targetVelocity = progress * next.blendVelocity * (tc.velocityAtBlendStart / tc.blendVelocity);
-  updateCycle(queue, next, nullptr);
-  next.targetVelocity = saved;
 }
 
 void activate(Segment& tc) {
@@ -150,12 +139,14 @@ SegmentPart runCycle(MotionQueue& queue) {
       double vThis = 0, vNext = 0;
       parabolicBlendVelocities(tc, *next, realTargetVelocity(tc), realTargetVelocity(*next), vThis, vNext, nullptr);
       tc.blendVelocity = vThis;
-      next->blendVelocity = vNext;
     }
     const bool blending = tc.term == Term::Parabolic && tc.onFinalDeceleration && tc.velocity < tc.blendVelocity;
     tc.blendingNext = tc.blendingNext || blending;
     if (next && tc.blendingNext) {
-      updateBlend(queue, tc, *next);
+      // tpUpdateBlend sets the next segment's target_vel, which LinuxCNC 2.9 reads only for
+      // spindle-synchronised moves (tcGetMaxTargetVel takes reqvel otherwise): the next segment
+      // runs its own trapezoid, at its halved acceleration, from the start of the blend.
+      updateCycle(queue, *next, nullptr);
       if (tc.velocity <= next->velocity) reporting = next;
     }
   }

@@ -14,6 +14,7 @@
 
 #include "isurface/base/geometry.h"
 #include "isurface/nc/servo.h"
+#include "linuxcnc_arc_blend.h"
 #include "linuxcnc_blend.h"
 #include "linuxcnc_cycle.h"
 
@@ -77,6 +78,7 @@ struct LinuxCncMotion::Impl {
   void enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part);
   void enqueue(Segment tc, std::uint8_t flags);
   void joinToPrevious(Segment& tc);
+  bool insertBlend(Segment* prev, Segment& tc, BlendArc& blend);
   void finalize(Segment& s) const;
   void optimize();
   void runAhead(std::size_t keep);
@@ -186,7 +188,6 @@ void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const
 
 void LinuxCncMotion::Impl::enqueue(Segment tc, std::uint8_t flags) {
   tc.nominalLength = tc.target;
-  tc.targetVelocity = tc.requested;
   tc.maxVelocity = std::min(tc.maxVelocity, tc.target / machine.cycle);
   tc.cycle = machine.cycle;
   tc.tolerance = blending.blend;
@@ -206,28 +207,51 @@ void LinuxCncMotion::Impl::joinToPrevious(Segment& tc) {
   if (prev->traverse != tc.traverse) setTerm(prev, &tc, Term::Stop);
   if (prev->progress <= prev->target / 2 && setUpTangent(*prev, tc, bounds) == TangentCheck::Kink) {
     std::optional<BlendArc> blend;
-    if (prev->term == Term::Parabolic && !prev->finalized) blend = lineLineBlend(*prev, tc, bounds);
+    if (prev->term == Term::Parabolic && !prev->finalized)
+      blend = prev->shape == Shape::Line && tc.shape == Shape::Line ? lineLineBlend(*prev, tc, bounds)
+                                                                      : arcBlend(*prev, tc, bounds);
     if (blend && chooseBestBlend(*prev, tc, &blend->segment) == Joint::Arc) {
-      tc.start = blend->arcEnd;
-      tc.target = (tc.end - tc.start).norm();
-      blend->segment.part = tc.part;
-      blend->segment.cycle = machine.cycle;
-      if (blend->consumesPrevious && !prev->active) {
-        queue.segments.pop_back();
-        prev = nullptr;
-        tc.blendBefore = false;
-      } else {
-        blend->segment.lead = 0;
-        prev->end = blend->arcStart;
-        prev->target = (prev->end - prev->start).norm();
-        setTerm(prev, &tc, Term::Tangent);
-      }
-      queue.segments.push_back(std::move(blend->segment));
+      if (insertBlend(prev, tc, *blend)) prev = nullptr;
     } else if (!blend) {
       chooseBestBlend(*prev, tc, nullptr);
     }
   }
   if (prev) finalize(*prev);
+}
+
+// Cuts both segments to the blend arc and queues it; true if it took the rest of `prev`.
+bool LinuxCncMotion::Impl::insertBlend(Segment* prev, Segment& tc, BlendArc& blend) {
+  tc.start = blend.arcEnd;
+  if (tc.shape == Shape::Arc) {
+    tc.arc = blend.nextArc;
+    tc.target = tc.arc.length();
+  } else {
+    tc.target = (tc.end - tc.start).norm();
+  }
+  blend.segment.part = tc.part;
+  blend.segment.cycle = machine.cycle;
+  bool consumed = false;
+  if (blend.consumesPrevious && !prev->active) {
+    queue.segments.pop_back();
+    consumed = true;
+    tc.blendBefore = false;
+  } else {
+    blend.segment.target -= blend.segment.lead;
+    blend.segment.nominalLength = blend.segment.target;
+    blend.segment.start = blend.arcStart;
+    blend.segment.lead = 0;
+    blend.segment.maxVelocity = std::min(blend.segment.maxVelocity, blend.segment.target / machine.cycle);
+    prev->end = blend.arcStart;
+    if (prev->shape == Shape::Arc) {
+      prev->arc = blend.prevArc;
+      prev->target = prev->arc.length();
+    } else {
+      prev->target = (prev->end - prev->start).norm();
+    }
+    setTerm(prev, &tc, Term::Tangent);
+  }
+  queue.segments.push_back(std::move(blend.segment));
+  return consumed;
 }
 
 void LinuxCncMotion::Impl::finalize(Segment& s) const {

@@ -15,8 +15,12 @@ Vec3 Segment::pointAt(double s) const {
     case Shape::Blend:
       if (s <= lead) return start + direction * s;
       {
-        const double a = radius > 0 ? std::min((s - lead) / radius, angle) : 0.0;
-        return centre + radius * (std::cos(a) * e0 + std::sin(a) * e1);
+        // Interpolated between the radii at both ends (arcPoint's slerp), so that a blend
+        // whose ends are at slightly different distances from its centre still meets both.
+        const double a = radius > 0 ? std::clamp((s - lead) / radius, 0.0, angle) : 0.0;
+        const double sine = std::sin(angle);
+        if (sine < 1e-12) return centre + rStart;
+        return centre + rStart * (std::sin(angle - a) / sine) + rEnd * (std::sin(a) / sine);
       }
   }
   return start;
@@ -35,7 +39,11 @@ Vec3 Segment::endTangent() const {
   switch (shape) {
     case Shape::Line: return direction;
     case Shape::Arc: return arc.tangentAt(1);
-    case Shape::Blend: return (-std::sin(angle) * e0 + std::cos(angle) * e1).normalized();
+    case Shape::Blend: {
+      // d/da of the slerp at its end.
+      const Vec3 d = rEnd * std::cos(angle) - rStart;
+      return d.norm() > 0 ? Vec3(d.normalized()) : direction;
+    }
   }
   return direction;
 }

@@ -28,17 +28,17 @@ struct SegmentPart {
 struct Segment {
   Shape shape = Shape::Line;
   // Line: start..end. Arc: `arc`. Blend: a straight lead of `lead` mm from `start` along
-  // `direction`, then an arc of `radius` about `centre` from `e0` towards `e1` over `angle` rad.
+  // `direction`, then LinuxCNC's spherical arc about `centre` from `centre + rStart` to
+  // `centre + rEnd` over `angle` rad, run at `radius` (|rStart|) mm per rad.
   Vec3 start = Vec3::Zero(), end = Vec3::Zero(), direction = Vec3::Zero();
   ArcGeometry arc;
-  Vec3 centre = Vec3::Zero(), e0 = Vec3::Zero(), e1 = Vec3::Zero();
+  Vec3 centre = Vec3::Zero(), rStart = Vec3::Zero(), rEnd = Vec3::Zero();
   double radius = 0, angle = 0, lead = 0;
 
   double target = 0;         // mm, length
   double nominalLength = 0;  // mm, before blends trimmed it
   double progress = 0;       // mm
   double requested = 0;      // mm/s, the feed (the axis-limited speed for rapids)
-  double targetVelocity = 0; // mm/s
   double maxVelocity = 0;    // mm/s
   double maxAcceleration = 0;// mm/s^2
   double tolerance = 0;      // mm, G64 P (0: none)
@@ -46,7 +46,7 @@ struct Segment {
   double velocity = 0;       // mm/s, now
   double kinkVelocity = -1;  // mm/s, < 0: none
   double kinkReduction = 0, kinkReductionBefore = 0;  // share of acceleration kept for a kink
-  double blendVelocity = 0, velocityAtBlendStart = 0, terminalVelocity = 0;  // mm/s
+  double blendVelocity = 0, terminalVelocity = 0;  // mm/s
   double cycle = 0;          // s, of this segment's next update (shorter in a split cycle)
   Term term = Term::Parabolic;
   bool traverse = false;     // a rapid
