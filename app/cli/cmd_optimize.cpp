@@ -150,6 +150,7 @@ int runOptimize(const OptimizeCliOptions& o) {
       {"region", {{"before", figuresJson(r.regionBefore)}, {"after", figuresJson(r.regionAfter)}}},
       {"whole_program", {{"before", figuresJson(r.wholeBefore)}, {"after", figuresJson(r.wholeAfter)}}},
       {"max_path_distance_mm", distance}, {"passes", passes},
+      {"program_lines", {{"before", r.linesBefore}, {"after", r.linesAfter}}},
       {"compared_box_mm", {{"min", {lower.x(), lower.y()}}, {"max", {upper.x(), upper.y()}}}}};
   if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
   if (!o.pngBefore.empty() || !o.pngAfter.empty()) {

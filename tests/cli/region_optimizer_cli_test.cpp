@@ -31,6 +31,19 @@ TEST(regionOptimizer, CommandWritesTheProgramAndTheComparison) {
                             "speed_inconsistency_mean_mm_min", "jerk_p99_mm_s3", "predicted_deviation_p99_um"})
       EXPECT_TRUE(cmp[part]["after"].contains(key)) << part << " " << key;
   EXPECT_TRUE(cmp.contains("kept"));
+  // The program's size before and after, as the files have it: a cost the user pays.
+  auto lines = [](const std::string& path) {
+    const std::string text = readFile(path);
+    return static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  };
+  EXPECT_EQ(cmp["program_lines"]["before"].get<std::size_t>(), lines(sourcePath("samples/transition-surface.nc")));
+  if (cmp["kept"].get<bool>()) {
+    EXPECT_EQ(cmp["program_lines"]["after"].get<std::size_t>(), lines(out));
+  }
+  EXPECT_NE(r.out.find(fmt::format("program {} -> {} lines", cmp["program_lines"]["before"].get<std::size_t>(),
+                                   cmp["program_lines"]["after"].get<std::size_t>())),
+            std::string::npos)
+      << r.out;
   EXPECT_EQ(runCli("optimize " + sourcePath("samples/transition-surface.nc") + " --lines 9-1 -o " + out).exitCode, 2);
   EXPECT_EQ(runCli("optimize " + sourcePath("samples/transition-surface.nc") + " --lines 1-5 --auto -o " + out).exitCode, 2);
 }

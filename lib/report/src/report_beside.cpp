@@ -128,13 +128,16 @@ void optimisationSection(HtmlDocument& doc, const OpenedRun& run, const ReportOp
   figuresTable(doc, "before", "after", r.timeBefore, r.timeAfter, r.regionBefore, r.regionAfter);
   doc.heading(3, "The whole program");
   figuresTable(doc, "before", "after", r.timeBefore, r.timeAfter, r.wholeBefore, r.wholeAfter);
-  doc.paragraph(fmt::format("The new path lies within {:.4f} mm of the old one over the region.", r.maxPathDistance));
+  doc.paragraph(fmt::format("The new path lies within {:.4f} mm of the old one over the region. The program has {} lines "
+                            "before and {} after.",
+                            r.maxPathDistance, r.linesBefore, r.linesAfter));
   doc.closeSection();
   out["optimisation"] = {{"mode", all ? "all" : "auto"},
                          {"lines", {r.lines.first, r.lines.last}},
                          {"kept", r.kept},
                          {"reason", r.reason},
                          {"max_path_distance_mm", r.maxPathDistance},
+                         {"program_lines", {{"before", r.linesBefore}, {"after", r.linesAfter}}},
                          {"region", {{"before", figuresJson(r.timeBefore, r.regionBefore)},
                                      {"after", figuresJson(r.timeAfter, r.regionAfter)}}},
                          {"whole_program", {{"before", figuresJson(r.timeBefore, r.wholeBefore)},

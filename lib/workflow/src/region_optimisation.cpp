@@ -17,6 +17,7 @@
 #include "isurface/workflow/run_inputs.h"
 
 #include "candidate_feed_limits.h"
+#include "candidate_choice.h"
 #include "surface_required.h"
 
 namespace isurface {
@@ -96,9 +97,15 @@ double passSpacing(const SurfaceRun& run) {
 }
 
 // What every candidate is judged against: the program's own figures, measured once per box.
+// Lines of a program's text (a last line without its newline counts).
+std::size_t lineCount(const std::string& text) {
+  const std::size_t newlines = static_cast<std::size_t>(std::count(text.begin(), text.end(), '\n'));
+  return newlines + (!text.empty() && text.back() != '\n' ? 1 : 0);
+}
+
 struct Baseline {
-  Baseline(const Program& program, const SurfaceRun& run)
-      : program(program), run(run), values(figureValues(*run.samples, *run.mesh)),
+  Baseline(const std::string& text, const Program& program, const SurfaceRun& run)
+      : program(program), run(run), lines(lineCount(text)), values(figureValues(*run.samples, *run.mesh)),
         whole(measureQualityFigures(values, *run.samples, *run.mesh)), passSpacing(isurface::passSpacing(run)) {}
 
   const QualityFigures& regionIn(const Vec3& lower, const Vec3& upper, LineRange lines) {
@@ -109,6 +116,7 @@ struct Baseline {
 
   const Program& program;
   const SurfaceRun& run;
+  std::size_t lines;  // of the program's text
   FigureValues values;
   QualityFigures whole;
   double passSpacing;  // mm
@@ -168,6 +176,8 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   }
   r.wholeBefore = before.whole;
   r.maxPathDistance = pathDistance.get();
+  r.linesBefore = before.lines;
+  r.linesAfter = lineCount(r.result.text);
   r.timeBefore = machiningTime(*before.run.samples);
   r.timeAfter = machiningTime(*r.after.samples);
   r.regionTimeBefore = timeOnLines(*before.run.samples, request.lines);
@@ -178,31 +188,6 @@ RegionOptimisation evaluateCandidate(OptimizeResult result, Baseline& before, co
   }
   if (progress) progress(1.0);
   return r;
-}
-
-// The region's figures after over before, averaged (smaller is better): how Objective::Quality
-// ranks the candidates it keeps.
-double qualityScore(const RegionOptimisation& r) {
-  const QualityFigures &a = r.regionBefore, &b = r.regionAfter;
-  auto ratio = [](double before, double after, double floor) { return std::max(after, floor) / std::max(before, floor); };
-  const double sum = ratio(a.speedFluctuation, b.speedFluctuation, 0.1) + ratio(a.inconsistencyP99, b.inconsistencyP99, 0.1) +
-                     ratio(a.inconsistencyMean, b.inconsistencyMean, 0.1) + ratio(a.jerkP99, b.jerkP99, 1.0) +
-                     (a.hasDeviation ? ratio(a.deviationP99, b.deviationP99, 0.001) : 0.0);
-  return sum / (a.hasDeviation ? 5.0 : 4.0);
-}
-
-// The region's time after over before added to the quality score, so that the time weighs as
-// much as the figures together: how Objective::Balanced ranks the candidates it keeps, none of
-// them slower.
-double balancedScore(const RegionOptimisation& r) {
-  return qualityScore(r) + (r.regionTimeBefore > 0 ? r.regionTimeAfter / r.regionTimeBefore : 1.0);
-}
-
-// Whether `r` (kept) is a better choice than `best` (kept) for the objective.
-bool betterFor(Objective objective, const RegionOptimisation& r, const RegionOptimisation& best) {
-  if (objective == Objective::Time) return r.timeAfter < best.timeAfter;
-  if (objective == Objective::Balanced) return balancedScore(r) < balancedScore(best);
-  return qualityScore(r) < qualityScore(best);
 }
 
 struct Candidate {
@@ -410,7 +395,7 @@ RegionOptimisation optimiseRegion(const std::string& text, const Program& progra
   // (rounded_corners.h, taut_path.h), each with its speed peaks trimmed. Each distinct
   // candidate is simulated and judged; the objective chooses among those no worse than the
   // program. When none is, the first one's figures and reason are reported.
-  Baseline baseline(program, before);
+  Baseline baseline(text, program, before);
   ClosedLoop loop(text, baseline, machine, request, progress);
   std::vector<CrossPassRule> tooSlow;  // rules whose full feeds already took longer
   std::optional<double> deviationTarget;  // um: what the program's own run deviates by (p99)
@@ -483,7 +468,7 @@ std::string regionFigures(const RegionOptimisation& r) {
   return fmt::format(
       "lines {}-{}: {} re-fitted. Machining time {:.3f} -> {:.3f} s. In the region: speed fluctuation "
       "{:.1f} -> {:.1f} mm/min, inconsistency between passes p99 {:.1f} -> {:.1f} mm/min (mean {:.1f} -> {:.1f}), "
-      "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; programmed path moved {:.4f} mm at most ({})",
+      "jerk p99 {:.0f} -> {:.0f} mm/s^3{}; programmed path moved {:.4f} mm at most; program {} -> {} lines{} ({})",
       r.lines.first, r.lines.last,
       r.result.passes.size() == 1 ? std::string("1 pass") : fmt::format("{} passes", r.result.passes.size()), r.timeBefore, r.timeAfter, a.speedFluctuation,
       b.speedFluctuation, a.inconsistencyP99, b.inconsistencyP99, a.inconsistencyMean, b.inconsistencyMean, a.jerkP99,
@@ -491,7 +476,10 @@ std::string regionFigures(const RegionOptimisation& r) {
       a.hasDeviation && b.hasDeviation
           ? fmt::format(", predicted deviation p99 {:.2f} -> {:.2f} \u00b5m", a.deviationP99, b.deviationP99)
           : "",
-      r.maxPathDistance, r.plan);
+      r.maxPathDistance, r.linesBefore, r.linesAfter,
+      r.linesBefore > 0 && r.linesAfter > r.linesBefore ? fmt::format(" (x{:.1f})", double(r.linesAfter) / double(r.linesBefore))
+                                                         : "",
+      r.plan);
 }
 
 std::string regionVerdict(const RegionOptimisation& r) {

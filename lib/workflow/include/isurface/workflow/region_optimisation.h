@@ -88,6 +88,10 @@ struct RegionOptimisation {
   // gain in time is measured by, a small region's being lost in the whole program's time.
   double regionTimeBefore = 0, regionTimeAfter = 0;
   double maxPathDistance = 0;              // mm, new path to old over the region
+  // Lines of the whole program before and after: a program many times longer costs the user
+  // (a control's block rate, its transfer), and among candidates that do about as well the
+  // shorter is chosen (kSameScoreWithin).
+  std::size_t linesBefore = 0, linesAfter = 0;
   // The new program is kept only when it is no slower, its path moved no more than
   // kPathMoveAllowed, no figure, of the region or of the whole program, is worse by more than
   // kWorseningAllowed, and it helps: the time spent on the region's lines or a figure of the
