@@ -20,6 +20,7 @@
 #include "isurface/nc/simulator.h"
 #include "isurface/workflow/file_kinds.h"
 #include "test_locations.h"
+#include "test_support.h"
 
 namespace isurface {
 namespace {
@@ -27,7 +28,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path dataDir() { return fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9"; }
-fs::path loweredAccelerationDir() { return fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-lowered-acceleration"; }
+// Recordings of programs in ../shared/realdata (read from there, not copied).
+fs::path realdataRecordingsDir() { return fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-realdata"; }
 std::string linuxcncSim() { return std::string(test::sourceDir()) + "/resources/machines/linuxcnc-sim.json"; }
 
 Trajectory recording(const std::string& name, const fs::path& folder = dataDir()) {
@@ -46,14 +48,15 @@ struct Agreement {
   double speedWithin = 0;      // share of samples whose speed is within 5 % of the feed
 };
 
-Agreement agreement(const std::string& name) {
+// `program`: the G-code the recording `name` in `folder` ran.
+Agreement agreement(const fs::path& program, const std::string& name, const fs::path& folder) {
   const Machine machine = loadMachine(linuxcncSim());
-  const InterpretResult program = interpretGcodeFile((dataDir() / (name + ".ngc")).string());
-  EXPECT_TRUE(program.ok());
+  const InterpretResult read = interpretGcodeFile(program.string());
+  EXPECT_TRUE(read.ok());
   TrajectorySink sink(machine.cycle, name, false);
-  simulate(program.program, machine, sink);
+  simulate(read.program, machine, sink);
   const Trajectory simulated = sink.take();
-  const Trajectory recorded = recording(name);
+  const Trajectory recorded = recording(name, folder);
   const RunComparison c = compareRuns(recorded, simulated);
 
   Agreement a;
@@ -66,7 +69,7 @@ Agreement agreement(const std::string& name) {
 
   // The programmed feed of each line (a rapid's: the machine's rapid rate), mm/min.
   std::map<std::uint32_t, double> feed;
-  for (const Move& m : program.program.moves)
+  for (const Move& m : read.program.moves)
     if (m.isMotion()) feed[m.line] = std::max(feed[m.line], m.kind == MoveKind::Rapid ? machine.rapidVelocity * 60 : double(m.feed));
   std::size_t compared = 0, within = 0;
   for (std::size_t i = 0; i < c.speedDifference.size(); ++i) {
@@ -79,9 +82,9 @@ Agreement agreement(const std::string& name) {
   return a;
 }
 
-std::vector<std::string> recordedPrograms() {
+std::vector<std::string> recordedPrograms(const fs::path& folder) {
   std::vector<std::string> names;
-  for (const fs::directory_entry& e : fs::directory_iterator(dataDir())) {
+  for (const fs::directory_entry& e : fs::directory_iterator(folder)) {
     const std::string file = e.path().filename().string();
     const std::string suffix = ".halsampler.txt.gz";
     if (file.size() > suffix.size() && file.compare(file.size() - suffix.size(), suffix.size(), suffix) == 0)
@@ -98,11 +101,11 @@ struct Bounds {
   double total = 0.02, lineP90 = 0.05, speedWithin = 0.95;
 };
 
-TEST(linuxcncReference, everyRecordingAgreesWithTheLinuxcnc29Control) {
-  const std::vector<std::string> names = recordedPrograms();
-  ASSERT_GE(names.size(), 20u) << "the reference recordings are missing from " << dataDir();
+void expectEveryRecordingAgrees(const fs::path& folder, std::size_t atLeast) {
+  const std::vector<std::string> names = recordedPrograms(folder);
+  ASSERT_GE(names.size(), atLeast) << "the reference recordings are missing from " << folder;
   for (const std::string& name : names) {
-    const Agreement a = agreement(name);
+    const Agreement a = agreement(folder / (name + ".ngc"), name, folder);
     std::printf("%-40s total %+6.2f %%  line p90 %5.2f %%  speed within 5 %% of feed %6.2f %%\n", name.c_str(),
                 100 * a.totalDifference, 100 * a.lineP90, 100 * a.speedWithin);
     const Bounds b;
@@ -110,6 +113,15 @@ TEST(linuxcncReference, everyRecordingAgreesWithTheLinuxcnc29Control) {
     EXPECT_LT(a.lineP90, b.lineP90) << name;
     EXPECT_GT(a.speedWithin, b.speedWithin) << name;
   }
+}
+
+TEST(linuxcncReference, everyRecordingAgreesWithTheLinuxcnc29Control) { expectEveryRecordingAgrees(dataDir(), 20); }
+
+// Finishing programs of a generator written apart from the project (its own surface family,
+// chord tolerances of 2-10 um, F1500-3500, G64 P0.01 or G64), recorded after the control was
+// final: tests/data/linuxcnc-2.9-independent/README.md.
+TEST(linuxcncReference, programsOfAnotherGeneratorAgreeWithTheLinuxcnc29Control) {
+  expectEveryRecordingAgrees(fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-independent", 8);
 }
 
 // s from the first sample that moves to the last: a recording holds no standstill before the first
@@ -124,10 +136,18 @@ double motionSpan(const Trajectory& t) {
   return first == 0 ? 0 : t.timeAt(last) - t.timeAt(first - 1);
 }
 
-double simulatedSpan(const std::string& program, const Machine& machine) {
-  const InterpretResult read = interpretGcodeFile((loweredAccelerationDir() / program).string());
+// LinuxCNC's daisy without its A words (the recording machine has X, Y and Z only).
+std::string daisyWithoutA() {
+  std::string text = test::readFile(test::realdataPath("linuxcnc_daisy.ngc"));
+  for (const std::string word : {"A0", " A#44"})
+    for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at)) text.erase(at, word.size());
+  return text;
+}
+
+double simulatedSpan(const std::string& text, const Machine& machine) {
+  const InterpretResult read = interpretGcode(text, "daisy_xyz.ngc");
   EXPECT_TRUE(read.ok());
-  TrajectorySink sink(machine.cycle, program, false);
+  TrajectorySink sink(machine.cycle, "daisy_xyz.ngc", false);
   simulate(read.program, machine, sink);
   return motionSpan(sink.take());
 }
@@ -137,18 +157,34 @@ double simulatedSpan(const std::string& program, const Machine& machine) {
 // time they have. The control follows it; this is why the limit-lowering properties of
 // control_properties_test.cpp leave acceleration out for this control.
 TEST(linuxcncReference, aLowerAccelerationRunsAsLinuxCncRunsIt) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(test::realdataPath("linuxcnc_daisy.ngc"));
   Machine machine = loadMachine(linuxcncSim());
-  const double recordedFull = motionSpan(recording("daisy_xyz.accel1000", loweredAccelerationDir()));
-  const double recordedHalf = motionSpan(recording("daisy_xyz.accel500", loweredAccelerationDir()));
-  const double simulatedFull = simulatedSpan("daisy_xyz.ngc", machine);
+  const double recordedFull = motionSpan(recording("daisy_xyz.accel1000", realdataRecordingsDir()));
+  const double recordedHalf = motionSpan(recording("daisy_xyz.accel500", realdataRecordingsDir()));
+  const std::string daisy = daisyWithoutA();
+  ASSERT_EQ(daisy.find("A0"), std::string::npos);
+  const double simulatedFull = simulatedSpan(daisy, machine);
   for (AxisLimits& axis : machine.axes) axis.maxAcceleration *= 0.5;
-  const double simulatedHalf = simulatedSpan("daisy_xyz.ngc", machine);
+  const double simulatedHalf = simulatedSpan(daisy, machine);
   std::printf("daisy_xyz: LinuxCNC %.3f -> %.3f s, the control %.3f -> %.3f s\n", recordedFull, recordedHalf,
               simulatedFull, simulatedHalf);
   EXPECT_NEAR(simulatedFull, recordedFull, 0.02 * recordedFull);
   EXPECT_NEAR(simulatedHalf, recordedHalf, 0.02 * recordedHalf);
   ASSERT_LT(recordedHalf, recordedFull - 0.2);
   EXPECT_NEAR(simulatedHalf - simulatedFull, recordedHalf - recordedFull, 0.1);
+}
+
+// LinuxCNC's flowsnake (recursive O-word subroutines drawing a space-filling curve, 3,076 moves),
+// recorded on its planner after the control was final.
+TEST(linuxcncReferenceLong, linuxcncsFlowsnakeAgreesWithTheLinuxcnc29Control) {
+  ISURFACE_SKIP_WITHOUT_REALDATA(test::realdataPath("linuxcnc_flowsnake.ngc"));
+  const Agreement a = agreement(test::realdataPath("linuxcnc_flowsnake.ngc"), "linuxcnc_flowsnake", realdataRecordingsDir());
+  std::printf("linuxcnc_flowsnake: total %+.3f %%, line p90 %.2f %%, speed within 5 %% of feed %.2f %%\n",
+              100 * a.totalDifference, 100 * a.lineP90, 100 * a.speedWithin);
+  const Bounds b;
+  EXPECT_LT(std::abs(a.totalDifference), b.total);
+  EXPECT_LT(a.lineP90, b.lineP90);
+  EXPECT_GT(a.speedWithin, b.speedWithin);
 }
 
 }  // namespace
