@@ -47,9 +47,10 @@ nlohmann::ordered_json describe(const BiipReader& reader) {
         hi[a] = std::max(hi[a], p[a]);
       }
     }
+    if (t.valid()) requireTimeAdvances(t, i, reader.path());
     kinematics.push(p[0], p[1], p[2], t.valid() ? t[i] : 0.0);
     if (line.valid()) {
-      const std::uint64_t l = line.integer(i);
+      const std::uint64_t l = countAt(line, i, reader.path(), "line");
       if (l != 0) {
         if (firstLine == 0) firstLine = minLine = maxLine = l;
         lastLine = l;
@@ -87,7 +88,7 @@ nlohmann::ordered_json describe(const BiipReader& reader) {
   // Where each path maximum occurs, traced back to its source line when there is one.
   const auto where = [&](std::size_t i) {
     nlohmann::ordered_json at = {{"sample", i}, {"time_s", numberOrNull(reader.timeAt(i))}};
-    at["line"] = line.valid() ? nlohmann::ordered_json(line.integer(i)) : nlohmann::ordered_json(nullptr);
+    at["line"] = line.valid() ? nlohmann::ordered_json(countAt(line, i, reader.path(), "line")) : nlohmann::ordered_json(nullptr);
     return at;
   };
   if (derived) {

@@ -67,7 +67,7 @@ Json describeSample(const BiipReader& reader, std::size_t i) {
   Json out;
   out["file"] = reader.path();
   out["sample"] = i;
-  out["line"] = line.valid() ? Json(line.integer(i)) : Json(nullptr);
+  out["line"] = line.valid() ? Json(countAt(line, i, reader.path(), "line")) : Json(nullptr);
   out["time_s"] = numberOrNull(reader.timeAt(i));
   out["position"] = triple(position);
   const Vec3 measured = feedback ? Vec3(fx[i], fy[i], fz[i]) : Vec3::Zero();

@@ -133,8 +133,9 @@ TEST(biipReader, LoadsAFileAnotherProgramWrote) {
     EXPECT_DOUBLE_EQ(z[i], -1.5 * i);
     EXPECT_DOUBLE_EQ(r.timeAt(i), 12.5 + 0.002 * i * i);
     EXPECT_DOUBLE_EQ(r.channel("my_gauge_7")[i], -5'000'000'000.0 + i);
-    EXPECT_EQ(r.channel("line").integer(i), 100u + i);
-    EXPECT_EQ(r.channel("u_count").integer(i), std::uint64_t(1) << 60);
+    EXPECT_EQ(r.channel("line").wholeNumber(i), std::optional<std::uint32_t>(100u + i));
+    EXPECT_DOUBLE_EQ(r.channel("u_count")[i], double(std::uint64_t(1) << 60));
+    EXPECT_FALSE(r.channel("u_count").wholeNumber(i).has_value());  // beyond 32 bits: no line number
     EXPECT_DOUBLE_EQ(r.channel("tool")[i], -7.0);
     EXPECT_FLOAT_EQ(float(r.channel("cur_x")[i]), 0.5f);
   }

@@ -12,7 +12,7 @@ std::optional<std::size_t> firstSampleOfLine(const BiipReader& reader, std::uint
   if (!view.valid()) return std::nullopt;
   const std::size_t n = reader.recordCount();
   for (std::size_t i = 0; i < n; ++i)
-    if (view.integer(i) == line) return i;
+    if (countAt(view, i, reader.path(), "line") == line) return i;
   return std::nullopt;
 }
 

@@ -5,6 +5,10 @@
 
 #include "isurface/io/biip.h"
 
+#include <fmt/format.h>
+
+#include "isurface/base/diagnostic.h"
+
 static_assert(__BYTE_ORDER__ == __ORDER_LITTLE_ENDIAN__,
               "Biip files are little-endian and are read in place: a little-endian host is required");
 
@@ -91,6 +95,45 @@ std::uint64_t BiipChannelView::integer(std::size_t i) const {
     }
   }
   return 0;
+}
+
+std::optional<std::uint32_t> BiipChannelView::wholeNumber(std::size_t i) const {
+  const unsigned char* p = first_ + i * stride_;
+  constexpr std::uint64_t kLargest = std::numeric_limits<std::uint32_t>::max();
+  switch (type_) {
+    case BiipType::U32: { std::uint32_t v; std::memcpy(&v, p, 4); return v; }
+    case BiipType::U64: { std::uint64_t v; std::memcpy(&v, p, 8); if (v > kLargest) return std::nullopt; return std::uint32_t(v); }
+    case BiipType::I32: { std::int32_t v; std::memcpy(&v, p, 4); if (v < 0) return std::nullopt; return std::uint32_t(v); }
+    case BiipType::I64: {
+      std::int64_t v;
+      std::memcpy(&v, p, 8);
+      if (v < 0 || std::uint64_t(v) > kLargest) return std::nullopt;
+      return std::uint32_t(v);
+    }
+    case BiipType::F64:
+    case BiipType::F32: {
+      const double v = convert(p, type_);
+      if (!(v >= 0 && v <= double(kLargest) && v == std::floor(v))) return std::nullopt;
+      return std::uint32_t(v);
+    }
+  }
+  return std::nullopt;
+}
+
+void requireTimeAdvances(double before, double now, std::size_t record, const std::string& path) {
+  if (!std::isfinite(now))
+    throw InputError(Diagnostic{path, 0, 0, fmt::format("channel 't', record {}: time {} is not finite", record, now)});
+  if (!(now > before))
+    throw InputError(Diagnostic{path, 0, 0,
+                                fmt::format("channel 't', record {}: time {:.9g} s {} (the record before: {:.9g} s)", record,
+                                            now, now < before ? "runs backwards" : "does not advance", before)});
+}
+
+std::uint32_t countAt(const BiipChannelView& view, std::size_t i, const std::string& path, const char* channel) {
+  if (const std::optional<std::uint32_t> v = view.wholeNumber(i)) return *v;
+  throw InputError(Diagnostic{path, 0, 0,
+                              fmt::format("channel '{}', record {}: {:.17g} is not a whole number from 0 to 4294967295",
+                                          channel, i, view[i])});
 }
 
 namespace {

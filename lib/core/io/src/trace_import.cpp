@@ -72,7 +72,8 @@ void splitCsv(std::string_view line, std::vector<Cell>& cells) {
   }
 }
 
-enum class Target { X, Y, Z, FbX, FbY, FbZ, Feed, Line, Time, Extra };
+// SampleIndex: halsampler's sample number, the time in cycles (a gap is samples it dropped).
+enum class Target { X, Y, Z, FbX, FbY, FbZ, Feed, Line, Time, SampleIndex, Extra };
 
 struct Binding {
   Target target;
@@ -93,7 +94,7 @@ class TrajectoryBuilder {
     static const std::pair<const char*, Target> known[] = {
         {"x", Target::X},       {"y", Target::Y},       {"z", Target::Z},       {"fb_x", Target::FbX},
         {"fb_y", Target::FbY},  {"fb_z", Target::FbZ},  {"feed", Target::Feed}, {"line", Target::Line},
-        {"t", Target::Time}};
+        {"t", Target::Time},    {"index", Target::SampleIndex}};
     for (const auto& [name, target] : known)
       if (role == name) {
         bindings_.push_back({target, column, label});
@@ -131,10 +132,13 @@ class TrajectoryBuilder {
       // divided by time differences.
       if (b.target == Target::Time && !std::isfinite(v))
         fail(file_, lineNumber, cell.column, "column " + b.label + ": time '" + std::string(cell.text.substr(0, 40)) + "' is not finite");
-      if (b.target == Target::Time && !time_.empty() && v < time_.back())
+      // Every rate is divided by a time difference: a repeated time would make it infinite.
+      if (b.target == Target::Time && !time_.empty() && !(v > time_.back()))
         fail(file_, lineNumber, cell.column,
-             "column " + b.label + ": time " + std::string(cell.text.substr(0, 40)) + " runs backwards (the row before: " +
+             "column " + b.label + ": time " + std::string(cell.text.substr(0, 40)) +
+                 (v < time_.back() ? " runs backwards" : " does not advance") + " (the row before: " +
                  fmt::format("{:.9g}", time_.back()) + ")");
+      if (b.target == Target::SampleIndex) checkSampleIndex(v, cell, b, lineNumber);
       // A line number names a line of the program: a whole number, 0 for none.
       if (b.target == Target::Line && !(v >= 0 && v <= 4294967295.0 && v == std::floor(v)))
         fail(file_, lineNumber, cell.column,
@@ -147,6 +151,13 @@ class TrajectoryBuilder {
 
   Trajectory finish(double cycle, bool cycleGiven) {
     if (rows_ == 0) fail(file_, 0, 0, "no samples in the file");
+    if (!index_.empty() && !time_.empty()) fail(file_, 0, 0, "the column mapping has both 't' and 'index': map one clock");
+    // The sample number counts cycles from the first row: samples the recorder dropped leave a
+    // gap in time, not a jump in speed. Without a gap the times are the regular cycle's.
+    if (!index_.empty() && index_.back() - index_.front() != double(rows_ - 1)) {
+      for (const double k : index_) time_.push_back((k - index_.front()) * cycle);
+      cycleGiven = true;
+    }
     Trajectory& t = t_;
     if (t.x.empty() || t.y.empty() || t.z.empty()) fail(file_, 0, 0, "the column mapping needs x, y and z");
     // Feedback is a position: one or two of its axes alone would be read past their end.
@@ -191,6 +202,7 @@ class TrajectoryBuilder {
       case Target::Feed: return feedValues_;
       case Target::Line: return lineValues_;
       case Target::Time: return time_;
+      case Target::SampleIndex: return index_;
       case Target::Extra: break;
     }
     return t_.extra[b.extra].second;
@@ -215,7 +227,17 @@ class TrajectoryBuilder {
   std::string file_;
   Trajectory t_;
   std::vector<Binding> bindings_;
-  std::vector<double> lineValues_, feedValues_, time_;
+  void checkSampleIndex(double v, const Cell& cell, const Binding& b, unsigned lineNumber) const {
+    const std::string text(cell.text.substr(0, 40));
+    if (!(v >= 0 && v <= 9007199254740992.0 && v == std::floor(v)))
+      fail(file_, lineNumber, cell.column, "column " + b.label + ": sample number '" + text + "' is not a whole number from 0");
+    if (!index_.empty() && !(v > index_.back()))
+      fail(file_, lineNumber, cell.column,
+           "column " + b.label + ": sample number " + text + (v < index_.back() ? " runs backwards" : " repeats") +
+               fmt::format(" (the row before: {:.0f})", index_.back()));
+  }
+
+  std::vector<double> lineValues_, feedValues_, time_, index_;
   std::vector<double> feedback_[3];  // positions, mm, until the commanded ones are complete
   std::size_t rows_ = 0;
 };
@@ -267,8 +289,8 @@ std::vector<ColumnRole> parseColumnMap(const std::string& text, const std::strin
 }
 
 std::vector<ColumnRole> defaultHalsamplerColumns() {
-  return {{"x", "1"},           {"y", "2"},           {"z", "3"},       {"line", "4"},
-          {"current_vel", "5"}, {"requested_vel", "6"}, {"running", "7"}};
+  return {{"index", "0"},       {"x", "1"},           {"y", "2"},           {"z", "3"},
+          {"line", "4"},        {"current_vel", "5"}, {"requested_vel", "6"}, {"running", "7"}};
 }
 
 TraceImportOptions umichPreset() {
@@ -329,6 +351,9 @@ Trajectory importCsv(const std::string& path, const TraceImportOptions& options)
       if (c.optional) continue;
       fail(path, headerLine, 0, "no column named '" + c.column + "' (for " + c.role + ") in the header");
     }
+    if (std::count(header.begin(), header.end(), c.column) > 1)
+      fail(path, headerLine, 0,
+           "the header names '" + c.column + "' (for " + c.role + ") more than once: which column is meant is not clear");
     builder.bind(c.role, std::size_t(it - header.begin()), "'" + c.column + "'");
   }
   bool firstRow = true;
@@ -344,6 +369,10 @@ Trajectory importCsv(const std::string& path, const TraceImportOptions& options)
           builder.bindExtra(header[k], k, "'" + header[k] + "'");
     }
     firstRow = false;
+    // A row with more values than the header has names: its columns cannot be told apart.
+    if (cells.size() > header.size())
+      fail(path, lineNumber, cells[header.size()].column,
+           fmt::format("{} values where the header names {} columns", cells.size(), header.size()));
     builder.addRow(cells, lineNumber);
   }
   if (in.bad()) fail(path, lineNumber, 0, "read error");

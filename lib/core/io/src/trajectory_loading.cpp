@@ -28,10 +28,6 @@ bool isKnownChannel(const std::string& name, bool feedbackComplete) {
 constexpr std::size_t kChunkRecords = std::size_t(1) << 16;
 constexpr std::size_t kProgressRecords = std::size_t(1) << 20;
 
-std::uint32_t clampToU32(std::uint64_t v) {
-  return static_cast<std::uint32_t>(std::min<std::uint64_t>(v, std::numeric_limits<std::uint32_t>::max()));
-}
-
 // Records [begin, begin + count) of the feedback channels as offsets from the commanded
 // positions already loaded (float: see Trajectory).
 void copyFeedbackOffsets(const BiipChannelView (&feedback)[3], const Trajectory& commanded, std::size_t begin,
@@ -143,9 +139,9 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
     }
     if (useFeedback) copyFeedbackOffsets(feedback, out, begin, count, feedbackChunk, offsets);
     if (line.valid())
-      for (std::size_t i = begin; i < begin + count; ++i) out.line.push_back(clampToU32(line.integer(i)));
+      for (std::size_t i = begin; i < begin + count; ++i) out.line.push_back(countAt(line, i, reader.path(), "line"));
     if (useBlock)
-      for (std::size_t i = begin; i < begin + count; ++i) out.block.push_back(clampToU32(block.integer(i)));
+      for (std::size_t i = begin; i < begin + count; ++i) out.block.push_back(countAt(block, i, reader.path(), "block"));
     reader.releaseRecords(first + begin * thinning, first + (begin + count) * thinning);
     if (progress && begin + count >= nextReport) {
       progress(double(begin + count) / double(n));
@@ -155,7 +151,11 @@ Trajectory loadTrajectory(const BiipReader& reader, const TrajectoryProgress& pr
   reader.checkIntact();
   if (useFeedback) out.attachFeedback(std::move(offsets));
   out.shrinkRunChannels();
-  if (t.valid()) out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
+  if (t.valid()) {
+    for (std::size_t i = 0; i < out.time.size(); ++i)
+      requireTimeAdvances(out.time, i, reader.path(), thinning);
+    out.irregularTime = timeIsIrregular(out.time.data(), n, out.cycle);
+  }
   if (progress) progress(1.0);
   return out;
 }

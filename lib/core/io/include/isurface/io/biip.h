@@ -4,7 +4,9 @@
 #include <cstddef>
 #include <algorithm>
 #include <cstdint>
+#include <optional>
 #include <cstring>
+#include <limits>
 #include <memory>
 #include <mutex>
 #include <string>
@@ -56,6 +58,21 @@ struct BiipHeader {
 };
 
 // A read-only view of one channel: value i converted to double (or to u64 for counters).
+class BiipChannelView;
+// Value i of a line or move-index channel: an InputError naming the file, the channel and the
+// record where it is not a whole number from 0 to 4294967295.
+std::uint32_t countAt(const BiipChannelView& view, std::size_t i, const std::string& path, const char* channel);
+
+// Every rate is divided by a time difference: time i of a dump's `t` channel (record i * thinning)
+// must be finite and later than time i - 1, else an InputError naming the file and the record.
+template <class Times>
+void requireTimeAdvances(const Times& time, std::size_t i, const std::string& path, std::size_t thinning = 1);
+void requireTimeAdvances(double before, double now, std::size_t record, const std::string& path);
+template <class Times>
+void requireTimeAdvances(const Times& time, std::size_t i, const std::string& path, std::size_t thinning) {
+  requireTimeAdvances(i > 0 ? time[i - 1] : -std::numeric_limits<double>::infinity(), time[i], i * thinning, path);
+}
+
 class BiipChannelView {
  public:
   BiipChannelView() = default;
@@ -88,6 +105,9 @@ class BiipChannelView {
   // Value i as an unsigned integer, exact for every integer type (negative values clamp to 0,
   // floating values are truncated; NaN gives 0).
   std::uint64_t integer(std::size_t i) const;
+  // Value i as a count of 32 bits (a line number, a move index), exact for every type; nullopt
+  // when it is not a whole number from 0 to 4294967295 (1.5, -3, NaN, 1e20).
+  std::optional<std::uint32_t> wholeNumber(std::size_t i) const;
   // Converts values [begin, begin + count) to doubles; count is clipped to the view's size.
   void copyTo(double* out, std::size_t begin, std::size_t count) const;
   void copyTo(float* out, std::size_t begin, std::size_t count) const;
