@@ -13,6 +13,7 @@
 #include "isurface/vis/offscreen_render.h"
 #include "progress.h"
 #include "trajectory_input.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -122,11 +123,15 @@ Command analyzeCommand() {
       sub.add_option("-o,--output", o->output, "JSON report to write")->required();
       sub.add_option("--png", o->png, "also render the map of speed inconsistency, worst line glowing");
       sub.add_option("--speed-threshold", o->thresholds.speedInconsistency,
-                     "speed difference between neighbouring passes, mm/min")->capture_default_str();
+                     "speed difference between neighbouring passes, mm/min")
+          ->capture_default_str()
+          ->check(numberFrom(0, 1e9, true));
       sub.add_option("--accel-threshold", o->thresholds.accelInconsistency,
-                     "acceleration difference between neighbouring passes, mm/s^2")->capture_default_str();
-      sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str();
-      sub.add_option("--top", o->top, "regions listed at most")->capture_default_str();
+                     "acceleration difference between neighbouring passes, mm/s^2")
+          ->capture_default_str()
+          ->check(numberFrom(0, 1e12, true));
+      sub.add_option("--jerk-threshold", o->thresholds.jerk, "path jerk, mm/s^3")->capture_default_str()->check(numberFrom(0, 1e12, true));
+      sub.add_option("--top", o->top, "regions listed at most")->capture_default_str()->check(wholeNumberFrom(0, 1000000));
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
       o->gapLimit.addTo(sub);
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");

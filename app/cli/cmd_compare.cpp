@@ -17,12 +17,15 @@
 #include "isurface/vis/offscreen_render.h"
 #include "progress.h"
 #include "trajectory_input.h"
+#include "isurface/workflow/same_program.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
 
 struct CompareOptions {
   std::string runA, runB, gcode, output, png, quantity = "speed", range, view = "iso", colorMap, pattern = "auto";
+  bool force = false;
   GapLimitOption gapLimit;
   RunComparisonOptions comparison;
   std::size_t top = 10;
@@ -141,6 +144,9 @@ int runCompare(const CompareOptions& o) {
   const Program* programPointer = program ? &*program : nullptr;
   const Trajectory a = loadRun(o.runA, programPointer, o.linuxcncLines);
   const Trajectory b = loadRun(o.runB, programPointer, o.linuxcncLines);
+  if (!o.force)
+    if (const auto why = runsMismatch(a, b))
+      throw InputError(Diagnostic{o.runB, 0, 0, "is not a run of " + o.runA + "'s program: " + *why + " (--force compares them anyway)"});
   ProgressLine progress("comparing");
   const RunComparison comparison = compareRuns(a, b, o.comparison);
   progress.finish();
@@ -188,11 +194,16 @@ Command compareCommand() {
       o->gapLimit.addTo(sub);
       sub.add_option("--pattern", o->pattern, "how the map's passes are found: auto, direction-parallel, "
                                               "contour-parallel, no-boundary")->capture_default_str();
-      sub.add_option("--top", o->top, "worst ranges listed")->capture_default_str();
-      sub.add_option("--range-lines", o->comparison.maxRangeLines, "lines a range holds at most")->capture_default_str();
+      sub.add_option("--top", o->top, "worst ranges listed")->capture_default_str()->check(wholeNumberFrom(0, 1000000));
+      sub.add_option("--range-lines", o->comparison.maxRangeLines, "lines a range holds at most")
+          ->capture_default_str()
+          ->check(wholeNumberFrom(1, 1000000));
       sub.add_option("--time-tolerance", o->comparison.timeTolerance,
-                     "s; a line's time difference within it counts as equal when grouping ranges")->capture_default_str();
+                     "s; a line's time difference within it counts as equal when grouping ranges")
+          ->capture_default_str()
+          ->check(numberFrom(0, 3600));
       sub.add_flag("--linuxcnc-lines", o->linuxcncLines, "mapping lines for a run without them: as LinuxCNC reports blends");
+      sub.add_flag("--force", o->force, "compare runs that do not look like runs of one program");
       return [o] { return runCompare(*o); };
     }};
 }

@@ -12,6 +12,7 @@
 #include "isurface/base/units.h"
 #include "isurface/fitting/akima_spline.h"
 #include "isurface/fitting/constant_speed_intervals.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -103,7 +104,9 @@ Command fitCommand() {
       auto o = std::make_shared<FitOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
       sub.add_option("--lines", o->lines, "source lines A-B (1-based, inclusive)")->required();
-      sub.add_option("--tolerance", o->tolerance, "chord tolerance of the resampled moves, mm")->capture_default_str();
+      sub.add_option("--tolerance", o->tolerance, "chord tolerance of the resampled moves, mm")
+          ->capture_default_str()
+          ->check(numberFrom(0, 10, true));
       return [o] { return runFit(*o); };
     }};
 }

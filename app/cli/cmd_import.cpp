@@ -2,20 +2,28 @@
 #include <cstdio>
 #include <memory>
 
+#include <fmt/format.h>
+
 #include "command.h"
 #include "inputs.h"
 #include "isurface/analysis/line_mapping.h"
 #include "isurface/io/trace_import.h"
 #include "isurface/io/trajectory_writing.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
+
+// Of a trace's samples, the share that must lie within the line mapping's tolerance of the
+// program's moves for the trace to be taken as the program's.
+constexpr double kLeastShareOnProgram = 0.5;
 
 struct ImportOptions {
   std::string format, input, output, map, preset, gcode;
   double cycle = 0;  // s, 0: the format's or preset's default
   std::size_t lookahead = LineMappingOptions{}.lookaheadMoves;
   bool linuxcncLines = false;
+  bool force = false;
 };
 
 TraceImportOptions traceOptions(const ImportOptions& o) {
@@ -50,6 +58,12 @@ int runImport(const ImportOptions& o) {
     mappingOptions.lookaheadMoves = o.lookahead;
     LineMapping mapping = mapSamplesToLines(trace, program, mappingOptions);
     printMappingReport(mapping.report);
+    // A trace of another program maps to lines all the same, each sample to its nearest move.
+    if (!o.force && mapping.report.samples > 0 && mapping.report.fractionWithin < kLeastShareOnProgram)
+      throw InputError(Diagnostic{o.input, 0, 0,
+                                  fmt::format("is not a trace of {}: only {:.1f} % of its samples lie within {:g} mm of "
+                                              "the program's moves (--force imports it anyway)",
+                                              o.gcode, 100.0 * mapping.report.fractionWithin, mapping.report.tolerance)});
     if (trace.hasLine) {
       // The recorded lines are kept; how far the mapping agrees tells how trustworthy it is.
       std::size_t compared = 0, agree = 0;
@@ -83,9 +97,10 @@ Command importCommand() {
                      "role=column,... (roles x y z fb_x fb_y fb_z feed line t, others kept as channels; "
                      "columns: 0-based index for halsampler, header name for csv)");
       sub.add_option("--preset", o->preset, "csv column preset: umich");
-      sub.add_option("--cycle", o->cycle, "sample period, s (default 0.001; umich 0.1)");
+      sub.add_option("--cycle", o->cycle, "sample period, s (default 0.001; umich 0.1)")->check(numberFrom(1e-6, 60));
       sub.add_option("--gcode", o->gcode, "the program the trace ran: maps samples to lines when the trace has none");
-      sub.add_option("--lookahead", o->lookahead, "line mapping: moves ahead a sample may land on");
+      sub.add_flag("--force", o->force, "with --gcode: import a trace even if it does not follow the program");
+      sub.add_option("--lookahead", o->lookahead, "line mapping: moves ahead a sample may land on")->check(wholeNumberFrom(0, 100000));
       sub.add_flag("--linuxcnc-lines", o->linuxcncLines,
                    "line mapping: give blends into a move its line, as LinuxCNC reports them");
       return [o] { return runImport(*o); };

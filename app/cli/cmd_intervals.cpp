@@ -11,6 +11,7 @@
 #include "inputs.h"
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/fitting/interval_speed_plan.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -101,11 +102,19 @@ Command intervalsCommand() {
       auto o = std::make_shared<IntervalsOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
       sub.add_option("--lines", o->lines, "source lines A-B (1-based, inclusive); default: all");
-      sub.add_option("--err", o->error, "error threshold for characteristic points, mm")->capture_default_str();
-      sub.add_option("--dist-ratio", o->distanceRatio, "distance ratio threshold (> 1)")->capture_default_str();
-      sub.add_option("--curv-ratio", o->curvatureRatio, "curvature ratio threshold (> 1)")->capture_default_str();
+      sub.add_option("--err", o->error, "error threshold for characteristic points, mm")
+          ->capture_default_str()
+          ->check(numberFrom(0, 1000, true));
+      sub.add_option("--dist-ratio", o->distanceRatio, "distance ratio threshold (> 1)")
+          ->capture_default_str()
+          ->check(numberFrom(1, 1e9, true));
+      sub.add_option("--curv-ratio", o->curvatureRatio, "curvature ratio threshold (> 1)")
+          ->capture_default_str()
+          ->check(numberFrom(1, 1e9, true));
       sub.add_option("--section-length", o->sectionLength,
-                     "mm of path per section where passes have no boundary")->capture_default_str();
+                     "mm of path per section where passes have no boundary")
+          ->capture_default_str()
+          ->check(numberFrom(0, 1e6, true));
       sub.add_option("--machine", o->machine, "machine description (JSON); default: built-in");
       return [o] { return runIntervals(*o); };
     }};

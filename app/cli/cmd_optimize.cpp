@@ -24,6 +24,7 @@
 #include "isurface/vis/quality_map.h"
 #include "isurface/vis/offscreen_render.h"
 #include "trajectory_input.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -185,7 +186,9 @@ Command optimizeCommand() {
       sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range");
       sub.add_option("--png-diff", o->pngDifference,
                      "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
-      sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")->capture_default_str();
+      sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")
+          ->capture_default_str()
+          ->check(numberFrom(0, 1, true));
       o->machine.addTo(sub, "machine description (JSON)");
       o->gapLimit.addTo(sub);
       sub.add_option("--objective", o->objective,

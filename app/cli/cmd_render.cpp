@@ -17,6 +17,7 @@
 #include "progress.h"
 #include "isurface/workflow/run_inputs.h"
 #include "trajectory_input.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -132,12 +133,15 @@ Command renderCommand() {
       sub.add_option("--cmap", o->colorMap, "colour map: auto (rainbow, coolwarm for signed quantities), rainbow, viridis, turbo, coolwarm, grey")->capture_default_str();
       sub.add_option("--range", o->range, "colour range: A:B fixed, or 'full' for the values' extent");
       sub.add_option("--percentiles", o->percentiles, "percentile-clipped range LOW:HIGH (default)")->capture_default_str();
-      sub.add_option("--highlight-line", o->highlightLine, "make the samples of this G-code line glow");
+      sub.add_option("--highlight-line", o->highlightLine, "make the samples of this G-code line glow")
+          ->check(wholeNumberFrom(1, 4294967295.0));
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
       sub.add_flag("--no-toolpath", o->noToolpath, "leave the programmed tool path out");
       sub.add_flag("--color-toolpath", o->colorToolpath, "draw the sampled cutting path coloured by the quantity");
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
-      sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")->capture_default_str();
+      sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")
+          ->capture_default_str()
+          ->check(wholeNumberFrom(0, 1000));
       o->machine.addTo(sub, "machine description for the simulation (JSON)");
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");
       o->gapLimit.addTo(sub);

@@ -14,6 +14,7 @@
 #include "isurface/vis/quality_map.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/io/trajectory_writing.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -115,10 +116,12 @@ Command stsCommand() {
       o->arcOpt = sub.add_option("--arc-step", o->arcStep, "allowable discrete arc length, mm");
       o->heightOpt = sub.add_option("--height-step", o->heightStep, "allowable height difference, mm");
       o->toolOpt = sub.add_option("--tool-radius", o->toolRadius, "tool nose radius R_t, mm");
-      sub.add_option("--rho-max", o->rhoMax, "curvature above which nodes are added, 1/mm (0: mean)");
+      sub.add_option("--rho-max", o->rhoMax, "curvature above which nodes are added, 1/mm (0: mean)")
+          ->check(numberFrom(0, 1e9));
       sub.add_option("--max-inserted", o->maxInserted, "most nodes added inside one CCP segment");
       sub.add_option("--uniform-nodes", o->uniformNodes, "uniform node count (0: one per CCP)");
-      sub.add_option("--spindle-rpm", o->spindleRpm, "spindle speed, rev/min (PVT times)");
+      sub.add_option("--spindle-rpm", o->spindleRpm, "spindle speed, rev/min (PVT times)")
+          ->check(numberFrom(kSlowestSpindleRpm, kFastestSpindleRpm));
       sub.add_option("--samples", o->samples, "error samples inside each segment");
       return [o] { return runSts(*o); };
     }};

@@ -91,6 +91,21 @@ TEST(compareCli, badInputsExitWithTwoAndWriteNothing) {
   }
 }
 
+// Two programs whose lines have the same numbers but lie elsewhere: compared line by line their
+// figures would mean nothing.
+TEST(compareCli, runsOfDifferentProgramsAreRefusedUnlessForced) {
+  const std::string a = simulated(writeText("here.nc", "G1 X10 F1000\nG1 X20\nG1 X30\n"), "here.biip");
+  const std::string b = simulated(writeText("there.nc", "G1 Y50 F1000\nG1 Y60\nG1 Y70\n"), "there.biip");
+  const std::string out = scratch("different.json");
+  const CommandResult refused = runCli("compare " + a + " " + b + " -o " + out);
+  EXPECT_EQ(refused.exitCode, 2);
+  EXPECT_NE(refused.err.find("is not a run of"), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("--force"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fileExists(out));
+  EXPECT_EQ(runCli("compare " + a + " " + b + " -o " + out + " --force").exitCode, 0);
+  EXPECT_TRUE(fileExists(out));
+}
+
 TEST(compareCli, linuxcncRecordingAgainstOurSimulation) {
   const std::string recording = realdataPath("linuxcnc_test.halsampler.txt");
   const std::string program = realdataPath("linuxcnc_test.ngc");

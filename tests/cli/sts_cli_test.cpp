@@ -78,3 +78,24 @@ TEST(stsCli, WritesTheToolPathAsADumpAndAMap) {
 }
 
 }  // namespace
+
+// Values no spindle or surface can have are refused before anything is written: no `VX-inf`, no
+// 300-digit times, no "error" of hundreds of kilometres from a surface that jumps.
+TEST(stsCli, ImpossibleValuesAndADiscontinuousSurfaceAreRefusedAndNothingIsWritten) {
+  const std::string nc = (scratchDir() / "impossible.nc").string(), report = (scratchDir() / "impossible.json").string();
+  const struct {
+    const char* args;
+    const char* says;
+  } cases[] = {{"--surface toric --spindle-rpm 1e308", "--spindle-rpm: 1e308 must be from 0.001 to 100000"},
+               {"--surface toric --spindle-rpm 1e-300", "--spindle-rpm: 1e-300 must be from"},
+               {"--surface toric --rho-max nan", "--rho-max: nan is not a finite number"},
+               {"--surface toric --rho-max -1", "--rho-max: -1 must be from 0"},
+               {"--surface 'x>0?1:0'", "not continuous or not smooth along the tool path"}};
+  for (const auto& c : cases) {
+    const CommandResult r = runCli(std::string("sts ") + c.args + " -o " + nc + " --report " + report);
+    EXPECT_EQ(r.exitCode, 2) << c.args;
+    EXPECT_NE(r.err.find(c.says), std::string::npos) << c.args << ": " << r.err;
+    EXPECT_FALSE(fileExists(nc)) << c.args;
+    EXPECT_FALSE(fileExists(report)) << c.args;
+  }
+}

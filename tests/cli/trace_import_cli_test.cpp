@@ -2,6 +2,8 @@
 // and bad inputs refused with exit code 2.
 #include <gtest/gtest.h>
 
+#include <fmt/format.h>
+
 #include <fstream>
 #include <sstream>
 
@@ -57,6 +59,21 @@ TEST(traceImport, cliRejectsBadInputsWithExitCode2) {
   r = runCli("import halsampler " + (scratchDir() / "absent.hal").string() + " -o " + out);
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_FALSE(test::fileExists(out));
+}
+
+// A trace of another program maps to lines all the same, each sample to its nearest move.
+TEST(traceImport, aTraceThatDoesNotFollowTheProgramGivenIsRefusedUnlessForced) {
+  const std::string program = writeScratch("along-x.nc", "G21 G90\nG1 X10 F600\nG1 X20\n");
+  std::string rows;
+  for (int i = 0; i <= 100; ++i) rows += fmt::format("{} 0 {:.2f} 5 0 0 0 1\n", i, 0.2 * i);  // along Y, 5 mm up
+  const std::string trace = writeScratch("along-y.hal", rows);
+  const std::string out = (scratchDir() / "along-y.biip").string();
+  const auto refused = runCli("import halsampler " + trace + " -o " + out + " --gcode " + program);
+  EXPECT_EQ(refused.exitCode, 2);
+  EXPECT_NE(refused.err.find("is not a trace of"), std::string::npos) << refused.err;
+  EXPECT_FALSE(test::fileExists(out));
+  EXPECT_EQ(runCli("import halsampler " + trace + " -o " + out + " --gcode " + program + " --force").exitCode, 0);
+  EXPECT_TRUE(test::fileExists(out));
 }
 
 TEST(traceImport, halsamplerRecordingKeepsLines) {

@@ -2,6 +2,10 @@
 #include <gtest/gtest.h>
 
 #include "isurface/sts/sts_report.h"
+#include "isurface/sts/sts_surface.h"
+#include "isurface/base/diagnostic.h"
+
+#include <memory>
 
 using namespace isurface;
 
@@ -51,4 +55,24 @@ TEST(stsPaper, TableNamesBothSurfaces) {
   EXPECT_NE(table.find("toric"), std::string::npos);
   EXPECT_NE(table.find("sinusoid"), std::string::npos);
   EXPECT_NE(table.find("reduction, equal height vs equal angle"), std::string::npos);
+}
+
+// The job itself refuses a spindle speed whose PVT blocks no control could read, and a surface
+// that jumps (its "error" would be larger than the part), whoever calls it.
+TEST(stsJob, ImpossibleSpindleSpeedsAndAJumpingSurfaceAreRefused) {
+  const StsCase toric = paperToricCase();
+  const std::unique_ptr<StsSurface> surface = makeStsSurface("toric");
+  StsJobOptions job;
+  job.spindleRpm = 1e308;
+  EXPECT_THROW(runStsJob(*surface, toric.spiral, job), InputError);
+  job.spindleRpm = 1e-300;
+  EXPECT_THROW(runStsJob(*surface, toric.spiral, job), InputError);
+  job = StsJobOptions{};
+  const std::unique_ptr<StsSurface> step = makeStsSurface("x>0?1:0");
+  try {
+    runStsJob(*step, toric.spiral, job);
+    FAIL() << "a jumping surface was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("not continuous or not smooth"), std::string::npos) << e.what();
+  }
 }

@@ -89,3 +89,14 @@ TEST(MachineDescription, TheRiseTimeIsTheDescriptionsOwnOrItsLargestAOverJAndSta
   EXPECT_NE(refusal(R"({"control": {"acceleration_rise_time_s": -1}})").find("acceleration_rise_time_s"), std::string::npos);
   EXPECT_NE(refusal(R"({"control": {"acceleration_rise_time_s": 0}})").find("jerk limit"), std::string::npos);
 }
+
+TEST(MachineDescription, AKeyGivenTwiceOrAVelocityLoopThatNeverFollowsIsRefused) {
+  const std::string twice = refusal(R"({"rapid_mm_min": 5000, "rapid_mm_min": 50000})");
+  EXPECT_NE(twice.find("\"rapid_mm_min\" is given twice"), std::string::npos) << twice;
+  EXPECT_NE(refusal(R"({"axes": {"x": {"max_jerk_mm_s3": 1, "max_jerk_mm_s3": 2}}})").find("\"max_jerk_mm_s3\" is given twice"),
+            std::string::npos);
+  // The same key in two objects is two keys.
+  EXPECT_EQ(refusal(R"({"axes": {"x": {"max_jerk_mm_s3": 1e5}, "y": {"max_jerk_mm_s3": 1e5}}})"), "");
+  const std::string frozen = refusal(R"({"axes": {"x": {"velocity_loop_time_constant_s": 1e308}}})");
+  EXPECT_NE(frozen.find("velocity_loop_time_constant_s must be from 0 to 1 s"), std::string::npos) << frozen;
+}

@@ -2,6 +2,7 @@
 #include "isurface/base/input_files.h"
 
 #include <algorithm>
+#include <set>
 #include <cmath>
 #include <initializer_list>
 #include <vector>
@@ -130,13 +131,31 @@ void readTools(const json& tools, const std::string& source, Machine& m) {
   }
 }
 
-Machine parseOnto(const Machine& base, const std::string& text, const std::string& source) {
+// The description's JSON; a key given twice in one object is refused (JSON readers differ on
+// which one counts, and one of the two values would be dropped without a word).
+json parseDescription(const std::string& text, const std::string& source) {
+  std::vector<std::set<std::string>> keysOfOpenObjects;
+  std::string repeated;
+  const json::parser_callback_t noteKeys = [&](int, json::parse_event_t event, json& parsed) {
+    if (event == json::parse_event_t::object_start) keysOfOpenObjects.emplace_back();
+    if (event == json::parse_event_t::object_end && !keysOfOpenObjects.empty()) keysOfOpenObjects.pop_back();
+    if (event == json::parse_event_t::key && !keysOfOpenObjects.empty() &&
+        !keysOfOpenObjects.back().insert(parsed.get<std::string>()).second && repeated.empty())
+      repeated = parsed.get<std::string>();
+    return true;
+  };
   json root;
   try {
-    root = json::parse(text);
+    root = json::parse(text, noteKeys);
   } catch (const json::exception& e) {  // malformed text, or a number beyond a double
     fail(source, std::string("not valid JSON: ") + e.what());
   }
+  if (!repeated.empty()) fail(source, "key \"" + repeated + "\" is given twice in one object: give it once");
+  return root;
+}
+
+Machine parseOnto(const Machine& base, const std::string& text, const std::string& source) {
+  const json root = parseDescription(text, source);
   if (!root.is_object()) fail(source, "a machine description must be a JSON object");
   rejectUnknownKeys(root,
                     {"name", "cycle_s", "rapid_mm_min", "chord_tolerance_mm", "axes", "control", "tools",
@@ -199,8 +218,9 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
         fail(source, where + "velocity_feed_forward must be between 0 and 1");
       limits.velocityLoopTimeConstant =
           number(a, "velocity_loop_time_constant_s", limits.velocityLoopTimeConstant, source, where);
-      if (limits.velocityLoopTimeConstant < 0)
-        fail(source, where + "velocity_loop_time_constant_s must be >= 0");
+      // A velocity loop slower than a second never follows its command: the feedback would freeze.
+      if (!(limits.velocityLoopTimeConstant >= 0 && limits.velocityLoopTimeConstant <= 1.0))
+        fail(source, where + "velocity_loop_time_constant_s must be from 0 to 1 s");
     }
   }
   bool riseTimeGiven = false;

@@ -33,10 +33,26 @@ StsCase paperSinusoidCase() {
   return c;
 }
 
+// An error larger than the workpiece itself is not a machining error but a surface that jumps (a
+// step, `x>0?1:0`) or whose slope is not finite between the points: refused where it happens.
+static void requirePlausibleError(const ErrorProfile& e, const SpiralParameters& p, const char* which) {
+  if (std::isfinite(e.max) && e.max <= p.workpieceRadius) return;
+  throw InputError({"sts", 0, 0,
+                    fmt::format("the {} error reaches {:.4g} mm at r = {:.4g} mm, theta = {:.4g} rad, more than the workpiece's "
+                                "radius: the surface is not continuous or not smooth along the tool path there",
+                                which, e.max, e.radiusAtMax, e.thetaAtMax)});
+}
+
 StsJobResult runStsJob(const StsSurface& surface, const SpiralParameters& p, const StsJobOptions& o) {
   p.validate();
-  if (!(o.spindleRpm > 0) || !std::isfinite(o.spindleRpm))
-    throw InputError({"sts", 0, 0, "--spindle-rpm must be positive"});
+  // A slow tool servo turns at a few to a few thousand rev/min; beyond these bounds the PVT
+  // blocks' times and speeds are no longer numbers a control reads (1e-300 ms, VX-inf).
+  if (!(o.spindleRpm >= kSlowestSpindleRpm && o.spindleRpm <= kFastestSpindleRpm))
+    throw InputError({"sts", 0, 0,
+                      fmt::format("--spindle-rpm {:g} is not from {:g} to {:g} rev/min", o.spindleRpm, kSlowestSpindleRpm,
+                                  kFastestSpindleRpm)});
+  if (!(o.rhoMax >= 0) || !std::isfinite(o.rhoMax))
+    throw InputError({"sts", 0, 0, fmt::format("--rho-max {:g} must be a curvature of 0 (the mean) or more, 1/mm", o.rhoMax)});
   if (o.samplesPerSegment < 1) throw InputError({"sts", 0, 0, "--samples must be at least 1"});
   if (o.maxInserted < 0) throw InputError({"sts", 0, 0, "--max-inserted must not be negative"});
   // Bounded up front: each costs that many surface evaluations per contact point or node.
@@ -67,6 +83,8 @@ StsJobResult runStsJob(const StsSurface& surface, const SpiralParameters& p, con
           std::max(r.splineSlopeDisagreement, std::abs(check.slope[i] - r.track.slope[i]));
   }
   r.interpolation = interpolationError(surface, p, r.track, o.samplesPerSegment);
+  requirePlausibleError(r.discrete, p, "discrete");
+  requirePlausibleError(r.interpolation, p, "interpolation");
   return r;
 }
 

@@ -18,11 +18,15 @@ struct StsCase {
 StsCase paperToricCase();     // Table 1
 StsCase paperSinusoidCase();  // Table 2
 
+// rev/min: the spindle speeds a job is planned for (PVT times and speeds stay readable numbers).
+constexpr double kSlowestSpindleRpm = 0.001;
+constexpr double kFastestSpindleRpm = 100000;
+
 struct StsJobOptions {
   StsDiscretisation discretisation = StsDiscretisation::EqualHeight;
   StsNodes nodes = StsNodes::NonUniform;
   StsInterpolation interpolation = StsInterpolation::SplineThreeSlope;
-  double rhoMax = 0;                // mm^-1; <= 0: the mean path curvature over the CCPs
+  double rhoMax = 0;                // mm^-1; 0: the mean path curvature over the CCPs
   int maxInserted = 4;              // most nodes added inside one CCP segment
   std::size_t uniformNodeCount = 0; // 0: as many as CCPs
   double spindleRpm = 10;           // rev/min, turns spindle angle into PVT time
