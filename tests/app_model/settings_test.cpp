@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include <sys/stat.h>
+
 #include "isurface/app_model/settings.h"
 #include "test_support.h"
 
@@ -209,4 +211,15 @@ TEST(settings, RecentFilesAreRememberedWithTheirWholePath) {
   s.addRecent("./samples/../samples/part.nc");  // the same file: once, at the front
   ASSERT_EQ(s.recentFiles.size(), 1u);
   EXPECT_EQ(s.recentFiles[0], (std::filesystem::current_path() / "samples/part.nc").string());
+}
+
+// A device or a FIFO in the settings file's place must neither hang nor kill the window's start.
+TEST(settings, ADeviceOrAFifoInItsPlaceGivesTheDefaultsAtOnce) {
+  const std::string folder = freshFolder("not-a-file");
+  std::filesystem::create_directories(folder);
+  const std::string zero = folder + "/zero.json", fifo = folder + "/fifo.json";
+  std::filesystem::create_symlink("/dev/zero", zero);
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  expectDefaults(loadSettings(zero));
+  expectDefaults(loadSettings(fifo));  // no writer: read without waiting for one
 }

@@ -252,3 +252,19 @@ TEST(Report, AProgramWithoutASurfaceIsStillReported) {
   EXPECT_NE(sectionOf(readAll(html), "optimisation").find("Not re-optimised: "), std::string::npos);
   EXPECT_TRUE(nlohmann::json::parse(readAll(json))["optimisation"].contains("not_done"));
 }
+
+// A comment of kilobytes on a program line is cut where the report shows the line, with its
+// length said: the page does not grow with what the lines carry.
+TEST(Report, LongProgramLinesAreCutWhereTheReportShowsThem) {
+  std::ifstream in(std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc");
+  const std::string comment = " (" + std::string(5000, 'x') + ")";
+  std::string program, line;
+  while (std::getline(in, line)) program += line + (line.rfind("G1", 0) == 0 ? comment : "") + "\n";
+  const std::string path = (scratchDir() / "long-lines.nc").string(), html = (scratchDir() / "long-lines.html").string();
+  std::ofstream(path) << program;
+  const auto r = runCli("report " + path + " -o " + html);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string text = readAll(html);
+  EXPECT_NE(text.find("characters)"), std::string::npos);
+  EXPECT_EQ(text.find(std::string(1000, 'x')), std::string::npos);
+}

@@ -8,6 +8,9 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+
+#include "isurface/base/bounded_file.h"
+#include "isurface/base/diagnostic.h"
 #include <sstream>
 
 #include "isurface/io/atomic_file.h"
@@ -63,11 +66,15 @@ std::string settingsPath() {
 Settings loadSettings(const std::string& path) {
   Settings settings;
   if (path.empty()) return settings;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return settings;
-  std::ostringstream text;
-  text << in.rdbuf();
-  const nlohmann::json json = nlohmann::json::parse(text.str(), nullptr, /*allow_exceptions=*/false);
+  std::string text;
+  try {
+    // Only a regular file of settings' size: a FIFO or /dev/zero put in its place must not hang
+    // or kill the window's start; the defaults are used instead.
+    text = readBoundedFile(path, BoundedRead{1 << 20, "settings file", true});
+  } catch (const InputError&) {
+    return settings;
+  }
+  const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!json.is_object()) return settings;
 
   const auto recent = json.find("recent_files");

@@ -69,12 +69,21 @@ void HtmlDocument::image(const std::string& png, const std::string& caption, con
            escapeHtml(caption) + "</figcaption></figure>\n";
 }
 
+// A program line as a report shows it: a comment of megabytes is cut, not copied into the page,
+// and never inside a UTF-8 character.
+std::string shownLine(const std::string& text) {
+  if (text.size() <= kLongestShownLine) return text;
+  std::size_t cut = kLongestShownLine;
+  while (cut > 0 && (static_cast<unsigned char>(text[cut]) & 0xC0) == 0x80) --cut;
+  return text.substr(0, cut) + "\u2026 (" + std::to_string(text.size()) + " characters)";
+}
+
 void HtmlDocument::code(const std::vector<std::pair<std::uint32_t, std::string>>& numberedLines, std::uint32_t mark) {
   body_ += "<pre class=\"gcode\">";
   for (const auto& [number, text] : numberedLines) {
     const bool marked = number == mark;
     body_ += std::string(marked ? "<mark>" : "") + "<span class=\"ln\">" + std::to_string(number) + "</span>" +
-             escapeHtml(text) + (marked ? "</mark>" : "") + "\n";
+             escapeHtml(shownLine(text)) + (marked ? "</mark>" : "") + "\n";
   }
   body_ += "</pre>\n";
 }

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "isurface/base/bounded_file.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/units.h"
 
@@ -317,19 +318,10 @@ Machine parseMachine(const std::string& jsonText, const std::string& sourceName)
 }
 
 Machine loadMachine(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
   noteInputFile(path);
-  if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open machine description"});
   // A description is a few hundred bytes; a JSON document held in memory takes many times its
-  // size, so a huge file is refused before it is read.
-  constexpr std::uintmax_t kLargestDescription = 1 << 20;
-  std::error_code sizeError;
-  const std::uintmax_t bytes = std::filesystem::file_size(path, sizeError);
-  if (!sizeError && bytes > kLargestDescription)
-    throw InputError(Diagnostic{path, 0, 0, fmt::format("{} bytes: a machine description is at most 1 MB", bytes)});
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseMachine(text.str(), path);
+  // size, so a huge file (or /dev/zero) is refused at 1 MB.
+  return parseMachine(readBoundedFile(path, BoundedRead{1 << 20, "machine description"}), path);
 }
 
 }  // namespace isurface

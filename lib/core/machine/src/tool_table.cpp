@@ -9,6 +9,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "isurface/base/bounded_file.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/units.h"
 
@@ -67,12 +68,10 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
 }
 
 ToolDiameters readToolTable(const std::string& path, bool inch) {
-  std::ifstream in(path, std::ios::binary);
   noteInputFile(path);
-  if (!in) throw InputError(Diagnostic{path, 0, 0, "cannot open tool table"});
-  std::ostringstream text;
-  text << in.rdbuf();
-  return parseToolTable(text.str(), path, inch);
+  // A table of ten thousand tools is a megabyte; a larger file (or /dev/zero) is refused at the
+  // bound before anything is parsed.
+  return parseToolTable(readBoundedFile(path, BoundedRead{16 << 20, "tool table"}), path, inch);
 }
 
 }  // namespace isurface

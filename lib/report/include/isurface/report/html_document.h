@@ -7,6 +7,10 @@
 
 namespace isurface::report {
 
+// Characters of a program line a report shows at most (the rest is cut, its length said).
+constexpr std::size_t kLongestShownLine = 300;
+std::string shownLine(const std::string& text);
+
 std::string escapeHtml(std::string_view text);
 std::string base64(std::string_view bytes);
 
