@@ -2,9 +2,11 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "command.h"
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/workflow/run_inputs.h"
 #include "progress.h"
 
 namespace isurface::cli {
@@ -19,6 +21,7 @@ Program loadProgram(const std::string& path, bool keepGoing, bool showProgress) 
   for (const Diagnostic& w : result.program.warnings) std::fprintf(stderr, "warning: %s\n", w.str().c_str());
   for (const Diagnostic& e : result.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
   if (!result.ok()) throw CommandExit{kExitInputError};
+  requireMotion(path, result.program.moves.size());
   return std::move(result.program);
 }
 
@@ -34,8 +37,27 @@ void MachineOption::addTo(CLI::App& sub, const std::string& help) {
   sub.add_option("--max-hours", maxHours,
                  "the longest machining time simulated, h (a longer run is refused: its samples would fill the disk)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(greaterThanZero());
 }
+
+namespace {
+
+CLI::Validator numberCheck(const std::string& name, bool zeroAllowed) {
+  return CLI::Validator(
+      [zeroAllowed](std::string& text) -> std::string {
+        char* end = nullptr;
+        const double v = std::strtod(text.c_str(), &end);
+        const bool number = end != text.c_str() && *end == '\0' && std::isfinite(v);
+        if (number && (zeroAllowed ? v >= 0 : v > 0)) return "";
+        return std::string(zeroAllowed ? "must be 0 or more" : "must be greater than 0") + ", got '" + text + "'";
+      },
+      name);
+}
+
+}  // namespace
+
+CLI::Validator atLeastZero() { return numberCheck("NUMBER >= 0", true); }
+CLI::Validator greaterThanZero() { return numberCheck("NUMBER > 0", false); }
 
 void GapLimitOption::addTo(CLI::App& sub) {
   sub.add_option("--gap-limit", mm, "mm; passes further apart are not joined into the surface")->capture_default_str();

@@ -45,6 +45,11 @@ struct GapLimitOption {
   double checked() const;
 };
 
+// Checks of option values whose message says the value as it was written ("--pick-sample
+// must be 0 or more, got -1"), not CLI11's range of every double.
+CLI::Validator atLeastZero();
+CLI::Validator greaterThanZero();
+
 // Stops a command on a bad option value, naming the file it was given for.
 [[noreturn]] inline void badOption(const std::string& file, const std::string& message) {
   throw InputError(Diagnostic{file, 0, 0, message});
