@@ -7,6 +7,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/analysis/quality_regions.h"
 #include "isurface/vis/quality_map.h"
@@ -14,6 +15,7 @@
 #include "progress.h"
 #include "trajectory_input.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -82,7 +84,7 @@ int runAnalyze(const AnalyzeOptions& o) {
       {"flagged_vertices", report.flaggedVertices},
       {"region_count", report.regions.size()},
       {"regions", regions}};
-  writeFileAtomically(o.output, out.dump(2) + "\n");
+  writeFileAtomically(o.output, jsonText(out, 2) + "\n");
 
   if (!o.png.empty()) {
     const QualityRegion* worst = worstRegionInsidePasses(report);
@@ -120,8 +122,8 @@ Command analyzeCommand() {
       auto o = std::make_shared<AnalyzeOptions>();
       sub.add_option("gcode", o->gcode, "G-code program")->required();
       sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
-      sub.add_option("-o,--output", o->output, "JSON report to write")->required();
-      sub.add_option("--png", o->png, "also render the map of speed inconsistency, worst line glowing");
+      outputOption(sub.add_option("-o,--output", o->output, "JSON report to write"))->required();
+      outputOption(sub.add_option("--png", o->png, "also render the map of speed inconsistency, worst line glowing"));
       sub.add_option("--speed-threshold", o->thresholds.speedInconsistency,
                      "speed difference between neighbouring passes, mm/min")
           ->capture_default_str()

@@ -12,6 +12,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "output_options.h"
 #include "isurface/io/canon_writer.h"
 #include "isurface/workflow/run_inputs.h"
 #include "progress.h"
@@ -34,7 +35,7 @@ std::function<int()> setup(CLI::App& sub) {
   sub.add_flag("--stack", args->stack,
                "after each move made inside subroutine or subprogram calls, ' @ ' and the calls, outermost "
                "first: the line of each call and what it called");
-  sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout");
+  outputOption(sub.add_option("-o,--output", args->output, "write the moves to this file instead of stdout"));
   args->machine.addTo(sub, "machine description (JSON) whose control reads the program: its dialect, power-on "
                            "units and tools");
   sub.footer("Output: one line per move, `LINE G0|G1 X Y Z F`, `LINE G2|G3 X Y Z CX CY CZ PLANE "

@@ -9,6 +9,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/analysis/line_mapping.h"
 #include "isurface/analysis/run_comparison.h"
@@ -19,6 +20,7 @@
 #include "trajectory_input.h"
 #include "isurface/workflow/same_program.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -163,7 +165,7 @@ int runCompare(const CompareOptions& o) {
     map = vis::buildQualityMap(a, programPointer, request);
     map->style.fontSize = vis::fontSizeForHeight(1000);
   }
-  writeFileAtomically(o.output, reportJson(o, comparison, *quantity, a, b).dump(2) + "\n");
+  writeFileAtomically(o.output, jsonText(reportJson(o, comparison, *quantity, a, b), 2) + "\n");
   printSummary(o, comparison, *quantity);
   std::printf("-> %s\n", o.output.c_str());
   if (map) {
@@ -183,9 +185,9 @@ Command compareCommand() {
       auto o = std::make_shared<CompareOptions>();
       sub.add_option("a", o->runA, "run A, the reference (Biip dump)")->required();
       sub.add_option("b", o->runB, "run B, compared with A (Biip dump)")->required();
-      sub.add_option("-o,--output", o->output, "JSON report to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "JSON report to write"))->required();
       sub.add_option("--gcode", o->gcode, "the program both ran: its tool path in the map, and lines for a run without them");
-      sub.add_option("--png", o->png, "also render run A's surface coloured by the difference");
+      outputOption(sub.add_option("--png", o->png, "also render run A's surface coloured by the difference"));
       sub.add_option("--quantity", o->quantity, "difference to map and rank ranges by: speed (mm/min), position (mm), "
                                                 "time (s)")->capture_default_str();
       sub.add_option("--range", o->range, "colour range LO:HI (default: symmetric 99th percentile; position 0 to it)");

@@ -7,6 +7,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/vis/quality_scene.h"
@@ -75,7 +76,7 @@ Command exportCommand() {
   return Command{"export", "Write the CL surface of a Biip dump with every scalar as a .vtp file (ParaView)", [](CLI::App& sub) {
       auto o = std::make_shared<ExportOptions>();
       sub.add_option("biip", o->biip, "Biip dump")->required();
-      sub.add_option("--vtp", o->vtp, "VTK XML polydata file to write")->required();
+      outputOption(sub.add_option("--vtp", o->vtp, "VTK XML polydata file to write"))->required();
       sub.add_option("--gcode", o->gcode, "the program of the dump (tells rapids from cutting moves)");
       sub.add_option("--surface", o->surface, "commanded or feedback")->capture_default_str();
       sub.add_flag("--force", o->force, "use the dump even if it does not look like the program's own");

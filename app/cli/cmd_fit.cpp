@@ -13,6 +13,7 @@
 #include "isurface/fitting/akima_spline.h"
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -92,7 +93,7 @@ int runFit(const FitOptions& o) {
   out["resampled_points"] = resampled.size();
   out["max_point_deviation_mm"] = deviation;
   out["max_join_angle_deg"] = maxJoinAngleDeg(curve.segments());
-  std::printf("%s\n", out.dump(2).c_str());
+  std::printf("%s\n", jsonText(out, 2).c_str());
   return kExitOk;
 }
 

@@ -6,6 +6,7 @@
 
 #include "command.h"
 #include "inputs.h"
+#include "output_options.h"
 #include "isurface/analysis/line_mapping.h"
 #include "isurface/io/trace_import.h"
 #include "isurface/io/trajectory_writing.h"
@@ -92,7 +93,7 @@ Command importCommand() {
       auto o = std::make_shared<ImportOptions>();
       sub.add_option("format", o->format, "trace format")->required()->check(CLI::IsMember({"halsampler", "csv"}));
       sub.add_option("trace", o->input, "recorded trace file")->required();
-      sub.add_option("-o,--output", o->output, "Biip file to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "Biip file to write"))->required();
       sub.add_option("--map", o->map,
                      "role=column,... (roles x y z fb_x fb_y fb_z feed line t, others kept as channels; "
                      "columns: 0-based index for halsampler, header name for csv)");

@@ -6,12 +6,14 @@
 #include <string>
 
 #include "command.h"
+#include "output_options.h"
 #include "json_output.h"
 #include "isurface/base/units.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/io/biip.h"
 #include "isurface/analysis/kinematics.h"
 #include "progress.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 
@@ -109,11 +111,11 @@ Command infoCommand() {
       auto file = std::make_shared<std::string>();
       auto output = std::make_shared<std::string>();
       sub.add_option("file", *file, "Biip file (Biip.dat or *.biip)")->required();
-      sub.add_option("-o,--output", *output, "write the JSON to this file instead of stdout");
+      outputOption(sub.add_option("-o,--output", *output, "write the JSON to this file instead of stdout"));
       return [file, output]() {
         const BiipReader reader(*file);
         for (const auto& w : reader.warnings()) std::fprintf(stderr, "warning: %s: %s\n", file->c_str(), w.c_str());
-        const std::string text = describe(reader).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace) + "\n";
+        const std::string text = jsonText(describe(reader), 2) + "\n";
         if (output->empty()) {
           std::fwrite(text.data(), 1, text.size(), stdout);
           if (std::fflush(stdout) != 0) {

@@ -12,6 +12,7 @@
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/fitting/interval_speed_plan.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -90,7 +91,7 @@ int runIntervals(const IntervalsOptions& o) {
   Json list = Json::array();
   for (const PathSection& s : sections) list.push_back(describeSection(s, thresholds, machine));
   out["sections"] = list;
-  std::printf("%s\n", out.dump(2).c_str());
+  std::printf("%s\n", jsonText(out, 2).c_str());
   return kExitOk;
 }
 

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <sstream>
@@ -15,6 +16,7 @@
 #include "isurface/io/biip.h"
 #include "isurface/analysis/locate.h"
 #include "isurface/workflow/locate_in_dump.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 
@@ -53,6 +55,11 @@ Vec3 parsePoint(const std::string& text) {
       inputError("--point needs X,Y,Z in mm, got '" + text + "'");
   }
   if (in.peek() != EOF) inputError("--point needs X,Y,Z in mm, got '" + text + "'");
+  // Far enough for any machine, near enough that distances to it are finite numbers.
+  constexpr double kFarthest = 1e9;  // mm, a thousand kilometres
+  if (p.cwiseAbs().maxCoeff() > kFarthest)
+    inputError(fmt::format("--point {} is out of range: each coordinate must be within {:g} mm of the origin", text,
+                           kFarthest));
   return p;
 }
 
@@ -112,7 +119,7 @@ int runLocate(const LocateOptions& o) {
   }
   Json out = describeSample(reader, sample);
   if (distance) out["distance_mm"] = *distance;
-  const std::string text = out.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
+  const std::string text = jsonText(out, 2) + "\n";
   std::fwrite(text.data(), 1, text.size(), stdout);
   if (std::fflush(stdout) != 0) {
     std::fprintf(stderr, "error: cannot write the output\n");

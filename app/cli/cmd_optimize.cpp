@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "command.h"
+#include "output_options.h"
 #include "inputs.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/gcode/gcode_interpreter.h"
@@ -25,6 +26,7 @@
 #include "isurface/vis/offscreen_render.h"
 #include "trajectory_input.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -153,7 +155,7 @@ int runOptimize(const OptimizeCliOptions& o) {
       {"max_path_distance_mm", distance}, {"passes", passes},
       {"program_lines", {{"before", r.linesBefore}, {"after", r.linesAfter}}},
       {"compared_box_mm", {{"min", {lower.x(), lower.y()}}, {"max", {upper.x(), upper.y()}}}}};
-  if (!o.report.empty()) writeFileAtomically(o.report, report.dump(2) + "\n");
+  if (!o.report.empty()) writeFileAtomically(o.report, jsonText(report, 2) + "\n");
   if (!o.pngBefore.empty() || !o.pngAfter.empty()) {
     const std::vector<float> speeds = vertexQuantity(Quantity::Speed, *before.samples, *before.mesh);
     const ValueRange span = percentileRange(speeds, 1, 99);
@@ -176,16 +178,16 @@ Command optimizeCommand() {
   return Command{"optimize", "Re-optimise a region (constant speed intervals, Akima fitting), write it and compare", [](CLI::App& sub) {
       auto o = std::make_shared<OptimizeCliOptions>();
       sub.add_option("gcode", o->input, "G-code program")->required();
-      sub.add_option("-o,--output", o->output, "new G-code program to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "new G-code program to write"))->required();
       sub.add_option("--lines", o->lines, "the region as a line range A-B");
       sub.add_option("--box", o->box, "the passes crossing a box X0,Y0,X1,Y1 (mm, top view), measured inside it");
       sub.add_flag("--auto", o->automatic, "the most severe region that analyze finds");
       sub.add_flag("--all", o->all, "every pass of the program");
-      sub.add_option("--report", o->report, "comparison report (JSON)");
-      sub.add_option("--png-before", o->pngBefore, "speed map before (top view)");
-      sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range");
-      sub.add_option("--png-diff", o->pngDifference,
-                     "speed after minus before (mm/min) on the surface before, passes aligned (top view)");
+      outputOption(sub.add_option("--report", o->report, "comparison report (JSON)"));
+      outputOption(sub.add_option("--png-before", o->pngBefore, "speed map before (top view)"));
+      outputOption(sub.add_option("--png-after", o->pngAfter, "speed map after, same colour range"));
+      outputOption(sub.add_option("--png-diff", o->pngDifference,
+                     "speed after minus before (mm/min) on the surface before, passes aligned (top view)"));
       sub.add_option("--tolerance", o->chordTolerance, "chord tolerance of the new G1 moves, mm")
           ->capture_default_str()
           ->check(numberFrom(0, 1, true));

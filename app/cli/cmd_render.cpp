@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command.h"
+#include "output_options.h"
 #include "inputs.h"
 #include "isurface/io/biip.h"
 #include "isurface/analysis/quantities.h"
@@ -124,7 +125,7 @@ Command renderCommand() {
       auto o = std::make_shared<RenderOptions>();
       sub.add_option("gcode", o->gcode, "G-code program (or a Biip dump alone, shown without a program)")->required();
       sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
-      sub.add_option("-o,--output", o->output, "PNG file to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "PNG file to write"))->required();
       sub.add_option("--color", o->color, "quantity to colour by: speed, accel, jerk, vx.., ax.., jx.., "
                                           "following_error, line, time, feed, speed_inconsistency, "
                                           "accel_inconsistency, deviation")->capture_default_str();

@@ -11,11 +11,13 @@
 #include <filesystem>
 #include <memory>
 #include <optional>
+#include <set>
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "output_options.h"
 #include "inputs.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/report/html_document.h"
@@ -23,6 +25,7 @@
 #include "isurface/workflow/file_kinds.h"
 #include "progress.h"
 #include "trajectory_input.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -111,10 +114,26 @@ nlohmann::json reportOne(const ReportCliOptions& o, const std::string& program, 
   const report::ProgramReport r = report::buildProgramReport(run, options, [&](double f) { progress.update(f); });
   progress.finish();
   writeFileAtomically(html, r.html);
-  if (!json.empty()) writeFileAtomically(json, r.figures.dump(2) + "\n");
+  if (!json.empty()) writeFileAtomically(json, jsonText(r.figures, 2) + "\n");
   std::printf("%s: %zu maps, %zu regions (%zu beyond the thresholds)\n", html.c_str(), r.maps,
               r.figures["regions"].size(), r.regionsFound);
   return r.figures;
+}
+
+// The name (without .html or .json) of the report on the program `name` in a batch: the
+// program's name, or with " (2)", " (3)" ... when that is taken (a program called `index` is not
+// to be replaced by the index). `taken` holds the pages named so far, in lower case.
+std::string reportName(const std::string& name, std::set<std::string>& taken) {
+  const auto lower = [](std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+  };
+  std::string base = name;
+  for (int n = 2; taken.count(lower(base + ".html")) > 0 || taken.count(lower(base + ".json")) > 0; ++n)
+    base = name + " (" + std::to_string(n) + ")";
+  taken.insert(lower(base + ".html"));
+  taken.insert(lower(base + ".json"));
+  return base;
 }
 
 // Every G-code program in a folder: a report each and an index ranking them by their worst
@@ -134,6 +153,7 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
     nlohmann::json figures;
   };
   std::vector<Row> rows;
+  std::set<std::string> pages = {"index.html"};  // lower case: a folder may not tell case apart
   for (const std::string& path : programs) {
     try {
       if (fileKind(path, 4096) != FileKind::Program) continue;
@@ -142,10 +162,11 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
     }
     Row row;
     row.name = std::filesystem::path(path).filename().string();
-    row.page = row.name + ".html";
+    const std::string base = reportName(row.name, pages);
+    row.page = base + ".html";
     try {
       row.figures = reportOne(o, path, "", (std::filesystem::path(o.output) / row.page).string(),
-                              (std::filesystem::path(o.output) / (row.name + ".json")).string());
+                              (std::filesystem::path(o.output) / (base + ".json")).string());
       // A program that could not be measured ranks first: it fails every gate on the surface.
       row.severity = row.figures.contains("unmeasured")   ? std::numeric_limits<double>::infinity()
                      : row.figures["regions"].empty() ? 0
@@ -174,7 +195,7 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
                                   : r.figures.contains("no_surface") ? "no surface: " + r.figures["no_surface"].get<std::string>()
                                                                      : "-";
     table += std::string("<tr") + (r.problem.empty() ? "" : " class=\"near\"") + "><td>" +
-             (reported ? "<a href=\"" + report::escapeHtml(r.page) + "\">" + report::escapeHtml(r.name) + "</a>" : report::escapeHtml(r.name)) +
+             (reported ? "<a href=\"" + report::escapeHtml(report::relativeLink(r.page)) + "\">" + report::escapeHtml(r.name) + "</a>" : report::escapeHtml(r.name)) +
              "</td><td>" + report::escapeHtml(worst) + "</td><td>" +
              (reported && !r.figures.contains("no_surface") ? fmt::format("{:.1f}", r.severity) : "-") +
              "</td><td>" + (reported ? formatDuration(r.figures["summary"]["machining_time_s"].get<double>()) : "-") + "</td><td>" +
@@ -214,12 +235,12 @@ Command reportCommand() {
       auto o = std::make_shared<ReportCliOptions>();
       sub.add_option("program", o->program, "G-code program (or a Biip dump alone)");
       sub.add_option("dump", o->dump, "Biip dump or trace of the program (default: simulate it)");
-      sub.add_option("-o,--output", o->output, "HTML file to write (with --batch: the folder of the reports)")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "HTML file to write (with --batch: the folder of the reports)"))->required();
       sub.add_option("--batch", o->batch, "report on every G-code program in this folder, with an index.html ranking them");
       sub.add_option("--fail-on", o->failOn,
                      "exit 1 when a figure crosses NAME>VALUE: speed_inconsistency (mm/min), accel_inconsistency "
                      "(mm/s^2), jerk (mm/s^3), deviation (um) of the worst region shown, or machining_time (s); repeatable");
-      sub.add_option("--json", o->json, "also write the report's figures as JSON");
+      outputOption(sub.add_option("--json", o->json, "also write the report's figures as JSON"));
       sub.add_option("--regions", o->regions, "worst regions shown, 0 to 50")->capture_default_str();
       sub.add_option("--compare", o->compare,
                      "another run of the program (a Biip dump or trace): its speed map beside this one's, the "

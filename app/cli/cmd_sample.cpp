@@ -2,6 +2,7 @@
 #include <cstdio>
 
 #include "command.h"
+#include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/gcode/sample_parts.h"
@@ -35,7 +36,7 @@ Command sampleCommand() {
   return Command{"sample", "Write one of the paper's sample parts as G-code (D6R3 ball-end mill, F3000)", [](CLI::App& sub) {
       auto o = std::make_shared<SampleOptions>();
       sub.add_option("name", o->name, "sample part name");
-      sub.add_option("-o,--output", o->output, "G-code file to write (default NAME.nc)");
+      outputOption(sub.add_option("-o,--output", o->output, "G-code file to write (default NAME.nc)"));
       sub.add_flag("--list", o->list, "list the sample parts");
       return [o] { return runSample(*o); };
     }};

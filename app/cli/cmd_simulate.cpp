@@ -3,11 +3,13 @@
 #include <nlohmann/json.hpp>
 
 #include "command.h"
+#include "output_options.h"
 #include "inputs.h"
 #include "isurface/nc/simulator.h"
 #include "isurface/workflow/run_inputs.h"
 #include "isurface/workflow/simulation_dump.h"
 #include "progress.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -43,7 +45,7 @@ int runSimulate(const SimulateOptions& o) {
                         {"samples", r.samples},        {"cycle_s", machine.cycle},
                         {"machining_time_s", r.machiningTime}, {"path_length_mm", r.pathLength},
                         {"jerk_filter_s", r.filterTime1}, {"corner_filter_s", r.filterTime2}};
-    std::printf("%s\n", j.dump(2).c_str());
+    std::printf("%s\n", jsonText(j, 2).c_str());
   } else {
     std::printf("%s: %llu moves, %.1f mm of path\n", o.input.c_str(), moves, r.pathLength);
     std::printf("machining time %s (%.3f s), %llu samples at %g ms -> %s\n",
@@ -60,7 +62,7 @@ Command simulateCommand() {
     [](CLI::App& sub) {
       auto o = std::make_shared<SimulateOptions>();
       sub.add_option("program", o->input, "G-code file")->required();
-      sub.add_option("-o,--output", o->output, "Biip file to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "Biip file to write"))->required();
       o->machine.addTo(sub, "machine description (JSON); default: built-in");
       sub.add_flag("--keep-going", o->keepGoing, "report every bad block, not only the first");
       sub.add_flag("--json", o->json, "print the summary as JSON");

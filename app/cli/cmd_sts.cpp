@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "command.h"
+#include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/units.h"
@@ -15,6 +16,7 @@
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/io/trajectory_writing.h"
 #include "number_options.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::cli {
 namespace {
@@ -85,7 +87,7 @@ int runSts(const StsOptions& o) {
       vis::renderSceneToPng(scene, 1600, 1000, o.png);
     }
   }
-  if (!o.report.empty()) writeFileAtomically(o.report, stsReportJson(*surface, p, job, r).dump(2) + "\n");
+  if (!o.report.empty()) writeFileAtomically(o.report, jsonText(stsReportJson(*surface, p, job, r), 2) + "\n");
   std::printf("%s: %zu CCPs (%s), %zu nodes (%s, %s); max discrete error %.4g um, "
               "max interpolation error %.4g um\n",
               surface->name().c_str(), r.contactPoints.size(), o.discretise.c_str(), r.nodes.size(),
@@ -104,10 +106,10 @@ Command stsCommand() {
       sub.add_option("--discretise", o->discretise, "angle, arc or height");
       sub.add_option("--nodes", o->nodes, "uniform or nonuniform interpolation nodes");
       sub.add_option("--interp", o->interp, "hermite, spline (three-slope) or spline-moment");
-      sub.add_option("-o,--output", o->output, "NC program to write");
-      sub.add_option("--report", o->report, "JSON error report to write");
-      sub.add_option("--biip", o->biip, "the tool path as a Biip dump (one sample a node, errors as channels)");
-      sub.add_option("--png", o->png, "render the tool path's surface coloured by an error");
+      outputOption(sub.add_option("-o,--output", o->output, "NC program to write"));
+      outputOption(sub.add_option("--report", o->report, "JSON error report to write"));
+      outputOption(sub.add_option("--biip", o->biip, "the tool path as a Biip dump (one sample a node, errors as channels)"));
+      outputOption(sub.add_option("--png", o->png, "render the tool path's surface coloured by an error"));
       sub.add_option("--color", o->color, "discrete or interpolation (error) for --png")->capture_default_str();
       sub.add_flag("--paper-tables", o->paperTables, "compare with the paper's reported reductions");
       o->radiusOpt = sub.add_option("--radius", o->radius, "workpiece radius R, mm");

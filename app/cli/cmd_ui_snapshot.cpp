@@ -5,6 +5,8 @@
 #include <memory>
 
 #include "command.h"
+#include "inputs.h"
+#include "output_options.h"
 #include "isurface/workflow/run_inputs.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/fitting/constant_speed_intervals.h"
@@ -12,6 +14,7 @@
 #include "isurface/panels/inspector.h"
 #include "isurface/panels/headless_ui.h"
 #include "isurface/vis/offscreen_render.h"
+#include "number_options.h"
 
 namespace isurface::cli {
 namespace {
@@ -100,12 +103,13 @@ Command uiSnapshotCommand() {
   return Command{"ui-snapshot", "Draw the whole application window headless (OSMesa) to a PNG", [](CLI::App& sub) {
       auto o = std::make_shared<SnapshotOptions>();
       sub.add_option("files", o->files, "G-code programs and Biip dumps to open");
-      sub.add_option("-o,--output", o->output, "PNG file to write")->required();
+      outputOption(sub.add_option("-o,--output", o->output, "PNG file to write"))->required();
       sub.add_option("--size", o->size, "window size WxH")->capture_default_str();
       sub.add_option("--color", o->color, "quantity to colour the map by")->capture_default_str();
       sub.add_option("--pick-line", o->pickLine, "select the first sample of this G-code line")
-          ->check(CLI::NonNegativeNumber);
-      sub.add_option("--pick-sample", o->pickSample, "select this sample (0 is the first)")->check(CLI::NonNegativeNumber);
+          ->check(wholeNumberFrom(0, 4294967295.0));
+      sub.add_option("--pick-sample", o->pickSample, "select this sample (0 is the first)")
+          ->check(wholeNumberFrom(0, 1e15));
       CLI::Option* optimize =
           sub.add_option("--optimize-lines", o->optimizeLines, "re-optimise the lines A-B and show both maps");
       sub.add_option("--optimize-view", o->optimizeView,

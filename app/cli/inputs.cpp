@@ -1,10 +1,14 @@
 #include "inputs.h"
 
+#include "number_options.h"
+
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 
 #include "command.h"
 #include "isurface/gcode/gcode_interpreter.h"
+#include "isurface/workflow/run_inputs.h"
 #include "progress.h"
 
 namespace isurface::cli {
@@ -19,6 +23,7 @@ Program loadProgram(const std::string& path, bool keepGoing, bool showProgress) 
   for (const Diagnostic& w : result.program.warnings) std::fprintf(stderr, "warning: %s\n", w.str().c_str());
   for (const Diagnostic& e : result.errors) std::fprintf(stderr, "error: %s\n", e.str().c_str());
   if (!result.ok()) throw CommandExit{kExitInputError};
+  requireMotion(path, result.program.moves.size());
   return std::move(result.program);
 }
 
@@ -34,7 +39,7 @@ void MachineOption::addTo(CLI::App& sub, const std::string& help) {
   sub.add_option("--max-hours", maxHours,
                  "the longest machining time simulated, h (a longer run is refused: its samples would fill the disk)")
       ->capture_default_str()
-      ->check(CLI::PositiveNumber);
+      ->check(numberFrom(0, 1e6, true));
 }
 
 void GapLimitOption::addTo(CLI::App& sub) {

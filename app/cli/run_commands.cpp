@@ -11,6 +11,7 @@
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/input_files.h"
 #include "isurface/io/output_transaction.h"
+#include "output_options.h"
 
 namespace isurface::cli {
 
@@ -36,6 +37,10 @@ int runCommands(int argc, char** argv, const std::vector<Command>& commands) {
   CLI::App app{"iSurface: NC interpolation quality maps, headless commands"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "isurface-cli 0.1.0");
+  // Option errors read as every other error does ("error: ..."), with the way to the help.
+  app.failure_message([](const CLI::App*, const CLI::Error& e) {
+    return std::string("error: ") + e.what() + "\nRun with --help for more information.\n";
+  });
   std::map<CLI::App*, std::function<int()>> runners;
   for (const Command& command : commands) {
     CLI::App* sub = app.add_subcommand(command.name, command.description);
@@ -48,20 +53,29 @@ int runCommands(int argc, char** argv, const std::vector<Command>& commands) {
     return code == 0 ? kExitOk : kExitInputError;
   }
   // A command's files appear all together once it has run, or none of them; no output may
-  // replace one of its inputs.
+  // replace one of its inputs, nor another of its outputs.
   protectInputFiles(true);
   try {
     OutputTransaction outputs;
     for (auto& [sub, run] : runners) {
       if (!sub->parsed()) continue;
+      refuseSharedOutputs(*sub);
+      // What it prints (a summary, JSON) says it succeeded: printed once its files are in place.
+      HeldStandardOutput printed;
       const int code = run();
-      // What went to standard output (JSON, a listing) is an output too: on a full disk or a
-      // closed pipe it is cut short, and the command has failed.
-      if (std::fflush(stdout) != 0 || std::ferror(stdout)) {
-        std::fprintf(stderr, "error: cannot write standard output: %s\n", std::strerror(errno));
-        return kExitFailure;
-      }
+      const std::string input = standardOutputInput();  // e.g. a program found in a --batch folder
+      if (!input.empty())
+        throw InputError(Diagnostic{input, 0, 0, "standard output is this file, an input of this command: what is "
+                                                 "printed would be written into it (redirect the output to another file)"});
       outputs.publish();
+      // A command that failed on its input (it said why on stderr) has no result to print.
+      if (code == kExitInputError) return code;
+      // What went to standard output is an output too: on a full disk or a closed pipe it is cut
+      // short, and the command has failed, as when a file cannot be written.
+      if (!printed.release()) {
+        std::fprintf(stderr, "error: cannot write standard output: %s\n", std::strerror(errno));
+        return kExitInputError;
+      }
       return code;
     }
   } catch (const CommandExit& e) {

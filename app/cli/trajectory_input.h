@@ -3,6 +3,7 @@
 // program simulated) with its warnings and a progress line on the terminal.
 #include <string>
 
+#include "inputs.h"
 #include "isurface/io/trajectory_loading.h"
 #include "isurface/workflow/run_inputs.h"
 

@@ -133,7 +133,7 @@ TEST(Report, ABatchRanksEveryProgramOfAFolder) {
   const auto r = runCli("report --batch " + in.string() + " -o " + out.string() + " --regions 1");
   EXPECT_EQ(r.exitCode, 1) << r.err;  // one program could not be reported
   const std::string index = readAll((out / "index.html").string());
-  EXPECT_NE(index.find("<a href=\"transition.nc.html\">transition.nc</a>"), std::string::npos) << index;
+  EXPECT_NE(index.find("<a href=\"./transition.nc.html\">transition.nc</a>"), std::string::npos) << index;
   EXPECT_NE(index.find("stops.nc"), std::string::npos);
   EXPECT_NE(index.find("not reported"), std::string::npos);
   EXPECT_EQ(index.find("notes.txt"), std::string::npos);

@@ -14,6 +14,7 @@
 #include <sstream>
 
 #include "isurface/io/atomic_file.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::app_model {
 
@@ -114,7 +115,7 @@ bool saveSettings(const Settings& settings, const std::string& path) {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
     // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
-    writeFileAtomically(path, json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n");
+    writeFileAtomically(path, jsonText(json, 2) + "\n");
     return true;
   } catch (const std::exception&) {
     return false;

@@ -4,6 +4,7 @@
 #include <nlohmann/json.hpp>
 
 #include "inspector_state.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::panels {
 
@@ -149,7 +150,7 @@ std::string Inspector::describe() const {
                               {"status_shown", s.statusShown},
                               {"camera", camera},
                               {"controls", controls}};
-  return out.dump(1, ' ', false, nlohmann::json::error_handler_t::replace);
+  return jsonText(out, 1);
 }
 
 }  // namespace isurface::panels

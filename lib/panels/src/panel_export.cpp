@@ -13,6 +13,7 @@
 #include "inspector_state.h"
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/vis/offscreen_render.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface::panels {
 
@@ -58,7 +59,7 @@ std::string figuresJson(const Document& doc) {
                       {"jerk_p99_mm_s3", f.jerkP99}};
     if (f.hasDeviation) out["figures"]["deviation_p99_um"] = f.deviationP99;
   }
-  return out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
+  return jsonText(out, 2) + "\n";
 }
 
 constexpr std::size_t kCsvRun = 65536;

@@ -4,6 +4,21 @@
 
 namespace isurface::report {
 
+std::string relativeLink(std::string_view fileName) {
+  static const char kHex[] = "0123456789ABCDEF";
+  std::string out = "./";
+  for (const char c : fileName) {
+    const auto byte = static_cast<unsigned char>(c);
+    const bool unreserved = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') ||
+                            c == '-' || c == '.' || c == '_' || c == '~';
+    if (unreserved)
+      out += c;
+    else
+      out += {'%', kHex[byte >> 4], kHex[byte & 15]};
+  }
+  return out;
+}
+
 std::string escapeHtml(std::string_view text) {
   std::string out;
   out.reserve(text.size());

@@ -18,6 +18,7 @@
 #include "isurface/nc/threaded_sink.h"
 #include "isurface/nc/servo_feedback.h"
 #include "isurface/nc/simulator.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface {
 
@@ -127,12 +128,19 @@ InterpreterOptions interpreterOptions(const Machine& machine) {
   return options;
 }
 
+void requireMotion(const std::string& path, std::uint64_t moves) {
+  if (moves == 0)
+    throw InputError(Diagnostic{path, 0, 0, "no motion in the program: it makes no move, so there is nothing to "
+                                            "simulate or measure"});
+}
+
 Program readProgram(const std::string& path, const ProgressCallback& progress, std::vector<std::string>* warnings,
                     const Machine& machine) {
   InterpreterOptions options = interpreterOptions(machine);
   options.progress = progress;
   InterpretResult r = interpretGcodeFile(path, options);
   if (!r.ok()) throw InputError(r.errors.front());
+  requireMotion(path, r.program.moves.size());
   if (warnings)
     for (const Diagnostic& w : r.program.warnings) warnings->push_back(w.str());
   return std::move(r.program);
@@ -142,7 +150,7 @@ std::optional<Machine> machineOfDump(const BiipReader& reader) {
   const nlohmann::json meta = nlohmann::json::parse(reader.header().metadataJson, nullptr, false);
   if (!meta.is_object() || !meta.contains("machine") || !meta["machine"].is_object()) return std::nullopt;
   try {
-    return parseMachine(meta["machine"].dump(), reader.path() + " (its machine)");
+    return parseMachine(jsonText(meta["machine"]), reader.path() + " (its machine)");
   } catch (const InputError&) {
     return std::nullopt;  // a trace's own notes on its machine, not a machine description
   }

@@ -7,6 +7,8 @@
 #include "isurface/io/biip.h"
 #include "isurface/nc/threaded_sink.h"
 #include "isurface/base/units.h"
+#include "isurface/base/json_text.h"
+#include "isurface/workflow/run_inputs.h"
 
 namespace isurface {
 
@@ -43,7 +45,7 @@ std::string simulationMetadata(const std::string& source, const Machine& machine
                                {"writer", "isurface-cli 0.1.0 simulate"},
                                {"coordinates", "workpiece"},
                                {"machine", nlohmann::json::parse(machineLimitsJson(machine))}};
-  return meta.dump();
+  return jsonText(meta);
 }
 
 }  // namespace
@@ -68,6 +70,7 @@ StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const M
   StreamedSimulation result;
   result.interpretation = interpretGcodeFileStream(gcodePath, simulation, options);
   if (!result.interpretation.ok()) return result;  // the writer removes its temporary file
+  requireMotion(gcodePath, result.interpretation.moveCount);
   result.report = simulation.finish();
   sink.drain();
   result.largestWindow = simulation.planner().largestHeld();

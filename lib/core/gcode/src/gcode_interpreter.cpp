@@ -478,7 +478,12 @@ std::variant<std::pair<int, std::uint64_t>, std::string> spool(int fd) {
 std::string withFileText(const std::string& path, bool readAhead, const TextUse& use) {
   const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) return fmt::format("cannot open: {}", std::strerror(errno));
-  noteInputFile(fd);
+  try {
+    noteInputFile(fd, path);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
   struct stat st {};
   if (::fstat(fd, &st) != 0 || S_ISDIR(st.st_mode)) {
     const int e = S_ISDIR(st.st_mode) ? EISDIR : errno;

@@ -288,7 +288,14 @@ void AtomicOutputFile::commit() {
       discard();
       throw InputError(Diagnostic{target_, 0, 0, kInputMessage});
     }
-    if (detail::deferRename(temp_, destination_, target_)) {
+    bool deferred = false;
+    try {
+      deferred = detail::deferRename(temp_, destination_, target_);
+    } catch (...) {
+      discard();
+      throw;
+    }
+    if (deferred) {
       detail::forgetTemporary(signalSlot_);  // the transaction removes it now
       signalSlot_ = -1;
       committed_ = true;

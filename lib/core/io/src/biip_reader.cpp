@@ -144,7 +144,12 @@ void BiipReader::checkIntact() const {
 void BiipReader::mapFile() {
   const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
   if (fd < 0) refuse("cannot read: " + std::error_code(errno, std::generic_category()).message());
-  noteInputFile(fd);
+  try {
+    noteInputFile(fd, path_);
+  } catch (...) {
+    ::close(fd);
+    throw;
+  }
   struct stat st {};
   if (::fstat(fd, &st) != 0) {
     const int error = errno;

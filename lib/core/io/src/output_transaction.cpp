@@ -3,8 +3,11 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <sys/stat.h>
+
 #include <cerrno>
 #include <deque>
+#include <filesystem>
 #include <mutex>
 #include <stdexcept>
 #include <system_error>
@@ -18,6 +21,7 @@ namespace isurface {
 struct OutputTransaction::Pending {
   struct Output {
     std::string temporary, destination, target;
+    std::string identity;  // what makes two destinations the same file
     int slot = -1;  // of the signal-time removal
   };
   std::mutex mutex;
@@ -36,6 +40,20 @@ namespace {
 
 std::mutex g_openMutex;
 OutputTransaction::Pending* g_open = nullptr;
+
+// The file a destination names: the absolute path with `.`, `..` and links resolved, and for a
+// file that exists its device and inode too (another hard link to it).
+std::string identityOf(const std::string& destination) {
+  std::error_code error;
+  std::string identity = std::filesystem::weakly_canonical(std::filesystem::absolute(destination, error), error)
+                             .lexically_normal()
+                             .string();
+  if (error) identity = destination;
+  struct stat st {};
+  if (::stat(destination.c_str(), &st) == 0)
+    identity = "inode " + std::to_string(st.st_dev) + ":" + std::to_string(st.st_ino);
+  return identity;
+}
 
 }  // namespace
 
@@ -83,7 +101,15 @@ bool deferRename(const std::string& temporary, const std::string& destination, c
   const std::lock_guard<std::mutex> lock(g_openMutex);
   if (!g_open) return false;
   const std::lock_guard<std::mutex> pendingLock(g_open->mutex);
+  // Two outputs of one command on one file: the second would replace the first unseen.
+  const std::string identity = identityOf(destination);
+  for (const OutputTransaction::Pending::Output& other : g_open->outputs)
+    if (other.identity == identity)
+      throw InputError(Diagnostic{target, 0, 0,
+                                  "cannot write: this command writes '" + other.target +
+                                      "' there already (two of its outputs would be one file; give each its own name)"});
   OutputTransaction::Pending::Output& o = g_open->outputs.emplace_back();
+  o.identity = identity;
   o.temporary = temporary;
   o.destination = destination;
   o.target = target;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "isurface/io/biip.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface {
 
@@ -30,7 +31,7 @@ void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
   const std::vector<BiipChannel> channels = BiipWriter::layout(names);
   const nlohmann::json meta = {{"source", samples.source}, {"units", "mm"}, {"writer", "isurface-cli"},
                                {"coordinates", "workpiece"}};
-  BiipWriter writer(path, channels, samples.cycle > 0 ? samples.cycle : 0.001, meta.dump(), samples.startTime);
+  BiipWriter writer(path, channels, samples.cycle > 0 ? samples.cycle : 0.001, jsonText(meta), samples.startTime);
   std::vector<unsigned char> record(writer.recordBytes());
   RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();
   for (std::size_t i = 0; i < samples.size(); ++i) {

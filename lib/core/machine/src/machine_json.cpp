@@ -3,6 +3,7 @@
 
 #include "isurface/base/units.h"
 #include "isurface/machine/machine.h"
+#include "isurface/base/json_text.h"
 
 namespace isurface {
 
@@ -38,7 +39,7 @@ const char* planeName(Plane p) { return p == Plane::XY ? "G17" : p == Plane::ZX 
 }  // namespace
 
 // A name or a folder that is not UTF-8 is written with replacement characters, not refused.
-std::string machineLimitsJson(const Machine& m) { return limitsJson(m).dump(-1, ' ', false, json::error_handler_t::replace); }
+std::string machineLimitsJson(const Machine& m) { return jsonText(limitsJson(m)); }
 
 std::string machineDescriptionJson(const Machine& m) {
   json root = limitsJson(m);
@@ -61,7 +62,7 @@ std::string machineDescriptionJson(const Machine& m) {
     for (const auto& [tool, diameter] : m.toolDiameters) diameters[std::to_string(tool)] = diameter;
     root["tools"] = {{"units", "mm"}, {"diameters", diameters}};
   }
-  return root.dump(2, ' ', false, json::error_handler_t::replace) + "\n";
+  return jsonText(root, 2) + "\n";
 }
 
 }  // namespace isurface

@@ -13,6 +13,10 @@ std::string shownLine(const std::string& text);
 
 std::string escapeHtml(std::string_view text);
 std::string base64(std::string_view bytes);
+// The URL of the file `fileName` in the document's own folder: "./" and the name with every
+// byte but letters, digits and "-._~" percent-encoded. Whatever the name (`javascript:...`,
+// `a/../b`, `?`, `#`), the link opens that file and nothing else; escape it for an attribute.
+std::string relativeLink(std::string_view fileName);
 
 class HtmlDocument {
  public:

@@ -2,6 +2,7 @@
 // Opening what a user brings: a G-code program, a Biip dump (simulated or a machine trace), or
 // both, joined. Written once for the command line and the application. Errors are InputError
 // naming the file (and line); a progress callback may throw to cancel.
+#include <cstdint>
 #include <memory>
 #include <optional>
 #include <string>
@@ -30,6 +31,12 @@ struct RunFiles {
 // Files as named on a command line or dropped together: a dump right after a program joins
 // that program; any other file stands alone.
 std::vector<RunFiles> pairRunFiles(const std::vector<std::string>& paths);
+
+// Throws InputError naming `path` when its program makes no move (an empty file, only
+// comments or modal words): there is no motion to simulate, measure or map, and a result made
+// of the machine standing still would look like one. Every reading of a program to be
+// simulated goes through here.
+void requireMotion(const std::string& path, std::uint64_t moves);
 
 // How `machine`'s control reads a program: its dialect, power-on units and reference positions.
 InterpreterOptions interpreterOptions(const Machine& machine);

@@ -29,7 +29,8 @@ class OutputTransaction {
 
 namespace detail {
 // Hands a committed temporary file to the open transaction. False when none is open (the
-// caller renames it itself).
+// caller renames it itself). Throws InputError when another output of the transaction has the
+// same destination (the same file by its resolved path, or by device and inode).
 bool deferRename(const std::string& temporary, const std::string& destination, const std::string& target);
 }  // namespace detail
 
