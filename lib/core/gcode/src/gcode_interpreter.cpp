@@ -262,8 +262,12 @@ bool InterpreterState::executeBlock(const Block& block) {
     return false;
   if (!unitsStated_ && (hasAxisWords(block) || block.has('F')))
     warnOnce(unitsStated_, 1,
-             fmt::format("no G20 or G21 before the first length: the control's power-on units ({}) are used",
-                         options_.inchAtPowerOn ? "inch, G20" : "mm, G21"));
+             fmt::format("no G20 or G21 before the first length: the control's power-on units ({}) are used{}",
+                         options_.inchAtPowerOn ? "inch, G20" : "mm, G21",
+                         commentSaysInches_ && !options_.inchAtPowerOn
+                             ? ", though its comments speak of inches: a control powered on in inches reads it so "
+                               "(--machine resources/machines/fanuc-inch.json, or \"units_at_power_on\": \"inch\")"
+                             : ""));
 
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
@@ -309,9 +313,13 @@ bool InterpreterState::executeBlock(const Block& block) {
     }
     if (motion == kG80) {
       if (axes)
-        return fail(column, explicitMotion
-                                ? "Cannot use axis values with G80"
-                                : "Cannot use axis values without a g code that uses them");
+        return fail(column, explicitMotion ? "Cannot use axis values with G80"
+                            : options_.fanuc
+                                ? "Cannot use axis values without a g code that uses them"
+                                : "Cannot use axis values without a g code that uses them (after G80 LinuxCNC has no "
+                                  "motion mode; a Fanuc or Haas control goes on with the G0 or G1 before the cycle: "
+                                  "read it with a Fanuc machine, \"control\": {\"dialect\": \"fanuc\"}, e.g. "
+                                  "--machine resources/machines/fanuc-inch.json)");
     } else if (axes || (explicitMotion && isArc && arcWords)) {
       if (nonModal == kG53) {
         if (motion != kG0 && motion != kG1)

@@ -5,6 +5,7 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <optional>
@@ -160,9 +161,21 @@ void InterpreterState::run(std::string_view text) {
   if (options_.progress) options_.progress(1.0);
 }
 
+// Whether a comment of the line ("(UNITS: INCHES)", "; inch") speaks of inches: a Haas or Fanuc
+// program powered on in inches may never say G20.
+static bool commentMentionsInches(const char* begin, const char* end) {
+  const char* comment = std::find_if(begin, end, [](char c) { return c == '(' || c == ';'; });
+  for (const char* p = comment; p + 4 <= end; ++p)
+    if (std::toupper(static_cast<unsigned char>(p[0])) == 'I' && std::toupper(static_cast<unsigned char>(p[1])) == 'N' &&
+        std::toupper(static_cast<unsigned char>(p[2])) == 'C' && std::toupper(static_cast<unsigned char>(p[3])) == 'H')
+      return true;
+  return false;
+}
+
 bool InterpreterState::runBlock(const char* begin, const char* end) {
   // Columns count from the line's start (the block may be what follows a Fanuc IF .. THEN).
   const auto shift = static_cast<std::uint32_t>(begin - lineStart_.at);
+  if (!unitsStated_ && !commentSaysInches_) commentSaysInches_ = commentMentionsInches(begin, end);
   LexError lexError;
   if (!lexBlock(begin, end, block_, lexError, &parameters_)) {
     errorColumn_ = lexError.column + shift;

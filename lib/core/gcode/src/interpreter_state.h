@@ -209,6 +209,7 @@ class InterpreterState {
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
   bool unitsStated_ = false, planeStated_ = true, distanceStated_ = true;
+  bool commentSaysInches_ = false;  // a comment before the first length speaks of inches
   bool unitsRecorded_ = false;  // the first G20/G21 has set Program::inch
   bool machineCoordinates_ = false;  // this block is G53: no G92 / G52 offset      // G20 or G21 given (or the power-on units' warning made)
   // The error of the block being executed.
