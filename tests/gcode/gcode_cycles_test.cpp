@@ -142,9 +142,24 @@ TEST(gcodeCycles, InchCycle) {
   EXPECT_FLOAT_EQ(r.program.moves[3].feed, 254.0f);
 }
 
+// In G18 the cycle drills along Y (positions X and Z), in G19 along X (positions Y and Z).
+TEST(gcodeCycles, OtherPlanes) {
+  Program p = interpret("G21 G18 G0 Y5\nG81 X1 Z2 Y-1 R1 F100\n");
+  ASSERT_EQ(p.moves.size(), 5u);
+  EXPECT_EQ(p.moves[1].end, Vec3(1, 5, 2));   // over the hole at the initial level
+  EXPECT_EQ(p.moves[2].end, Vec3(1, 1, 2));   // down to R
+  EXPECT_EQ(p.moves[3].end, Vec3(1, -1, 2));  // feed to the bottom
+  EXPECT_EQ(p.moves[4].end, Vec3(1, 5, 2));   // back (G98)
+  p = interpret("G21 G19 G0 X5\nG99 G81 Y1 Z2 X-1 R1 F100\n");
+  ASSERT_EQ(p.moves.size(), 5u);
+  EXPECT_EQ(p.moves[3].end, Vec3(-1, 1, 2));
+  EXPECT_EQ(p.moves[4].end, Vec3(1, 1, 2));  // G99: back to R
+}
+
 TEST(gcodeCycles, Errors) {
-  EXPECT_EQ(firstError("G18 G81 X1 Y1 Z-1 R1 F100\n"),
-            "t.ngc:1:5: G81: canned cycle only in G17 (XY plane)");
+  EXPECT_EQ(firstError("G18 G81 X1 Z1 R1 F100\n"),
+            "t.ngc:1:5: Y value unspecified in XZ plane canned cycle");
+  EXPECT_EQ(firstError("G19 G81 Y1 X3 R2 F100\n"), "t.ngc:1:5: R less than X in canned cycle in YZ plane");
   EXPECT_EQ(firstError("G81 X1 Y1 Z-1 F100\n"),
             "t.ngc:1:1: R clearance plane unspecified in canned cycle");
   EXPECT_EQ(firstError("G81 X1 Y1 R1 F100\n"),

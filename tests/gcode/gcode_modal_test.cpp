@@ -143,10 +143,12 @@ TEST(gcodeModal, HomeMoves) {
   InterpreterOptions options;
   options.g28Position = Vec3(0, 0, 50);
   options.g30Position = Vec3(100, 100, 60);
+  // Without axis words, as rs274: a rapid where the tool is, then to the reference position.
   InterpretResult r = runOk("G0 X10 Y10 Z5\nG28\n", options);
-  ASSERT_EQ(r.program.moves.size(), 2u);
-  EXPECT_EQ(r.program.moves[1].kind, MoveKind::Rapid);
-  EXPECT_EQ(r.program.moves[1].end, Vec3(0, 0, 50));
+  ASSERT_EQ(r.program.moves.size(), 3u);
+  EXPECT_EQ(r.program.moves[1].end, Vec3(10, 10, 5));
+  EXPECT_EQ(r.program.moves[2].kind, MoveKind::Rapid);
+  EXPECT_EQ(r.program.moves[2].end, Vec3(0, 0, 50));
 
   // Through the point on the line, then only the named axes go to the reference position.
   r = runOk("G0 X10 Y10 Z5\nG28 Z20\nG30 X20\nG91 G28 Z5\n", options);
@@ -161,8 +163,8 @@ TEST(gcodeModal, HomeMoves) {
 
   // G28.1 stores the current position.
   r = runOk("G0 X1 Y2 Z3\nG28.1\nG0 X0 Y0 Z0\nG28\n", options);
-  ASSERT_EQ(r.program.moves.size(), 3u);
-  EXPECT_EQ(r.program.moves[2].end, Vec3(1, 2, 3));
+  ASSERT_EQ(r.program.moves.size(), 4u);
+  EXPECT_EQ(r.program.moves[3].end, Vec3(1, 2, 3));
 
   EXPECT_EQ(firstError("G28 G1 X1 F100\n"),
             "t.ngc:1:5: Cannot use two G codes that both use axis values");
@@ -183,9 +185,10 @@ TEST(gcodeModal, AcceptedCodesWithoutEffectOnCoordinates) {
       "G17 G21 G40 G49 G80 G90 G94 G97 G98 G54\n"
       "G55 G0 X1\nG59.3 G0 X2\nG10 L2 P1 X5 Y5\nG43 H1 Z1\nG43.1 Z2\nG49 G53 G0 X3\n"
       "G53 G1 X4 F100\nG96 S100\nG97 S1000\n");
-  ASSERT_EQ(r.program.moves.size(), 6u);
+  // G43.1 Z2 is a tool length, not a move; G10 L2 P1 changes G54, not the G59.3 in effect.
+  ASSERT_EQ(r.program.moves.size(), 5u);
   EXPECT_EQ(r.program.moves[2].end, Vec3(2, 0, 1));
-  EXPECT_EQ(r.program.moves[5].end, Vec3(4, 0, 2));
+  EXPECT_EQ(r.program.moves[4].end, Vec3(4, 0, 1));
   EXPECT_EQ(firstError("G53 G2 X1 I1\n"), "t.ngc:1:1: Must use G0 or G1 with G53");
   EXPECT_EQ(firstError("G91 G53 G0 X1\n"), "t.ngc:1:5: Cannot use G53 incremental");
 }

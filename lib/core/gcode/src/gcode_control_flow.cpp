@@ -21,6 +21,29 @@ bool isOWordLine(const char* begin, const char* end) {
   return p < end && (*p == 'o' || *p == 'O');
 }
 
+namespace {
+
+// Past a `#..` parameter or a `[..]` expression (an O-word's number given by one).
+const char* pastParameterExpression(const char* p, const char* end) {
+  while (p < end && *p == '#') ++p;
+  if (p < end && *p == '<') {
+    while (p < end && *p != '>') ++p;
+    return p < end ? p + 1 : p;
+  }
+  if (p < end && *p == '[') {
+    int depth = 0;
+    for (; p < end; ++p) {
+      if (*p == '[') ++depth;
+      if (*p == ']' && --depth == 0) return p + 1;
+    }
+    return p;
+  }
+  while (p < end && (std::isdigit(static_cast<unsigned char>(*p)) || *p == '.')) ++p;
+  return p;
+}
+
+}  // namespace
+
 ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, LinePosition next) {
   // The line: [N..] O label [keyword] [rest].
   const char* begin = here.at;
@@ -43,6 +66,19 @@ ControlFlow::Outcome ControlFlow::execute(LinePosition here, const char* end, Li
       if (!isLineBlank(*q)) o.label += static_cast<char>(std::tolower(static_cast<unsigned char>(*q)));
     o.label += ">";
     p = close + 1;
+  } else if (p < end && (*p == '#' || *p == '[')) {  // a number given by a parameter or an expression
+    double value = 0;
+    std::string message;
+    if (skip_) {  // lines being skipped are not evaluated: their parameters may not be set yet
+      o.label = "#";
+      p = pastParameterExpression(p, end);
+    } else if (!readRealValue(p, end, parameters_, value, message)) {
+      return error(std::move(message));
+    } else if (value < 0 || value != std::floor(value) || value > 1e9) {
+      return error(fmt::format("O-word number {:g} is not a whole number of 0 or more", value));
+    } else {
+      o.label = std::to_string(static_cast<long>(value));
+    }
   } else {
     std::string digits;  // without leading zeros: o0100 is o100
     bool any = false;
@@ -317,7 +353,12 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     case Keyword::Call: {
       std::vector<double> arguments;
       const char* p = skipLineBlanks(o.rest, end);
-      while (p < end && *p != '(' && *p != ';') {
+      while (p < end && *p != ';') {
+        if (*p == '(') {  // a comment between the arguments, as LinuxCNC reads it
+          while (p < end && *p != ')') ++p;
+          p = skipLineBlanks(p < end ? p + 1 : p, end);
+          continue;
+        }
         double value = 0;
         std::string message;
         if (!readRealValue(p, end, parameters_, value, message)) return error(std::move(message));

@@ -27,8 +27,7 @@ bool InterpreterState::setCutterComp(const Block& block, int code, std::uint32_t
   if (dynamic) {
     // G41.1 / G42.1 D<diameter>: the diameter in program units, no tool table.
     if (!block.has('D')) return fail(column, "G41.1 and G42.1 need a D word: the tool diameter");
-    if (block.get('D') < 0) return fail(block.col('D'), "Negative D word (tool diameter) used");
-    radius = length(block.get('D')) / 2;
+    radius = length(block.get('D')) / 2;  // negative: the other side, as LinuxCNC takes it
   } else {
     int tool = spindleTool_;
     if (block.has('D')) {
@@ -48,8 +47,9 @@ bool InterpreterState::setCutterComp(const Block& block, int code, std::uint32_t
   state_.cutterComp = code;
   compOpenMoves_.clear();
   // A zero radius leaves the path as programmed (as LinuxCNC does).
-  if (radius > 0) {
-    const bool left = code == kG41 || code == kG41_1;
+  if (radius != 0) {
+    const bool left = (code == kG41 || code == kG41_1) == (radius > 0);
+    radius = std::fabs(radius);
     comp_.start(left ? CutterCompensation::kLeft : CutterCompensation::kRight, radius, state_.plane, state_.position,
                 state_.inch);
   }

@@ -1,4 +1,4 @@
-// Canned cycles in the XY plane, expanded into rapid and feed moves the way RS274/NGC (LinuxCNC's
+// Canned cycles in the XY, XZ and YZ planes (drilling along Z, Y and X), expanded into rapid and feed moves the way RS274/NGC (LinuxCNC's
 // rs274) runs them: drilling G81 G82, pecking G73 G83, tapping G84 (right hand) and G74 (left
 // hand), boring G85 G86 G88 G89.
 #include <fmt/format.h>
@@ -19,6 +19,20 @@ constexpr double kPeckClearance = 0.254;
 constexpr long kMaxRepeats = 100000;
 constexpr double kMaxPecks = 100000;
 constexpr double kMaxCycleMoves = 2e6;
+constexpr char kAxisLetter[3] = {'X', 'Y', 'Z'};
+
+// The cycle's axes as LinuxCNC names them: the two of the plane (a, b) and the drilling one (c).
+struct CycleAxes {
+  int a, b, c;
+  const char* plane;
+};
+CycleAxes cycleAxes(Plane plane) {
+  switch (plane) {
+    case Plane::ZX: return {2, 0, 1, "XZ"};
+    case Plane::YZ: return {1, 2, 0, "YZ"};
+    default: return {0, 1, 2, "XY"};
+  }
+}
 
 }  // namespace
 
@@ -26,8 +40,12 @@ constexpr double kMaxCycleMoves = 2e6;
 // one case per cycle. Kept whole so that the cycles read side by side (longer than most).
 bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t column) {
   const std::string name = fmt::format("G{}", motion / 10);
-  if (state_.plane != Plane::XY)
-    return fail(column, fmt::format("{}: canned cycle only in G17 (XY plane)", name));
+  const CycleAxes ax = cycleAxes(state_.plane);
+  // rs274 2.9 taps along the plane's first axis there, not the drilling one: no reading to follow.
+  if ((motion == kG84 || motion == kG74) && state_.plane != Plane::XY)
+    return fail(column, fmt::format("{}: tapping only in G17 (XY plane); LinuxCNC feeds along the wrong axis in {}",
+                                    name, ax.plane));
+  const char cLetter = kAxisLetter[ax.c];
   if (state_.cutterComp != kG40)
     return fail(column, "Cannot use canned cycles with cutter radius compensation");
   if (state_.inverseTime)
@@ -36,12 +54,12 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   if (state_.feed <= 0) return fail(column, fmt::format("Cannot do {} with zero feed rate", name));
 
   // A cycle's first block names its levels; later blocks may reuse them.
-  const bool first = state_.motion != motion;
-  if (first && !block.has('Z'))
-    return fail(column, "Z value unspecified in XY plane canned cycle");
+  const bool first = state_.motion != motion || state_.cyclePlane != state_.plane;
+  if (first && !block.has(cLetter))
+    return fail(column, fmt::format("{} value unspecified in {} plane canned cycle", cLetter, ax.plane));
   if (first && !block.has('R'))
     return fail(column, "R clearance plane unspecified in canned cycle");
-  const double zWord = block.has('Z') ? length(block.get('Z')) : state_.cycleZ;
+  const double zWord = block.has(cLetter) ? length(block.get(cLetter)) : state_.cycleZ;
   const double rWord = block.has('R') ? length(block.get('R')) : state_.cycleR;
 
   long repeats = 1;
@@ -75,23 +93,25 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
     warnOnce(warnedPeckTapping_, block.col('Q'),
              fmt::format("{} with Q (peck tapping on Fanuc and Haas controls) is expanded as one tap to the bottom", name));
   const Vec3 start = state_.position;
-  double oldZ = start.z();
+  // x, y, z below are the cycle's a, b, c axes.
+  const char aLetter = kAxisLetter[ax.a], bLetter = kAxisLetter[ax.b];
+  double oldZ = start[ax.c];
   if (first) state_.cycleStartZ = oldZ;
   double x, y, r, bottom, dx = 0, dy = 0;
   if (!state_.incremental) {
-    r = rWord + state_.offset.z();
-    bottom = zWord + state_.offset.z();
-    x = block.has('X') ? length(block.get('X')) + state_.offset.x() : start.x();
-    y = block.has('Y') ? length(block.get('Y')) + state_.offset.y() : start.y();
+    r = rWord + state_.offset[ax.c];
+    bottom = zWord + state_.offset[ax.c];
+    x = block.has(aLetter) ? length(block.get(aLetter)) + state_.offset[ax.a] : start[ax.a];
+    y = block.has(bLetter) ? length(block.get(bLetter)) + state_.offset[ax.b] : start[ax.b];
   } else {
-    dx = block.has('X') ? length(block.get('X')) : 0.0;
-    dy = block.has('Y') ? length(block.get('Y')) : 0.0;
+    dx = block.has(aLetter) ? length(block.get(aLetter)) : 0.0;
+    dy = block.has(bLetter) ? length(block.get(bLetter)) : 0.0;
     r = rWord + state_.cycleStartZ;
     bottom = r + zWord;
-    x = start.x();
-    y = start.y();
+    x = start[ax.a];
+    y = start[ax.b];
   }
-  if (r < bottom) return fail(column, "R less than Z in canned cycle in XY plane");
+  if (r < bottom) return fail(column, fmt::format("R less than {} in canned cycle in {} plane", cLetter, ax.plane));
   const double pecks = (motion == kG73 || motion == kG83) ? (r - bottom) / peck : 1.0;
   if (pecks > kMaxPecks)
     return fail(block.has('Q') ? block.col('Q') : column,
@@ -100,16 +120,23 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
     return fail(column, "Canned cycle expands to too many moves (L and Q)");
 
   // Cycles run in exact stop mode, whatever G61/G64 says.
+  auto at = [&](double pa, double pb, double pc) {
+    Vec3 v;
+    v[ax.a] = pa;
+    v[ax.b] = pb;
+    v[ax.c] = pc;
+    return v;
+  };
   auto rapid = [&](double px, double py, double pz) {
-    emit(MoveKind::Rapid, Vec3(px, py, pz), 0.0f, kExactStop);
+    emit(MoveKind::Rapid, at(px, py, pz), 0.0f, kExactStop);
   };
   const float feed = static_cast<float>(state_.feed);
   auto feedTo = [&](double px, double py, double pz) {
-    emit(MoveKind::Linear, Vec3(px, py, pz), feed, kExactStop);
+    emit(MoveKind::Linear, at(px, py, pz), feed, kExactStop);
   };
 
   if (oldZ < r) {
-    rapid(start.x(), start.y(), r);
+    rapid(start[ax.a], start[ax.b], r);
     oldZ = r;
   }
   const double clear = state_.retractToR ? r : oldZ;
@@ -172,6 +199,7 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
 
     oldZ = clear;
   }
+  state_.cyclePlane = state_.plane;
   state_.cycleZ = zWord;
   state_.cycleR = rWord;
   state_.cycleQ = peck;

@@ -93,11 +93,12 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   state_.incremental = options.incrementalAtPowerOn;
   planeStated_ = distanceStated_ = !options.powerOnModesNamed;
   parameters_.bareSettings = options.fanuc;
+  parameters_.set("_value", 0.0);  // as LinuxCNC: what the last call returned, 0 before any
   result_.program.source = source_;
   result_.program.start = options.startPosition;
   flow_.setFileFinder([this](const std::string& label, bool program) { return findSubroutineFile(label, program); });
   // LinuxCNC's #5420-#5428: where the tool is, in the program's coordinates and units (A, B, C,
-  // U, V, W: 0); #5211-#5219: the G92 / G52 offset.
+  // U, V, W: 0); #5211-#5219: the G92 / G52 offset; the coordinate systems' (gcode_work_offsets.cpp).
   parameters_.setSystemReader([this](int number, double& value) {
     const double perMm = state_.inch ? 1 / kMmPerInch : 1.0;
     if (number >= 5420 && number <= 5428) {
@@ -108,7 +109,7 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
       value = number <= 5213 ? state_.offset[number - 5211] * perMm : 0.0;
       return true;
     }
-    return false;
+    return readMachineParameter(number, value);
   });
 }
 
@@ -236,6 +237,8 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (groups.code[kGroupNonModal] == kG4 && !dwell(block, groups.column[kGroupNonModal]))
     return false;
   applyModalCodes(groups);
+  if (groups.has(kGroupToolLength))
+    state_.toolLengthZ = groups.code[kGroupToolLength] == kG43_1 && block.has('Z') ? length(block.get('Z')) : 0.0;
   if (groups.has(kGroupPathControl) && groups.code[kGroupPathControl] == kG64) {
     for (char letter : {'P', 'Q'})
       if (block.has(letter) && !(block.get(letter) >= 0))
@@ -272,7 +275,8 @@ bool InterpreterState::executeBlock(const Block& block) {
   // Non-modal codes that take the axis words.
   const int nonModal = groups.code[kGroupNonModal];
   const bool axesForNonModal = nonModal == kG10 || nonModal == kG28 || nonModal == kG30 || nonModal == kG65 ||
-                               nonModal == kG92 || nonModal == kG52 || groups.code[kGroupRotation] == kG68;
+                               nonModal == kG92 || nonModal == kG52 || groups.code[kGroupRotation] == kG68 ||
+                               groups.code[kGroupToolLength] == kG43_1;
   if (groups.has(kGroupRotation) &&
       !setRotation(block, groups.code[kGroupRotation], groups.column[kGroupRotation]))
     return false;
@@ -286,9 +290,11 @@ bool InterpreterState::executeBlock(const Block& block) {
   } else if (nonModal == kG28 || nonModal == kG30) {
     if (!homeMove(block, nonModal)) return false;
   } else if (nonModal == kG28_1) {
-    state_.g28 = state_.position;
+    state_.g28 = machineOf(state_.position);
   } else if (nonModal == kG30_1) {
-    state_.g30 = state_.position;
+    state_.g30 = machineOf(state_.position);
+  } else if (nonModal == kG10) {
+    if (!setWorkOffset(block, groups.column[kGroupNonModal])) return false;
   }
 
   // Motion.
@@ -376,7 +382,7 @@ void InterpreterState::applyModalCodes(const GroupedCodes& groups) {
   }
   if (groups.has(kGroupUnits)) state_.inch = groups.code[kGroupUnits] == kG20;
   if (groups.has(kGroupToolLength)) state_.toolLength = groups.code[kGroupToolLength];
-  if (groups.has(kGroupCoordSystem)) state_.coordSystem = groups.code[kGroupCoordSystem];
+  if (groups.has(kGroupCoordSystem)) selectCoordSystem(groups.code[kGroupCoordSystem]);
   if (groups.has(kGroupPathControl)) {
     state_.exactStop = groups.code[kGroupPathControl] != kG64;
     state_.exactPath = groups.code[kGroupPathControl] == kG61;

@@ -320,8 +320,13 @@ bool lexPlainBlock(const char* begin, const char* end, Block& block) {
   }
   const char* afterHash = p + 1;
   while (afterHash < end && classOf(*afterHash) == kBlank) ++afterHash;
-  if (*p == '#' && (afterHash == end || !(classOf(*afterHash) == kDigit || *afterHash == '<' || *afterHash == '[' ||
-                                          *afterHash == '#'))) {
+  // A function's value is a parameter's number too (LinuxCNC reads `#atan[1]/[1] = 3` as #45).
+  const char* afterName = afterHash;
+  while (afterName < end && classOf(*afterName) == kLetter) ++afterName;
+  const bool function = afterName > afterHash && afterName < end && *afterName == '[';
+  if (*p == '#' && !function &&
+      (afterHash == end || !(classOf(*afterHash) == kDigit || *afterHash == '<' || *afterHash == '[' ||
+                             *afterHash == '#'))) {
     block.kind = BlockKind::SenderComment;
     return true;
   }

@@ -108,7 +108,9 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
 }
 
 bool InterpreterState::straight(const Block& block, int motion, std::uint32_t column) {
-  const Vec3 end = targetOf(block);
+  Vec3 end;
+  if (!machineCoordinates_) end = targetOf(block);
+  else if (!machineTarget(block, column, end)) return false;
   if (motion == kG0) return emitPath(MoveKind::Rapid, end, Vec3::Zero(), 1, 0.0f, column);
   double feed = state_.feed;
   if (state_.inverseTime) {
@@ -247,18 +249,16 @@ bool InterpreterState::dwell(const Block& block, std::uint32_t column) {
 }
 
 bool InterpreterState::homeMove(const Block& block, int code) {
+  // The reference position is in machine coordinates. As rs274: through the intermediate point
+  // (where the tool is, without axis words), then the named axes (all without any) go there.
   const Vec3& home = code == kG28 ? state_.g28 : state_.g30;
-  if (!hasAxisWords(block)) {
-    emit(MoveKind::Rapid, home, 0.0f);
-    return true;
-  }
-  // Through the intermediate point, then only the named axes go to the reference position.
-  const Vec3 via = targetOf(block);
+  const bool all = !hasAxisWords(block);
+  const Vec3 via = all ? state_.position : targetOf(block);
   emit(MoveKind::Rapid, via, 0.0f);
-  Vec3 dest = via;
+  Vec3 dest = machineOf(via);
   for (int i = 0; i < 3; ++i)
-    if (block.has(kAxisLetter[i])) dest[i] = home[i];
-  emit(MoveKind::Rapid, dest, 0.0f);
+    if (all || block.has(kAxisLetter[i])) dest[i] = home[i];
+  emit(MoveKind::Rapid, workOf(dest), 0.0f);
   return true;
 }
 

@@ -178,7 +178,9 @@ class Reader {
     return true;
   }
 
-  bool parameterRef(ParameterRef& ref) {
+  // `forExists`: a number out of range is no parameter (number -1), not an error, as
+  // LinuxCNC's EXISTS[#99999] is 0.
+  bool parameterRef(ParameterRef& ref, bool forExists = false) {
     skipBlanks(p_, end_);
     if (p_ < end_ && *p_ == '<') {
       const char* close = static_cast<const char*>(std::memchr(p_, '>', static_cast<std::size_t>(end_ - p_)));
@@ -195,6 +197,10 @@ class Reader {
     if (!realValue(index)) return false;
     const double whole = std::round(index);
     if (std::fabs(index - whole) > kWholeTolerance) return fail(fmt::format("Parameter number {:g} is not an integer", index));
+    if ((whole < 1 || whole > kMaxNumberedParameter) && forExists) {
+      ref = ParameterRef{-1, {}};
+      return true;
+    }
     if (whole < 1 || whole > kMaxNumberedParameter)
       return fail(fmt::format("Parameter number {:g} out of range (1-{})", whole, kMaxNumberedParameter));
     ref = ParameterRef{static_cast<int>(whole), {}};
@@ -271,11 +277,11 @@ class Reader {
       if (p_ >= end_ || *p_ != '#') return fail("EXISTS takes [#<name>]");
       ++p_;
       ParameterRef ref;
-      if (!parameterRef(ref)) return false;
+      if (!parameterRef(ref, /*forExists=*/true)) return false;
       skipBlanks(p_, end_);
       if (p_ >= end_ || *p_ != ']') return fail("Unclosed expression (missing ']')");
       ++p_;
-      value = ref.name.empty() ? 1.0 : (parameters_.exists(ref.name) ? 1.0 : 0.0);
+      value = ref.name.empty() ? (ref.number > 0 ? 1.0 : 0.0) : (parameters_.exists(ref.name) ? 1.0 : 0.0);
       return true;
     }
     double a = 0;

@@ -3,6 +3,7 @@
 // execution, moves out. Private to the gcode module; split over gcode_interpreter.cpp (blocks
 // and modal codes), gcode_motion.cpp (straight moves, arcs, dwell, G28/G30) and gcode_cycles.cpp
 // (canned cycles). Not the machine description (isurface/machine/machine.h).
+#include <array>
 #include <deque>
 #include <functional>
 #include <optional>
@@ -62,6 +63,16 @@ inline bool isCycle(int motion) {
   }
 }
 
+// A LinuxCNC coordinate system (G54-G59.3): its origin in machine coordinates (mm) and its XY
+// rotation (degrees, G10 L2 R).
+struct WorkSystem {
+  Vec3 origin = Vec3::Zero();
+  double rotation = 0;
+};
+
+// 1-9 for G54-G59.3 (coordSystem codes 540-593); 0 for any other (Fanuc's G54.1 P).
+int workSystemIndex(int coordSystem);
+
 // Everything that persists from block to block. Small, so a block can be undone by copying.
 struct ModalState {
   Vec3 position = Vec3::Zero();  // mm
@@ -80,9 +91,12 @@ struct ModalState {
   int cutterComp = kG40;
   int toolLength = kG49;
   int coordSystem = 540;
+  std::array<WorkSystem, 10> work{};  // by workSystemIndex
+  double toolLengthZ = 0;             // mm, G43.1 Z (G43 H: not known, 0)
   double feed = 0;              // mm/min (G94) or 1/min (G93)
   // Canned cycle words kept from block to block, mm and seconds.
   double cycleR = 0, cycleZ = 0, cycleQ = 0, cycleP = 0;
+  Plane cyclePlane = Plane::XY;  // the plane of the last cycle block (its levels are along its normal)
   Vec3 g28 = Vec3::Zero(), g30 = Vec3::Zero();
   // G92 / G52: the program's coordinates plus this are the workpiece's (mm); `offsetStored` is
   // the last one set (G92.3 brings it back).
@@ -148,6 +162,15 @@ class InterpreterState {
   Vec3 targetOf(const Block& block) const;  // axis words applied to the current position
   Vec3 programOffset() const { return machineCoordinates_ ? Vec3::Zero() : state_.offset; }
   bool setOffset(const Block& block, int code);  // G92, G92.1-G92.3, G52
+  // gcode_work_offsets.cpp: G54-G59.3 origins and rotations, G10 L2 / L20, G53.
+  Vec3 machineOf(const Vec3& position) const;
+  Vec3 workOf(const Vec3& machine) const;
+  void selectCoordSystem(int code);
+  bool setWorkOffset(const Block& block, std::uint32_t column);
+  bool machineTarget(const Block& block, std::uint32_t column, Vec3& target);
+  // #5021-#5029 (machine position), #5161-#5169 / #5181-#5189 (G28 / G30), #5220 (the active
+  // system), #5221-#5410 (the systems' origins and rotations), in program units.
+  bool readMachineParameter(int number, double& value) const;
   // G68 / G69 (gcode_rotation.cpp); a program point (offsets included) turned as G68 says, and
   // back; a vector (I, J, K) turned alike.
   bool setRotation(const Block& block, int code, std::uint32_t column);
