@@ -27,6 +27,23 @@ std::vector<std::string> linesOf(const std::string& text) {
   return lines;
 }
 
+// How far the new program's moves of a re-fitted pass lie from the old program's moves it
+// replaced, both from the point the pass starts at (infinite when the new pass has no moves).
+double passMovedBy(const Program& old, const Program& reread, const OptimizedPass& pass) {
+  auto collect = [](const Program& p, std::uint32_t first, std::uint32_t last) {
+    std::vector<Vec3> out;
+    for (std::size_t i = 0; i < p.moves.size(); ++i) {
+      if (p.moves[i].line < first || p.moves[i].line > last) continue;
+      if (out.empty()) out.push_back(p.startOf(i));
+      out.push_back(p.moves[i].end);
+    }
+    return out;
+  };
+  const std::vector<Vec3> newPath = collect(reread, pass.newFirstLine, pass.newLastLine);
+  if (newPath.empty()) return INFINITY;
+  return polylineDistance(newPath, collect(old, pass.firstLine, pass.lastLine));
+}
+
 }  // namespace
 
 TEST(regionOptimizer, OnePassIsReplacedAndEverythingElseKept) {
@@ -51,19 +68,29 @@ TEST(regionOptimizer, OnePassIsReplacedAndEverythingElseKept) {
   // The new program interprets, and its moves stay within 0.01 mm of the old path.
   const InterpretResult reread = interpretGcode(r.text, "new.nc");
   ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
-  std::vector<Vec3> oldPath, newPath;
-  // Both from the point the pass starts at.
-  auto collect = [](const Program& p, std::uint32_t first, std::uint32_t last, std::vector<Vec3>& out) {
-    for (std::size_t i = 0; i < p.moves.size(); ++i) {
-      if (p.moves[i].line < first || p.moves[i].line > last) continue;
-      if (out.empty()) out.push_back(p.startOf(i));
-      out.push_back(p.moves[i].end);
-    }
-  };
-  collect(original.program, pass.firstLine, pass.lastLine, oldPath);
-  collect(reread.program, pass.newFirstLine, pass.newLastLine, newPath);
-  ASSERT_FALSE(newPath.empty());
-  EXPECT_LT(polylineDistance(newPath, oldPath), 0.01);
+  EXPECT_LT(passMovedBy(original.program, reread.program, pass), 0.01);
+}
+
+TEST(regionOptimizer, NewBlocksAreWrittenInTheProgramsOwnFrame) {
+  // Under a G92 or G52 offset or a G68 rotation the moves are where the frame puts them; the new
+  // blocks are written in the program's coordinates, so the new program runs the same path.
+  const std::string path = sourcePath("samples/transition-surface.nc");
+  const std::string text = readFile(path);
+  const std::size_t afterModes = text.find("T1 M6");
+  for (const std::string frame : {"G92 X-409.5 Y20 Z-5", "G52 X100 Y-50 Z2", "G68 X20 Y10 R30"}) {
+    // The frame line goes before line 5: the pass of lines 70-126 is now lines 71-127.
+    const std::string framed = text.substr(0, afterModes) + frame + "\n" + text.substr(afterModes);
+    const InterpretResult original = interpretGcode(framed, path);
+    ASSERT_TRUE(original.ok()) << frame;
+    const OptimizeResult r = optimizeRegion(framed, original.program, LineRange{71, 127}, defaultMachine());
+    ASSERT_EQ(r.passes.size(), 1u) << frame;
+    const OptimizedPass& pass = r.passes.front();
+    const InterpretResult reread = interpretGcode(r.text, "new.nc");
+    ASSERT_TRUE(reread.ok()) << reread.errors.front().str();
+    EXPECT_LT(passMovedBy(original.program, reread.program, pass), 0.01) << frame;
+    // And the lines after the pass go on from where the pass ends, as before.
+    EXPECT_LT((reread.program.moves.back().end - original.program.moves.back().end).norm(), 1e-9) << frame;
+  }
 }
 
 TEST(regionOptimizer, RefusesWhatItCannotRewrite) {

@@ -2,6 +2,7 @@
 #include "isurface/workflow/simulation_dump.h"
 
 #include <cstddef>
+#include <filesystem>
 #include <nlohmann/json.hpp>
 
 #include "isurface/io/biip.h"
@@ -61,13 +62,37 @@ SimulationReport simulateToBiip(const Program& program, const Machine& machine, 
   return report;
 }
 
+namespace {
+
+// Takes the moves and keeps none: a reading of the whole program before its simulation.
+class DiscardingSink : public MoveSink {
+ public:
+  void consume(const Move*, std::size_t, std::uint64_t) override {}
+};
+
+}  // namespace
+
 StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const Machine& machine,
                                            const std::string& biipPath, const InterpreterOptions& options) {
+  StreamedSimulation result;
+  // The program is read once before it is simulated, without the simulation: a program that
+  // never ends passes the interpreter's bound on its loops in seconds, where its simulation
+  // would write hours of samples first; and the program's errors are told before any sample is
+  // made. Reading costs little beside simulating. (A pipe can be read only once: its program is
+  // bounded as it is simulated, by the interpreter's bound or the machine's longest run.)
+  std::error_code notAFile;
+  if (std::filesystem::is_regular_file(gcodePath, notAFile)) {
+    DiscardingSink discard;
+    InterpreterOptions reading = options;
+    reading.progress = nullptr;
+    reading.callStack = nullptr;
+    result.interpretation = interpretGcodeFileStream(gcodePath, discard, reading);
+    if (!result.interpretation.ok()) return result;
+  }
   BiipWriter writer(biipPath, simulationChannels(), machine.cycle, simulationMetadata(gcodePath, machine));
   BiipSink records(writer);
   ThreadedSink sink(records);
   StreamingSimulation simulation(machine, options.startPosition, gcodePath, sink);
-  StreamedSimulation result;
   result.interpretation = interpretGcodeFileStream(gcodePath, simulation, options);
   if (!result.interpretation.ok()) return result;  // the writer removes its temporary file
   requireMotion(gcodePath, result.interpretation.moveCount);

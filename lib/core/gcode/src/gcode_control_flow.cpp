@@ -140,7 +140,7 @@ ControlFlow::Outcome ControlFlow::executeSkipping(const OLine& o, LinePosition h
         subroutines_[o.label] = next;
         Skip found = std::move(*skip_);
         skip_.reset();
-        return call(o, end, next, std::move(found.arguments), found.back);
+        return call(o, next, std::move(found.arguments), found.at, found.back);
       }
       return {};
     case SkipTo::BranchEnd:
@@ -190,15 +190,15 @@ ControlFlow::Loop* ControlFlow::findLoop(const std::string& label) {
   return nullptr;
 }
 
-void ControlFlow::beginLoop(const std::string& label, Keyword kind, LinePosition top, double remaining) {
-  Loop loop{label, kind, top, remaining};
+void ControlFlow::beginLoop(const std::string& label, Keyword kind, LinePosition top, LinePosition opened,
+                            double remaining) {
+  Loop loop{label, kind, top, remaining, opened};
   loop.branches = branches_.size();
   loops_.push_back(std::move(loop));
 }
 
-ControlFlow::Outcome ControlFlow::call(const OLine& o, const char* end, LinePosition body, std::vector<double> arguments,
+ControlFlow::Outcome ControlFlow::call(const OLine& o, LinePosition body, std::vector<double> arguments, LinePosition at,
                                        LinePosition back) {
-  (void)end;
   if (frames_.size() >= kMaxCallDepth) {
     Outcome out;
     out.ok = false;
@@ -213,6 +213,7 @@ ControlFlow::Outcome ControlFlow::call(const OLine& o, const char* end, LinePosi
   Frame frame;
   frame.label = o.label;
   frame.back = back;
+  frame.at = at;
   frame.loops = loops_.size();
   frame.branches = branches_.size();
   frames_.push_back(std::move(frame));
@@ -230,6 +231,7 @@ ControlFlow::Outcome ControlFlow::callProgram(const std::string& program,
   if (times < 1) return {};  // L0: no run at all
   Skip request = skipTo(SkipTo::FindProgram, program, here.line);
   request.back = next;
+  request.at = here;
   request.programArguments = arguments;
   request.macro = macro;
   request.times = times;
@@ -255,6 +257,7 @@ ControlFlow::Outcome ControlFlow::enterProgram(const Skip& request, LinePosition
   Frame frame;
   frame.label = "O" + request.label;
   frame.back = request.back;
+  frame.at = request.at;
   frame.loops = loops_.size();
   frame.branches = branches_.size();
   frame.program = true;
@@ -293,18 +296,9 @@ ControlFlow::Outcome ControlFlow::returnFromProgram(std::uint32_t column, bool& 
   return out;
 }
 
-ControlFlow::Outcome ControlFlow::loopEnd(const OLine& o, LinePosition here, const char* end) {
-  (void)here;
-  (void)end;
+ControlFlow::Outcome ControlFlow::loopEnd() {
   Outcome out;
-  Loop& loop = loops_.back();
-  if (++loop.iterations > kMaxLoopIterations) {
-    out.ok = false;
-    out.column = o.column;
-    out.message = fmt::format("{} has run {} times: a loop that never ends?", shown(o.label), kMaxLoopIterations);
-    return out;
-  }
-  out.jump = loop.top;
+  out.jump = loops_.back().top;
   return out;
 }
 
@@ -367,27 +361,28 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
         arguments.push_back(value);
       }
       const auto sub = subroutines_.find(o.label);
-      if (sub != subroutines_.end()) return call(o, end, sub->second, std::move(arguments), next);
+      if (sub != subroutines_.end()) return call(o, sub->second, std::move(arguments), here, next);
       skip_ = skipTo(SkipTo::FindSub, o.label, here.line);
       skip_->arguments = std::move(arguments);
       skip_->back = next;
+      skip_->at = here;
       // A file of its own comes first (LinuxCNC's subroutine path); else further on in this one.
       if (findFile_ && o.label.front() == '<') out.jump = findFile_(o.label, false);
       return out;
     }
     case Keyword::Do:
-      beginLoop(o.label, Keyword::Do, next);
+      beginLoop(o.label, Keyword::Do, next, here);
       return out;
     case Keyword::While: {
       if (!condition(o, end, v, out)) return out;
       if (loopOnTop && loops_.back().kind == Keyword::Do) {  // the end of a do loop
-        if (v != 0) return loopEnd(o, here, end);
+        if (v != 0) return loopEnd();
         loops_.pop_back();
         return out;
       }
       const bool again = loopOnTop && loops_.back().kind == Keyword::While && loops_.back().top.line == here.line;
       if (v != 0) {
-        if (!again) beginLoop(o.label, Keyword::While, here);
+        if (!again) beginLoop(o.label, Keyword::While, here, here);
         return out;
       }
       if (again) loops_.pop_back();
@@ -396,18 +391,18 @@ ControlFlow::Outcome ControlFlow::run(const OLine& o, LinePosition here, const c
     }
     case Keyword::Endwhile:
       if (!loopOnTop || loops_.back().kind != Keyword::While) return error(fmt::format("{} endwhile without its while", shown(o.label)));
-      return loopEnd(o, here, end);
+      return loopEnd();
     case Keyword::Repeat: {
       if (!condition(o, end, v, out)) return out;
       const double times = std::round(v);
-      if (times >= 1) beginLoop(o.label, Keyword::Repeat, next, times);
+      if (times >= 1) beginLoop(o.label, Keyword::Repeat, next, here, times);
       else skip_ = skipTo(SkipTo::LoopEnd, o.label, here.line);
       return out;
     }
     case Keyword::Endrepeat:
       if (!loopOnTop || loops_.back().kind != Keyword::Repeat)
         return error(fmt::format("{} endrepeat without its repeat", shown(o.label)));
-      if (--loops_.back().remaining >= 1) return loopEnd(o, here, end);
+      if (--loops_.back().remaining >= 1) return loopEnd();
       loops_.pop_back();
       return out;
     case Keyword::If:
@@ -445,6 +440,25 @@ std::vector<ControlFlow::Call> ControlFlow::calls() const {
   std::vector<Call> out;
   out.reserve(frames_.size());
   for (const Frame& f : frames_) out.push_back({f.program ? f.label : shown(f.label), f.back});
+  return out;
+}
+
+std::vector<ControlFlow::Open> ControlFlow::open() const {
+  auto keyword = [](Keyword k) { return k == Keyword::While ? "while" : k == Keyword::Do ? "do" : "repeat"; };
+  auto loopOf = [&](const Loop& loop, std::size_t depth) {
+    return Open{fmt::format("{} {}", shown(loop.label), keyword(loop.kind)), loop.opened, depth};
+  };
+  std::vector<Open> out;
+  std::size_t loop = 0;
+  for (std::size_t depth = 0; depth < frames_.size(); ++depth) {
+    const Frame& f = frames_[depth];
+    for (; loop < f.loops; ++loop) out.push_back(loopOf(loops_[loop], depth));
+    const std::string what = !f.program ? shown(f.label) + " call"
+                             : f.scoped ? "G65 P" + f.label.substr(1)
+                                        : "M98 P" + f.label.substr(1);
+    out.push_back(Open{what, f.at, depth, true});
+  }
+  for (; loop < loops_.size(); ++loop) out.push_back(loopOf(loops_[loop], frames_.size()));
   return out;
 }
 

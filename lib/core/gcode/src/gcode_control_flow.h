@@ -27,9 +27,9 @@ bool isOWordLine(const char* begin, const char* end);
 
 class ControlFlow {
  public:
-  // A subroutine may call others (and itself) this deep; a loop may run this many times.
+  // A subroutine may call others (and itself) this deep. How long loops run is bounded for the
+  // whole run, by the lines they read again (InterpreterOptions::maxLinesReadAgain).
   static constexpr std::size_t kMaxCallDepth = 200;
-  static constexpr std::uint64_t kMaxLoopIterations = 1000000;
 
   explicit ControlFlow(Parameters& parameters) : parameters_(parameters) {}
 
@@ -42,6 +42,8 @@ class ControlFlow {
   // Lines are being read past (a subroutine's body at its definition, a branch not taken, a
   // loop left): only O-word lines matter until the construct's end.
   bool skipping() const { return skip_.has_value(); }
+  // Lines are being read past in search of a subroutine or subprogram called.
+  bool searching() const { return skip_ && (skip_->target == SkipTo::FindSub || skip_->target == SkipTo::FindProgram); }
   // Some control flow was met: lines already read may be read again.
   bool seen() const { return seen_; }
   std::size_t callDepth() const { return frames_.size(); }
@@ -52,6 +54,16 @@ class ControlFlow {
     LinePosition back;
   };
   std::vector<Call> calls() const;
+  // The loops and calls in progress, outermost first: what ("o100 repeat", "M98 P1000"), the
+  // line it stands on (and the text it is in), and how many calls were in progress when it
+  // began (a call is in the calls before it: its own is counted after it).
+  struct Open {
+    std::string what;
+    LinePosition at;
+    std::size_t depth = 0;
+    bool call = false;
+  };
+  std::vector<Open> open() const;
 
   struct Outcome {
     bool ok = true;
@@ -94,7 +106,7 @@ class ControlFlow {
     Keyword kind;          // While, Do or Repeat
     LinePosition top;      // While: its own line (re-evaluated); Do and Repeat: the line after
     double remaining = 0;  // Repeat
-    std::uint64_t iterations = 0;
+    LinePosition opened;   // the while, do or repeat line
     std::size_t branches = 0;  // ifs open when it began: those opened inside close with it
   };
   struct Branch {
@@ -104,6 +116,7 @@ class ControlFlow {
   struct Frame {
     std::string label;
     LinePosition back;  // the line after the call
+    LinePosition at;    // the call's own line
     std::size_t loops = 0, branches = 0;
     bool program = false;      // a Fanuc subprogram (M98, G65): M99 returns
     bool scoped = true;        // parameters of its own (O-word calls, G65; not M98)
@@ -117,6 +130,7 @@ class ControlFlow {
     std::uint32_t fromLine = 0;
     std::vector<double> arguments;  // FindSub: the call's
     LinePosition back;              // FindSub, FindProgram: the line after the call
+    LinePosition at;                // FindSub, FindProgram: the call's own line
     std::vector<std::pair<int, double>> programArguments;  // FindProgram
     bool macro = false;
     long times = 1;
@@ -132,12 +146,12 @@ class ControlFlow {
   }
   Outcome executeSkipping(const OLine& o, LinePosition here, const char* end, LinePosition next, bool& resume);
   Outcome run(const OLine& o, LinePosition here, const char* end, LinePosition next);
-  Outcome call(const OLine& o, const char* end, LinePosition body, std::vector<double> arguments, LinePosition back);
+  Outcome call(const OLine& o, LinePosition body, std::vector<double> arguments, LinePosition at, LinePosition back);
   Outcome enterProgram(const Skip& request, LinePosition body);
-  Outcome loopEnd(const OLine& o, LinePosition here, const char* end);
+  Outcome loopEnd();
   bool condition(const OLine& o, const char* end, double& value, Outcome& outcome) const;
   Loop* findLoop(const std::string& label);
-  void beginLoop(const std::string& label, Keyword kind, LinePosition top, double remaining = 0);
+  void beginLoop(const std::string& label, Keyword kind, LinePosition top, LinePosition opened, double remaining = 0);
 
   Parameters& parameters_;
   FileFinder findFile_;

@@ -116,14 +116,6 @@ std::optional<LinePosition> FanucMacro::findEnd(int id, LinePosition from) const
   return std::nullopt;
 }
 
-bool FanucMacro::count(Outcome& out, std::uint32_t column) {
-  if (++jumps_ <= kMaxJumps) return true;
-  out.ok = false;
-  out.column = column;
-  out.message = fmt::format("over {} jumps (GOTO and loop rounds): a program that never ends?", kMaxJumps);
-  return false;
-}
-
 FanucMacro::Outcome FanucMacro::execute(LinePosition here, const char* end) {
   Outcome out;
   const char* p = pastBlockNumber(here.at, end);
@@ -153,7 +145,6 @@ FanucMacro::Outcome FanucMacro::execute(LinePosition here, const char* end) {
     if (!value(n)) return out;
     const auto target = findBlock(std::lround(n), next);
     if (!target) return error(fmt::format("GOTO {}: no block N{} in the program", std::lround(n), std::lround(n)));
-    if (!count(out, column)) return out;
     out.jump = target;
     return out;
   };
@@ -197,7 +188,6 @@ FanucMacro::Outcome FanucMacro::execute(LinePosition here, const char* end) {
     while (k > 0 && !(loops_[k - 1].id == id && loops_[k - 1].depth == depth_)) --k;
     if (k == 0) return error(fmt::format("END{} without its WHILE .. DO{}", id, id));
     loops_.resize(k);
-    if (!count(out, column)) return out;
     out.jump = loops_.back().top;
     return out;
   }

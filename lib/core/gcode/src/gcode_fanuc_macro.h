@@ -18,8 +18,6 @@ namespace isurface::gcode {
 
 class FanucMacro {
  public:
-  static constexpr std::uint64_t kMaxJumps = 10000000;  // GOTOs and loop rounds: a program that never ends
-
   explicit FanucMacro(const Parameters& parameters) : parameters_(parameters) {}
   void setText(const char* begin, const char* end) { begin_ = begin, end_ = end; }
 
@@ -40,6 +38,13 @@ class FanucMacro {
 
   // Subprogram calls in progress (M98, G65): a loop belongs to the call it began in, and those of
   // a call that returned (M99) are over.
+  // The WHILE loops running, outermost first.
+  std::vector<ControlFlow::Open> openLoops() const {
+    std::vector<ControlFlow::Open> out;
+    for (const Loop& loop : loops_) out.push_back({"WHILE .. DO" + std::to_string(loop.id), loop.top, loop.depth});
+    return out;
+  }
+
   void setCallDepth(std::size_t depth) {
     depth_ = depth;
     while (!loops_.empty() && loops_.back().depth > depth_) loops_.pop_back();
@@ -53,13 +58,11 @@ class FanucMacro {
   };
   std::optional<LinePosition> findBlock(long number, LinePosition from);
   std::optional<LinePosition> findEnd(int id, LinePosition from) const;
-  bool count(Outcome& out, std::uint32_t column);
 
   const Parameters& parameters_;
   const char* begin_ = nullptr;
   const char* end_ = nullptr;
   std::vector<Loop> loops_;
-  std::uint64_t jumps_ = 0;
   std::size_t depth_ = 0;
   // (the text, the line after the GOTO, the number): a subprogram file has lines of its own.
   std::map<std::tuple<const char*, std::uint32_t, long>, std::optional<LinePosition>> found_;

@@ -371,6 +371,9 @@ bool InterpreterState::executeBlock(const Block& block) {
     if (!moves_.empty()) moves_.back().flags |= kStopAfter;
     if (mCode[kMStop] == 20 || mCode[kMStop] == 300) ended_ = true;
   }
+  const bool frameCodes = nonModal == kG92 || nonModal == kG52 || nonModal == kG92_1 || nonModal == kG92_2 ||
+                          nonModal == kG92_3 || groups.has(kGroupRotation);
+  if (frameCodes) noteFrame();
   if (mCode[kMSubprogram] >= 0) return subprogram(block, mCode[kMSubprogram]);
   return true;
 }

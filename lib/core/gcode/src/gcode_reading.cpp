@@ -113,6 +113,7 @@ void InterpreterState::run(std::string_view text) {
     const void* nl = std::memchr(p, '\n', static_cast<std::size_t>(textEnd_ - p));
     const char* lineEnd = nl ? static_cast<const char*>(nl) : textEnd_;
     ++line_;
+    if (!countLineRead(p, lineEnd)) break;
     if (flow_.skipping() && !isOWordLine(p, lineEnd)) {  // inside a construct read past
       p = lineEnd + 1;
       continue;
@@ -123,6 +124,7 @@ void InterpreterState::run(std::string_view text) {
     runLine(p, lineEnd);
     p = lineEnd + 1;
     if (jump_) {  // a loop, a call or a return: on from another line
+      noteJump(lineStart_, *jump_);
       p = jump_->at;
       enterTextOf(p);
       line_ = jump_->line - 1;
@@ -130,6 +132,7 @@ void InterpreterState::run(std::string_view text) {
     }
     if (sink_) {
       if (moves_.size() > chunkMoves_) deliverMoves(false);
+      if (sink_->stopped()) ended_ = true;  // its error is the run's: what follows is not read
       // Once a loop or a call may read lines again, the text stays.
       if (released_ && !flow_.seen() && p - releasedUpTo >= kReleaseBytes) released_(releasedUpTo = std::min(p, end));
     }

@@ -43,6 +43,15 @@ bool InterpreterState::setRotation(const Block& block, int code, std::uint32_t c
   return true;
 }
 
+void InterpreterState::noteFrame() {
+  if (sink_) return;
+  const CoordinateFrame frame{movesMade(), state_.offset, state_.rotation, state_.rotationCentre, state_.rotationPlane};
+  std::vector<CoordinateFrame>& frames = result_.program.frames;
+  if (frame.sameAs(frames.empty() ? CoordinateFrame{} : frames.back())) return;
+  if (!frames.empty() && frames.back().firstMove == frame.firstMove) frames.back() = frame;
+  else frames.push_back(frame);
+}
+
 Vec3 InterpreterState::rotatedVector(const Vec3& v) const {
   if (state_.rotation == 0) return v;
   const PlaneAxes ax = planeAxes(state_.rotationPlane);

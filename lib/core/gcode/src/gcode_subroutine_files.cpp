@@ -57,9 +57,9 @@ std::optional<LinePosition> InterpreterState::findSubroutineFile(const std::stri
 }
 
 void InterpreterState::enterTextOf(const char* at) {
-  const SubroutineFile* now = nullptr;
+  SubroutineFile* now = nullptr;
   if (!(at >= mainText_.begin && at <= mainText_.end)) {
-    for (const SubroutineFile& file : files_)
+    for (SubroutineFile& file : files_)
       if (at >= file.text.data() && at <= file.text.data() + file.text.size()) now = &file;
   }
   if (now == reading_) return;
@@ -76,7 +76,7 @@ void InterpreterState::enterTextOf(const char* at) {
 
 std::optional<LinePosition> InterpreterState::blockInTextOf(long number, LinePosition from) {
   // Looked for in the caller's text; the text being read (and named in messages) stays this one.
-  const SubroutineFile* const before = reading_;
+  SubroutineFile* const before = reading_;
   const std::string sourceBefore = source_;
   const char* const endBefore = textEnd_;
   const std::uint32_t callLine = callLine_;

@@ -177,6 +177,8 @@ class InterpreterState {
   Vec3 rotated(const Vec3& p) const;
   Vec3 unrotated(const Vec3& p) const;
   Vec3 rotatedVector(const Vec3& v) const;
+  // Program::frames told of a change of G92 / G52 offset or G68 rotation (not when streaming).
+  void noteFrame();
   bool hasAxisWords(const Block& block) const;
   bool straight(const Block& block, int motion, std::uint32_t column);
   bool arc(const Block& block, int motion, std::uint32_t column);
@@ -218,6 +220,32 @@ class InterpreterState {
   // Tells options_.callStack the calls the next move is made in.
   void reportCallStack() const;
 
+  // gcode_run_bound.cpp: the run's bound on lines read again (InterpreterOptions::
+  // maxLinesReadAgain): the lines read, executed or read past, may outnumber the lines of the
+  // texts by that much. Lines read in search of a subroutine or subprogram are not counted (a
+  // label is searched for once): a Fanuc program whose subprograms follow its M30 reads its
+  // main part once as blocks. Counts the line from `p` to `lineEnd` in the text being read;
+  // false (with the error) once the bound is passed.
+  bool countLineRead(const char* p, const char* lineEnd) {
+    const char*& readUpTo = reading_ ? reading_->readUpTo : mainReadUpTo_;
+    if (!readUpTo || p > readUpTo) readUpTo = lineEnd, ++linesOfTexts_;
+    if (!flow_.searching()) ++linesRead_;
+    return linesRead_ <= linesOfTexts_ + options_.maxLinesReadAgain || stopNeverEnding();
+  }
+  bool stopNeverEnding();
+  // The path of the text `at` points into: the main program's or a subroutine file's.
+  const std::string& pathOfText(const char* at) const;
+  // Where the last jump back went from and to (a loop's end, M99, GOTO), in the text read.
+  struct SubroutineFile;
+  struct JumpBack {
+    const SubroutineFile* file = nullptr;  // null: the main text
+    std::uint32_t from = 0, to = 0;
+  };
+  void noteJump(LinePosition from, LinePosition to) {
+    if (to.at <= from.at && to.at >= (reading_ ? reading_->text.data() : mainText_.begin))
+      lastJumpBack_ = JumpBack{reading_, from.line, to.line};
+  }
+
   const InterpreterOptions& options_;
   InterpretResult& result_;
   std::vector<Move>& moves_;
@@ -243,6 +271,7 @@ class InterpreterState {
   struct SubroutineFile {
     std::string path;
     std::string text;
+    const char* readUpTo = nullptr;  // the end of the furthest line read in it
   };
   struct TextSpan {
     const char* begin = nullptr;
@@ -251,7 +280,7 @@ class InterpreterState {
   TextSpan mainText_;
   std::string lineFedText_;  // the main text, when its lines end in lone carriage returns
   std::deque<SubroutineFile> files_;
-  const SubroutineFile* reading_ = nullptr;  // null: the main text
+  SubroutineFile* reading_ = nullptr;        // null: the main text
   const char* textEnd_ = nullptr;            // the end of the text being read
   std::uint32_t callLine_ = 0;               // while in a file: the main text's calling line
   const char* mainLeftAt_ = nullptr;         // the main text's line after that call
@@ -272,6 +301,10 @@ class InterpreterState {
   std::size_t chunkMoves_ = 0;
   std::uint64_t delivered_ = 0;
   std::function<void(const char*)> released_;
+  // The run's bound (gcode_run_bound.cpp).
+  const char* mainReadUpTo_ = nullptr;  // the end of the furthest line read in the main text
+  std::uint64_t linesRead_ = 0, linesOfTexts_ = 0;  // the second: each line once, when first reached
+  std::optional<JumpBack> lastJumpBack_;
 };
 
 // Formats a length for messages: 4 decimals.

@@ -118,7 +118,8 @@ std::vector<std::vector<std::size_t>> findRuns(const Program& program, const std
       const Vec3 a = (previous.end - program.startOf(run.back())).normalized();
       const Vec3 b = (m.end - program.startOf(i)).normalized();
       const Vec3 main = program.moves[run.front()].end - program.startOf(run.front());
-      const bool consecutive = m.line == previous.line + 1;
+      // A run is written in one frame (G92 / G52 offset, G68 rotation): a change ends it.
+      const bool consecutive = m.line == previous.line + 1 && program.frameOf(i).sameAs(program.frameOf(run.back()));
       const bool corner = onlyCornersInPlanEndRuns ? sharpTurnInPlan(a, b) : a.dot(b) < 0.5;
       const bool turnsBack = main.x() * b.x() + main.y() * b.y() < 0;
       if (!consecutive || corner || turnsBack || m.feed != previous.feed) close();
@@ -249,8 +250,14 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     // rounding keeps them on it. (The paper's fit is written as it is: placed so, its runs on
     // samples/wuzhishan.nc ran 4 % faster instead of 2 % and the servo deviated 6 % more. A
     // taut or rounded path keeps corners a parabola would cut.)
+    // The points were fitted on the moves, in workpiece coordinates; the blocks say them in the
+    // program's own, under the G92 / G52 offset and G68 rotation in effect there.
+    const CoordinateFrame frame = program.frameOf(run.front());
+    std::vector<Vec3> inProgram(moves.points.size());
+    std::transform(moves.points.begin(), moves.points.end(), inProgram.begin(),
+                   [&](const Vec3& p) { return frame.toProgram(p); });
     const std::vector<Vec3> onGrid =
-        options.shape == PathShape::Eased ? pointsOnGrid(moves.points, units.grid()) : moves.points;
+        options.shape == PathShape::Eased ? pointsOnGrid(inProgram, units.grid()) : inProgram;
     std::string current;
     for (std::size_t k = 1; k < moves.points.size(); ++k) {
       const std::string f = units.feed(moves.feeds[k - 1]);

@@ -26,8 +26,10 @@ struct StreamedSimulation {
 
 // Interprets and simulates a G-code file in bounded memory (interpretGcodeFileStream into a
 // StreamingSimulation) into a Biip file written atomically: nothing is left at `biipPath` when
-// the program has errors (returned, not thrown) or planning fails (InputError). Progress: the
-// fraction of the G-code read.
+// the program has errors (returned, not thrown) or planning fails (InputError), or the run
+// passes the machine's longest run (InputError: the interpretation stops there). A regular file
+// is read once before it is simulated, so that its errors (a program that never ends among them)
+// come before any sample. Progress: the fraction of the G-code read while simulating.
 StreamedSimulation simulateGcodeFileToBiip(const std::string& gcodePath, const Machine& machine,
                                            const std::string& biipPath, const InterpreterOptions& options = {});
 

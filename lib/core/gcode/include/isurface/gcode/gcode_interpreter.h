@@ -1,5 +1,6 @@
 #pragma once
 // RS274/NGC interpreter for real CAM output: turns G-code text into a Program of exact moves.
+#include <cstdint>
 #include <functional>
 #include <map>
 #include <string>
@@ -50,6 +51,12 @@ struct InterpreterOptions {
   // Fanuc M98 / G65 P1234 reads O1234 (or O1234.nc, .ngc, .txt). Reading a file adds the
   // program's own folder last.
   std::vector<std::string> subroutinePath;
+  // The bound on a run's loops, calls and jumps back: the lines they read again (executed or
+  // read past), over the whole run: the lines read may outnumber the program's by this much. A program that goes past it is taken to never end, and its
+  // interpretation stops with an error naming the loops and calls in progress. Real programs
+  // read at most a few million lines again; a never-ending one reaches this in seconds.
+  std::uint64_t maxLinesReadAgain = kDefaultMaxLinesReadAgain;
+  static constexpr std::uint64_t kDefaultMaxLinesReadAgain = 10000000;
   // When set, told the call stack of every move made (its index in the program and, outermost
   // first, "LINE name" of each call in progress joined by " > ", with "file:" before the line
   // when the call stands in a subroutine file; empty outside any call). Moves of a block found bad are made

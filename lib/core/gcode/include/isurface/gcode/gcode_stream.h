@@ -28,6 +28,9 @@ class MoveSink {
   }
   // G64's tolerances from move `blending.firstMove` on; told before that move is consumed.
   virtual void blendingChanged(const PathBlending& blending) { (void)blending; }
+  // True once the sink takes no more moves (its run is over: an error it keeps, a bound passed):
+  // the interpretation then stops, instead of making moves no one uses.
+  virtual bool stopped() const { return false; }
 };
 
 // What interpretGcodeStream leaves besides the moves: a Program without its moves.
@@ -46,7 +49,8 @@ constexpr std::size_t kDefaultMoveChunk = std::size_t{1} << 16;
 
 // Interprets text held in memory; moves reach `sink` in chunks of at most `chunkMoves` (>= 1),
 // the last one when the text has been read. An exception thrown by the sink stops the
-// interpretation and is passed on.
+// interpretation and is passed on; a sink that says it has stopped ends it too, the error being
+// the sink's to tell.
 StreamedInterpretation interpretGcodeStream(std::string_view text, const std::string& sourceName,
                                             MoveSink& sink, const InterpreterOptions& options = {},
                                             std::size_t chunkMoves = kDefaultMoveChunk);

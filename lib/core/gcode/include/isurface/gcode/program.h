@@ -1,6 +1,8 @@
 #pragma once
 // The interpreted program: a flat list of moves in absolute workpiece millimetres, each tied to
 // the physical source line that produced it. Arcs stay exact (centre, plane, turns).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -33,6 +35,35 @@ struct PathBlending {
   double merge = 0;
 };
 
+// The program's own coordinate frame from a move on: G92 / G52's offset and G68's rotation.
+// The moves are in workpiece coordinates; a point the program writes (X Y Z of a block) is
+// toProgram() of the workpiece point it reaches. (Work offsets G54-G59 are not modelled: the
+// workpiece's coordinates are G54's.)
+struct CoordinateFrame {
+  std::uint64_t firstMove = 0;
+  Vec3 offset = Vec3::Zero();          // mm: the program's coordinates plus this are the workpiece's
+  double rotation = 0;                 // radians, counter-clockwise about the plane's normal
+  Vec3 rotationCentre = Vec3::Zero();  // program coordinates, mm
+  Plane rotationPlane = Plane::XY;
+
+  bool sameAs(const CoordinateFrame& other) const {
+    return offset == other.offset && rotation == other.rotation && rotationCentre == other.rotationCentre &&
+           rotationPlane == other.rotationPlane;
+  }
+  // A workpiece point in the program's coordinates: turned back about the centre, less the offset.
+  Vec3 toProgram(const Vec3& workpiece) const {
+    Vec3 d = workpiece - (rotationCentre + offset);
+    if (rotation != 0) {
+      const PlaneAxes ax = planeAxes(rotationPlane);
+      const double c = std::cos(rotation), s = std::sin(rotation);
+      const double u = c * d[ax.u] + s * d[ax.v], v = -s * d[ax.u] + c * d[ax.v];
+      d[ax.u] = u;
+      d[ax.v] = v;
+    }
+    return d + rotationCentre;
+  }
+};
+
 // 64 bytes. The start of a move is the end of the previous one (Program::start for the first).
 struct Move {
   Vec3 end = Vec3::Zero();     // mm
@@ -57,10 +88,17 @@ struct Program {
   std::vector<Move> moves;
   std::vector<Diagnostic> warnings; // non-fatal notes (e.g. cutter compensation ignored)
   std::vector<PathBlending> blending; // each G64 that changed the tolerances, in move order
+  std::vector<CoordinateFrame> frames; // each change of G92 / G52 / G68, in move order; none: no offset
   std::uint32_t lineCount = 0;      // physical lines in the source
   bool inch = false;                // written in inches: the first G20/G21 was G20 (or the control's default)
 
   const Vec3& startOf(std::size_t i) const { return i == 0 ? start : moves[i - 1].end; }
+  // The frame move `i` was programmed in.
+  CoordinateFrame frameOf(std::size_t i) const {
+    const auto after = std::upper_bound(frames.begin(), frames.end(), i,
+                                        [](std::size_t move, const CoordinateFrame& f) { return move < f.firstMove; });
+    return after == frames.begin() ? CoordinateFrame{} : *(after - 1);
+  }
 };
 
 }  // namespace isurface

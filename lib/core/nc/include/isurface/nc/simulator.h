@@ -40,10 +40,13 @@ class StreamingSimulation : public MoveSink {
                       const StreamingFeedPlanner::Window& window = {});
   ~StreamingSimulation() override;
 
-  // An InputError of planning (or of the sink: a full disk) is kept, not thrown, so that the
-  // interpreter can go on to report the program's own errors first; later moves are ignored.
+  // An InputError of planning (or of the sink: a full disk) is kept, not thrown, and finish()
+  // throws it; stopped() then tells the interpreter to read no more, and later moves are ignored.
   void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override;
   void blendingChanged(const PathBlending& blending) override;
+  // Once planning has failed or the run has passed the machine's longest run: the moves after
+  // are not wanted, and the interpretation stops.
+  bool stopped() const override { return simulationError_.has_value(); }
   // After the last move: the rest of the samples. Throws the error kept by consume(), if any.
   SimulationReport finish();
 
