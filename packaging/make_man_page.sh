@@ -11,7 +11,7 @@ roff_verbatim() {
 }
 
 help=$("$program" --help | sed "s|$program|$name|g")
-summary=$(printf '%s\n' "$help" | head -n 1)
+summary=${help%%$'\n'*}  # the first line, without a pipe whose reader may close it early
 {
   printf '.TH %s 1 "" "%s %s" "User Commands"\n' "$(printf '%s' "$name" | tr '[:lower:]' '[:upper:]')" "$name" "$version"
   printf '.SH NAME\n%s \\- %s\n' "$name" "$(printf '%s' "$summary" | sed 's/^[^:]*: //' | roff_verbatim)"
