@@ -18,6 +18,7 @@
 #include "isurface/machine/machine.h"
 #include "isurface/nc/sample_trajectory.h"
 #include "isurface/nc/simulator.h"
+#include "motion_checks.h"
 #include "isurface/workflow/file_kinds.h"
 #include "test_locations.h"
 #include "test_support.h"
@@ -49,8 +50,8 @@ struct Agreement {
 };
 
 // `program`: the G-code the recording `name` in `folder` ran.
-Agreement agreement(const fs::path& program, const std::string& name, const fs::path& folder) {
-  const Machine machine = loadMachine(linuxcncSim());
+Agreement agreement(const fs::path& program, const std::string& name, const fs::path& folder,
+                    const Machine& machine = loadMachine(linuxcncSim())) {
   const InterpretResult read = interpretGcodeFile(program.string());
   EXPECT_TRUE(read.ok());
   TrajectorySink sink(machine.cycle, name, false);
@@ -185,6 +186,37 @@ TEST(linuxcncReferenceLong, linuxcncsFlowsnakeAgreesWithTheLinuxcnc29Control) {
   EXPECT_LT(std::abs(a.totalDifference), b.total);
   EXPECT_LT(a.lineP90, b.lineP90);
   EXPECT_GT(a.speedWithin, b.speedWithin);
+}
+
+// The generic control (no jerk limit, the limits of the recordings' machine) on CAM chords whose
+// program asks no looser a tolerance than the machine's (G64 P0.01): it blends the chords within
+// its tolerance as LinuxCNC does, and runs each within 6 % of LinuxCNC's time (before blends:
+// 2-50 % slower, braking at every chord junction). Its path stays within the machine's tolerance.
+TEST(genericControl, holdsTheFeedOnCamChordsAsLinuxCncDoes) {
+  Machine machine = loadMachine(linuxcncSim());
+  machine.control.planner = TrajectoryPlanner::Generic;
+  const fs::path independent = fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-independent";
+  const std::vector<std::pair<fs::path, std::string>> programs = {
+      {dataDir(), "chords_tol001_f3000_p001"}, {dataDir(), "bump_raster_chords_p001_f3000"},
+      {independent, "T0"}, {independent, "T1"}, {independent, "T2"},
+      {independent, "T3"}, {independent, "T6"}, {independent, "T7"}};
+  for (const auto& [folder, name] : programs) {
+    const InterpretResult read = interpretGcodeFile((folder / (name + ".ngc")).string());
+    ASSERT_TRUE(read.ok()) << name;
+    test::MotionChecker checker(read.program, machine, 20);
+    TrajectorySink sink(machine.cycle, name, false);
+    simulate(read.program, machine, sink);
+    const double simulated = motionSpan(sink.take());
+    const double recorded = motionSpan(recording(name, folder));
+    simulate(read.program, machine, checker);
+    const test::MotionExtremes extremes = checker.finish();
+    std::printf("%-32s LinuxCNC %.3f s, the generic control %.3f s (%+.2f %%), deviation %.4f mm\n", name.c_str(),
+                recorded, simulated, 100 * (simulated / recorded - 1), extremes.maxDeviation);
+    EXPECT_LT(std::abs(simulated / recorded - 1), 0.06) << name;
+    EXPECT_LE(extremes.maxDeviation, machine.chordTolerance * test::kLimitTolerance) << name;
+    EXPECT_LE(extremes.velocityRatio, test::kLimitTolerance) << name;
+    EXPECT_LE(extremes.accelerationRatio, test::kLimitTolerance) << name;
+  }
 }
 
 }  // namespace

@@ -11,6 +11,9 @@
 #include "isurface/base/units.h"
 #include "isurface/gcode/path_segment.h"
 
+#include "corner_blend.h"
+#include "generic_limits.h"
+
 #include <fmt/format.h>
 
 namespace isurface {
@@ -18,62 +21,12 @@ namespace isurface {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-// No curve's own limit is lower than this (mm/s): degenerate geometry (a 1e-9 mm arc) must
-// still be passed in finite time, not skipped. Programmed feeds have no floor.
-constexpr double kSlowestSpeed = 0.1;
 // A single move or dwell longer than this (s) is a mistake in the program, not machining: it
 // would make billions of samples.
 constexpr double kLongestMove = 24 * 3600.0;
 
 std::string speedName(float feedMmMin) {
   return feedMmMin < 0 ? std::string("at the machine's rapid speed") : fmt::format("at F{:g}", feedMmMin);
-}
-
-// Odd number of cycles closest to a filter time, at least 1.
-int filterTaps(double time, double cycle) {
-  const int half = static_cast<int>(std::lround(time / (2.0 * cycle)));
-  return 2 * std::max(half, 0) + 1;
-}
-
-struct FilterTimes {
-  double t1 = 0, t2 = 0;
-};
-
-FilterTimes chooseFilters(const Machine& machine, const LimitBudget& budget) {
-  FilterTimes f;
-  if (machine.jerkLimited()) {
-    // A ramp of acceleration a, averaged over T1, changes acceleration at 2a/T1 at most (from
-    // +a to -a): with the tangential shares of acceleration and jerk, T1 is the rise time a/j
-    // scaled by 2 a-share / j-share. The rise time is the control's setting, lengthened where the
-    // axes' own a/j is longer: a lower acceleration leaves T1 as it is, a lower jerk lengthens it.
-    const double rise = std::max(machine.control.accelerationRiseTime, largestRiseTime(machine));
-    f.t1 = 2.0 * budget.tangentialAccel / budget.tangentialJerk * rise;
-  }
-  // The corner filter spreads a corner's velocity step; a few cycles at least even without a
-  // jerk limit, so that a corner is not a one-cycle acceleration spike.
-  f.t2 = std::max(0.25 * f.t1, 5.0 * machine.cycle);
-  const int n1 = filterTaps(f.t1, machine.cycle), n2 = filterTaps(f.t2, machine.cycle);
-  f.t1 = n1 > 1 ? n1 * machine.cycle : 0;
-  f.t2 = n2 * machine.cycle;
-  return f;
-}
-
-double minAcceleration(const Machine& m) {
-  return std::min({m.axes[0].maxAcceleration, m.axes[1].maxAcceleration, m.axes[2].maxAcceleration});
-}
-double minJerk(const Machine& m) {
-  return std::min({m.axes[0].maxJerk, m.axes[1].maxJerk, m.axes[2].maxJerk});
-}
-
-// Largest speed at which a direction (unit or not) keeps every axis within `perAxis(i)`.
-template <typename PerAxis>
-double projectedLimit(const Vec3& direction, PerAxis perAxis) {
-  double limit = kInfinity;
-  for (int i = 0; i < 3; ++i) {
-    const double c = std::abs(direction[i]);
-    if (c > kRatioEpsilon) limit = std::min(limit, perAxis(i) / c);
-  }
-  return limit;
 }
 
 // Plans move by move. Each segment is first "closed" once the next one is known (its end
@@ -85,22 +38,10 @@ double projectedLimit(const Vec3& direction, PerAxis perAxis) {
 class Planner {
  public:
   Planner(const Machine& machine, const LimitBudget& budget, std::string source)
-      : machine_(machine), budget_(budget), source_(std::move(source)) {
-    const FilterTimes f = chooseFilters(machine, budget);
-    t1_ = f.t1;
-    t2_ = f.t2;
-    smoothingTolerance_ = budget.cornerTolerance * machine.chordTolerance;
-    settleTime_ = t1_ + t2_;
-    for (int a = 0; a < 3; ++a) {
-      const AxisLimits& axis = machine.axes[a];
-      filterAccel_[a] = machine.jerkLimited() ? 0.5 * budget.tangentialJerk * axis.maxJerk * t1_
-                                              : budget.tangentialAccel * axis.maxAcceleration;
-      rampAccel_[a] = std::min(budget.tangentialAccel * axis.maxAcceleration, filterAccel_[a]);
-    }
-  }
+      : machine_(machine), budget_(budget), source_(std::move(source)), limits_(machine, budget) {}
 
-  double filterTime1() const { return t1_; }
-  double filterTime2() const { return t2_; }
+  double filterTime1() const { return limits_.filterTime1(); }
+  double filterTime2() const { return limits_.filterTime2(); }
   double holdBefore() const { return holdBefore_; }
   std::size_t held() const { return window_.size() - head_; }
   std::size_t forcedCommits() const { return forcedCommits_; }
@@ -122,14 +63,27 @@ class Planner {
     }
     const PathSegment seg = PathSegment::from(start, move);
     if (seg.length > 0) {
+      double reach = 0;
       if (segments_ > 0) {
         double hold = 0;
-        const double limit = junctionLimit(previous_, seg, window_.back().planned.accel, hold);
-        if (limit > 0) junctionLimit_ = std::min(junctionLimit_, limit);
-        else stopAtJunction(hold);
+        const double limit = limits_.cornerLimit(previous_, seg, window_.back().planned.accel, hold, junctionRadius_);
+        // A blend where it passes the corner faster than the filters' rounding of it does; none
+        // at a rapid or where a stop is planned.
+        const bool blendable = !stopped_ && junctionLimit_ > 0 && !previousRapid_ && move.kind != MoveKind::Rapid;
+        const BlendChoice blend = blendable ? limits_.blendAt(previous_, seg, move) : BlendChoice{};
+        if (blend.reach > 0 && blend.speed > limit) {
+          reach = blend.reach;
+          junctionRadius_ = kInfinity;
+          addBlend(index, move, seg, blend);
+        } else if (limit > 0) {
+          junctionLimit_ = std::min(junctionLimit_, limit);
+        } else {
+          stopAtJunction(hold);
+        }
       }
-      addSegment(index, move, seg);
+      addSegment(index, move, reach > 0 ? shortenedLine(seg, reach, 0.0) : seg, reach);
       previous_ = seg;
+      previousRapid_ = move.kind == MoveKind::Rapid;
     }
     if (move.flags & (kExactStop | kStopAfter)) stopAtJunction();
   }
@@ -219,7 +173,7 @@ class Planner {
   // until the filters have drained, so that the corner is reached exactly (an exact stop, as
   // in-position checking does).
   void stopAtJunction(double hold = -1) {
-    if (hold < 0) hold = settleTime_;
+    if (hold < 0) hold = limits_.settleTime();
     junctionLimit_ = 0.0;
     if (segments_ > 0) {
       double& planned = window_.back().planned.holdAfter;
@@ -228,41 +182,51 @@ class Planner {
     stopped_ = true;
   }
 
-  void addSegment(std::uint32_t index, const Move& move, const PathSegment& seg) {
+  // The blend at the corner where `out` (move `index`) starts: the last segment gives up its
+  // reach at its end.
+  void addBlend(std::uint32_t index, const Move& move, const PathSegment& out, const BlendChoice& choice) {
+    const CornerBlend blend = *CornerBlend::at(out.start, previous_.direction, out.direction, choice.reach);
+    PlannedSegment& before = window_.back().planned;
+    before.length = std::max(0.0, before.length - choice.reach);
+    before.trimEnd = choice.reach;
+    Entry e;
+    PlannedSegment& ps = e.planned;
+    ps.move = index;
+    ps.length = blend.length();
+    ps.cornerReach = choice.reach;
+    ps.accel = limits_.blendAccel(blend);
+    e.centripetal = choice.speed * choice.speed / blend.radius();
+    append(e, move, choice.speed, limits_.curveAccelLimit(blend.radius(), choice.filterTolerance));
+  }
+
+  void addSegment(std::uint32_t index, const Move& move, const PathSegment& seg, double trimStart) {
     Entry e;
     PlannedSegment& ps = e.planned;
     ps.move = index;
     ps.length = seg.length;
-    double speed = move.kind == MoveKind::Rapid
-                       ? machine_.rapidVelocity
-                       : mmPerMinToMmPerS(static_cast<double>(move.feed));
-    if (seg.arc) {
-      const ArcGeometry& g = seg.arcGeometry;
-      const auto& ax = machine_.axes;
-      // Both plane axes reach the full tangential speed somewhere on the arc.
-      const double planeVelocity = std::min(ax[g.axes.u].maxVelocity, ax[g.axes.v].maxVelocity);
-      const double planeAccel = std::min(ax[g.axes.u].maxAcceleration, ax[g.axes.v].maxAcceleration);
-      const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
-      speed = std::min(speed, planeVelocity);
-      if (pitch > kRatioEpsilon) speed = std::min(speed, ax[g.axes.w].maxVelocity / pitch);
-      speed = std::min(speed, curvatureLimit(g.minRadius(), planeAccel,
-                                              std::min(filterAccel_[g.axes.u], filterAccel_[g.axes.v]), true));
-    } else {
-      speed = std::min(speed, projectedLimit(seg.direction, [&](int a) { return machine_.axes[a].maxVelocity; }));
-    }
+    ps.trimStart = trimStart;
+    const double speed = limits_.segmentSpeed(seg, move);
     // The feed and the axes' speeds are honoured however slow; only a curve's own limits have a
     // floor (kSlowestSpeed), so that degenerate geometry is still passed in finite time.
     if (!(speed > 0))
       throw InputError(Diagnostic{source_, move.line, move.column,
                                   move.kind == MoveKind::Rapid ? "the machine's rapid speed is not above 0"
                                                                : fmt::format("feed F{:g} is not above 0", move.feed)});
+    ps.accel = limits_.tangentialAccel(seg);
+    e.centripetal = seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0;
+    append(e, move, speed,
+           seg.arc ? limits_.curveAccelLimit(seg.arcGeometry.minRadius(), limits_.smoothingTolerance()) : kInfinity);
+  }
+
+  // Adds a segment whose geometry's limits are set in `e` (its length, ramps' acceleration and
+  // centripetal acceleration): its speed limit `speed` (mm/s) and ramps' limit `accelCap`.
+  void append(Entry& e, const Move& move, double speed, double accelCap) {
+    PlannedSegment& ps = e.planned;
     ps.peakSpeed = speed;  // the cap until commit() settles the profile
     ps.cap = speed;
-    ps.accel = tangentialAccel(seg);
     e.axisAccel = ps.accel / budget_.tangentialAccel;
-    e.accelCap = seg.arc ? curveAccelLimit(seg.arcGeometry.minRadius()) : kInfinity;
+    e.accelCap = accelCap;
     ps.accel = std::min(ps.accel, e.accelCap);
-    e.centripetal = seg.arc ? speed * speed / std::max(seg.arcGeometry.minRadius(), kLengthEpsilon) : 0.0;
     e.entryRadius = junctionRadius_;
     if (segments_ == 0) {
       ps.entryLimit = 0.0;  // the machine starts at rest
@@ -313,120 +277,18 @@ class Planner {
     }
   }
 
-  // The acceleration along the path that keeps every axis within its share, mm/s^2.
-  double tangentialAccel(const PathSegment& seg) const {
-    if (!seg.arc) return projectedLimit(seg.direction, [&](int a) { return rampAccel_[a]; });
-    const ArcGeometry& g = seg.arcGeometry;
-    double accel = std::min(rampAccel_[g.axes.u], rampAccel_[g.axes.v]);
-    const double pitch = seg.length > 0 ? std::abs(g.endW - g.startW) / seg.length : 0;
-    if (pitch > kRatioEpsilon) accel = std::min(accel, rampAccel_[g.axes.w] / pitch);
-    return accel;
-  }
-
-  // Speed limit on a curve of radius r (mm): centripetal acceleration and its turning rate,
-  // the deviation the filters cause on a curve, and (arcs) the chord error between samples.
-  // `accel`: the axes' acceleration in the curve's plane; `rampBound`: the most its ramps may use
-  // (filterAccel_). `onArc`: an exact arc, whose ramps addSegment holds within curveAccelLimit;
-  // else the radius through three points of short G1 moves.
-  double curvatureLimit(double radius, double accel, double rampBound, bool onArc) const {
-    if (!(radius > kLengthEpsilon)) return kSlowestSpeed;
-    if (!std::isfinite(radius)) return kInfinity;
-    double v = std::sqrt(budget_.normalAccel * accel * radius);
-    if (machine_.jerkLimited()) v = std::min(v, std::cbrt(budget_.normalJerk * minJerk(machine_) * radius * radius));
-    // A curve of radius r traversed at v with tangential acceleration a, averaged over the
-    // filters (S = U1 + U2, U uniform over T1 and T2), falls inside by
-    // E[(v S + a S^2 / 2)^2] / (2 r) = (v^2 E[S^2] + a^2 E[S^4] / 4) / (2 r).
-    // On an arc the ramps are held within curveAccelLimit (addSegment), so that at least half
-    // the tolerance is left for the speed: an arc of 0.3 mm is passed at a few hundred mm/min,
-    // not at a crawl.
-    const double s2 = (t1_ * t1_ + t2_ * t2_) / 12.0;
-    if (s2 > 0) {
-      const double a = std::min(rampBound, onArc ? curveAccelLimit(radius) : kInfinity);
-      const double room = 2.0 * radius * smoothingTolerance_ - a * a * filterMoment4() / 4.0;
-      v = std::min(v, room > 0 ? std::sqrt(room / s2) : kSlowestSpeed);
-    }
-    const double e = machine_.chordTolerance;
-    if (onArc && 2.0 * radius > e)
-      v = std::min(v, 2.0 * std::sqrt(2.0 * radius * e - e * e) / machine_.cycle);
-    return v;
-  }
-
-  // E[S^4] of the filters' combined delay S = U1 + U2 (U uniform over T1 and T2), s^4.
-  double filterMoment4() const {
-    return std::pow(t1_, 4) / 80.0 + std::pow(t2_, 4) / 80.0 + t1_ * t1_ * t2_ * t2_ / 24.0;
-  }
-
-  // The tangential acceleration (mm/s^2) on a curve of radius r (mm) whose share of the filters'
-  // deviation, a^2 E[S^4] / 4, is at most half the smoothing tolerance's 2 r tol.
-  double curveAccelLimit(double radius) const {
-    const double s4 = filterMoment4();
-    return s4 > 0 && radius > 0 ? 2.0 * std::sqrt(radius * smoothingTolerance_ / s4) : kInfinity;
-  }
-
-  // 0 means the corner is too sharp to pass in motion: stop there for `hold` seconds.
-  double junctionLimit(const PathSegment& in, const PathSegment& out, double accelIn, double& hold) {
-    const Vec3 turn = out.startTangent() - in.endTangent();
-    const double turnNorm = turn.norm();
-    double v = kInfinity;
-    if (turnNorm > kRoundingSlack) {
-      // The velocity step v*|turn| at the corner, averaged by the filters, must fit the
-      // corner's share of acceleration and jerk, and the rounding must stay in tolerance.
-      const double spreadTime = std::max(t1_, t2_);
-      v = std::min(v, projectedLimit(turn, [&](int a) {
-                     return budget_.cornerAccel * machine_.axes[a].maxAcceleration * spreadTime;
-                   }));
-      if (machine_.jerkLimited() && t1_ > 0)
-        v = std::min(v, projectedLimit(turn, [&](int a) {
-                       return budget_.cornerJerk * machine_.axes[a].maxJerk * t1_ * t2_;
-                     }));
-      // Averaged over the filters, the samples around a corner passed at v with tangential
-      // acceleration up to a lie off the path by about
-      //   |turn| / 2 * (v (T1 + T2) / 4 + a (T1^2 + T2^2) / 24).
-      const double accel =
-          machine_.jerkLimited()
-              ? std::max(projectedLimit(in.endTangent(), [&](int a) { return filterAccel_[a]; }),
-                         projectedLimit(out.startTangent(), [&](int a) { return filterAccel_[a]; }))
-              : std::max(accelIn, tangentialAccel(out));
-      const double budget = 2.0 * smoothingTolerance_ / turnNorm - accel * (t1_ * t1_ + t2_ * t2_) / 24.0;
-      if (budget <= 0) {
-        // Stopped at the corner for h, the filters (width W = T1 + T2, taken as uniform, which
-        // overstates their tails) still mix in both legs where the ramps leave and join it:
-        // the samples fall off the corner by about sin(angle) a (W - h)^3 / (48 W).
-        const double width = t1_ + t2_;
-        const double sine = turnNorm * std::sqrt(std::max(0.0, 1.0 - 0.25 * turnNorm * turnNorm));
-        const double reach = sine > kRatioEpsilon ? std::cbrt(48.0 * width * smoothingTolerance_ / (accel * sine)) : width;
-        hold = std::clamp(width - reach, 0.0, width);
-        return 0.0;
-      }
-      v = std::min(v, 4.0 * budget / (t1_ + t2_));
-    }
-    if (!in.arc && !out.arc) {
-      // Short G1 moves approximate a curve: its radius from three points limits the speed.
-      const double radius = threePointRadius(in.start, in.end, out.end);
-      junctionRadius_ = radius;
-      v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), filterAccel_.minCoeff(), false));
-    }
-    return v;
-  }
-
   const Machine& machine_;
   const LimitBudget budget_;
   const std::string source_;
-  double t1_ = 0, t2_ = 0;
-  // mm/s^2 per axis: the most a ramp may use with the jerk filter T1 (the tangential share of
-  // jerk over T1 / 2; without a jerk limit, the tangential share of acceleration), which bounds
-  // the filters' deviation whatever the acceleration limits are; and what ramps use (also within
-  // the tangential share of acceleration).
-  Vec3 filterAccel_ = Vec3::Zero(), rampAccel_ = Vec3::Zero();
-  double settleTime_ = 0;  // s for the filters to drain
-  double smoothingTolerance_ = 0;
+  const GenericLimits limits_;
   double holdBefore_ = 0;  // s of dwell before the first motion
   bool stopped_ = false;   // a stop is already planned at the current junction
   bool finished_ = false;
   std::uint64_t segments_ = 0;        // segments added
   std::uint64_t closedSegments_ = 0;  // segments closed
   std::size_t forcedCommits_ = 0;
-  PathSegment previous_;              // the last segment added
+  PathSegment previous_;              // the last segment added (whole, before blends shortened it)
+  bool previousRapid_ = false;
   // The junction after the last segment added (before the first: the start), until the next
   // segment is added: its speed limit and, between lines, its three-point radius (mm).
   double junctionLimit_ = 0.0;        // the machine starts at rest

@@ -5,12 +5,15 @@
 #include <cmath>
 #include <deque>
 #include <memory>
+#include <optional>
 #include <limits>
 #include <vector>
 
 #include "isurface/base/units.h"
 #include "isurface/gcode/path_segment.h"
 #include "isurface/nc/servo.h"
+
+#include "corner_blend.h"
 
 namespace isurface {
 
@@ -94,7 +97,9 @@ struct QueuedSegment {
 // Walks the unfiltered profile one cycle at a time, over segments handed to it as they come.
 class ProfileWalker {
  public:
-  ProfileWalker(const Vec3& start, double holdBefore) : tau_(-holdBefore), last_(start) {}
+  // `rapidFeedMmMin`: the feed channel's value on a rapid.
+  ProfileWalker(const Vec3& start, double holdBefore, double rapidFeedMmMin)
+      : rapidFeedMmMin_(rapidFeedMmMin), tau_(-holdBefore), last_(start) {}
 
   void add(const QueuedSegment& segment) {
     queue_.push_back(segment);
@@ -109,7 +114,7 @@ class ProfileWalker {
     while (active_ && tau_ >= total_) {
       if (queue_.size() < 2 && !final) return false;
       tau_ -= total_;
-      last_ = geometry_.end;
+      last_ = geometry_.end();
       queue_.pop_front();
       if (queue_.empty()) {
         active_ = false;
@@ -123,24 +128,39 @@ class ProfileWalker {
 
   // Position at the current time; then `advance(cycle)`.
   Vec3 position() const { return active_ ? geometry_.at(distance()) : last_; }
-  SampleTag tag(double rapidFeedMmMin) const {
-    const QueuedSegment& q = queue_.front();
-    return SampleTag{q.move.line, q.planned.move,
-                     q.move.kind == MoveKind::Rapid ? rapidFeedMmMin : static_cast<double>(q.move.feed)};
+  // A corner blend's first half belongs to the move before it (it lies nearer that move's line).
+  SampleTag tag() const {
+    if (inBlend_ && distance() < 0.5 * queue_.front().planned.length) return tagBefore_;
+    return currentTag_;
+  }
+  // The program geometry of the move the tag names.
+  const PathSegment& moveGeometry(const SampleTag& tag) const {
+    return tag.block == queue_.front().planned.move ? move_ : moveBefore_;
   }
   void advance(double dt) { tau_ += dt; }
-  const PathSegment& geometry() const { return geometry_; }
 
  private:
   void enter() {
-    const PlannedSegment& s = queue_.front().planned;
-    geometry_ = PathSegment::from(queue_.front().start, queue_.front().move);
+    const QueuedSegment& q = queue_.front();
+    const PlannedSegment& s = q.planned;
+    if (s.move != currentMove_) {
+      moveBefore_ = move_;
+      tagBefore_ = currentTag_;
+      move_ = PathSegment::from(q.start, q.move);
+      currentMove_ = s.move;
+      currentTag_ = tagOf(q, rapidFeedMmMin_);
+    }
+    const std::optional<CornerBlend> blend =
+        s.cornerReach > 0 ? CornerBlend::at(q.start, incoming_, move_.direction, s.cornerReach) : std::nullopt;
+    inBlend_ = blend.has_value();
+    geometry_ = blend ? PathPiece(*blend) : PathPiece(shortenedLine(move_, s.trimStart, s.trimEnd));
+    incoming_ = geometry_.endTangent();
     tAccel_ = s.accelTime();
     tCruise_ = s.cruiseTime();
     tDecel_ = s.decelTime();
     total_ = tAccel_ + tCruise_ + tDecel_ + s.holdAfter;
     dAccel_ = s.accelDistance();
-    last_ = geometry_.end;
+    last_ = geometry_.end();
     active_ = true;
   }
 
@@ -161,7 +181,19 @@ class ProfileWalker {
 
   std::deque<QueuedSegment> queue_;  // the front is the segment being walked
   bool active_ = false, ended_ = false;
-  PathSegment geometry_;
+  static SampleTag tagOf(const QueuedSegment& q, double rapidFeedMmMin) {
+    return SampleTag{q.move.line, q.planned.move,
+                     q.move.kind == MoveKind::Rapid ? rapidFeedMmMin : static_cast<double>(q.move.feed)};
+  }
+
+  double rapidFeedMmMin_;
+  PathPiece geometry_;
+  Vec3 incoming_ = Vec3::Zero();  // the direction the last piece ended in
+  // The move being walked and the one before it (a blend's first half is labelled with it).
+  PathSegment move_, moveBefore_;
+  std::uint32_t currentMove_ = ~std::uint32_t{0};
+  SampleTag currentTag_{0, 0, 0}, tagBefore_{0, 0, 0};
+  bool inBlend_ = false;
   double tau_ = 0, total_ = 0;
   double tAccel_ = 0, tCruise_ = 0, tDecel_ = 0, dAccel_ = 0;
   Vec3 last_;
@@ -176,7 +208,7 @@ struct StreamingInterpolator::Impl {
         sink(s),
         feedback(s.wantsFeedback()),
         start(startPosition),
-        walker(startPosition, holdBefore),
+        walker(startPosition, holdBefore, mmPerSToMmPerMin(m.rapidVelocity)),
         holdBefore(holdBefore),
         jerkFilter(taps(filterTime1, m.cycle), startPosition),
         cornerFilter(taps(filterTime2, m.cycle), startPosition),
@@ -271,10 +303,10 @@ struct StreamingInterpolator::Impl {
       }
       if (!walker.active()) return;
       const std::uint32_t previousBlock = lastTag.block;
-      lastTag = walker.tag(mmPerSToMmPerMin(machine.rapidVelocity));
+      lastTag = walker.tag();
       // A ring as long as the tags' holds every segment a tag in the window can name.
       if (rawIndex == 0 || lastTag.block != previousBlock) {
-        const PathSegment& g = walker.geometry();
+        const PathSegment& g = walker.moveGeometry(lastTag);
         segments[++segmentsIn & ringMask()] = {lastTag.block, g, g.startTangent(), g.endTangent()};
       }
       lastTag.segment = segmentsIn;

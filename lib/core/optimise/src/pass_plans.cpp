@@ -155,8 +155,12 @@ std::vector<double> intervalFeeds(const OptimizeOptions& options, const Program&
   const double feedMmS = mmPerMinToMmPerS(feed);
   std::vector<double> atPoint(points.size(), feedMmS), ofSegment(points.size(), feedMmS);
   for (const PlannedSegment& s : plan.segments) {
-    ofSegment[s.move] = std::min(feedMmS, s.cap);  // segment k runs from point k to k + 1
-    if (s.move > 0) atPoint[s.move] = std::min(feedMmS, s.entryLimit);
+    if (s.cornerReach > 0) {
+      atPoint[s.move] = std::min(atPoint[s.move], s.cap);  // the blend at point k, where move k starts
+      continue;
+    }
+    ofSegment[s.move] = std::min(ofSegment[s.move], s.cap);  // segment k runs from point k to k + 1
+    if (s.move > 0) atPoint[s.move] = std::min(atPoint[s.move], s.entryLimit);
   }
   const std::vector<PlannedInterval> planned = planIntervalSpeeds(partition.intervals, feed, machine);
   const std::vector<double> ceilings = bendCeilings(options, program, run, moveOf, partition.intervals);

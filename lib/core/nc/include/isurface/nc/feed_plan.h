@@ -48,6 +48,12 @@ struct PlannedSegment {
   double holdAfter = 0;     // s of standstill after the segment (dwell)
   double cap = 0;           // mm/s, the segment's own speed limit (feed, axes, curvature)
   double entryLimit = 0;    // mm/s, the limit at its start junction before look-ahead
+  // The generic control's path smoothed within its tolerance: a line is shortened by the corner
+  // blends next to it (mm at each end); a segment with cornerReach > 0 is the blend arc at the
+  // start of its move, tangent to the line before and to its move, reaching this far (mm) along
+  // each from the corner.
+  double trimStart = 0, trimEnd = 0;
+  double cornerReach = 0;
 
   double accelTime() const { return accel > 0 ? (peakSpeed - entrySpeed) / accel : 0; }
   double decelTime() const { return accel > 0 ? (peakSpeed - exitSpeed) / accel : 0; }
