@@ -161,6 +161,22 @@ TEST(settings, BrokenFileGivesDefaults) {
   expectDefaults(loadSettings(folder));  // a folder, not a file
 }
 
+// The text on its own reads as the file does, and what is written reads back the same.
+TEST(settings, TextReadsAsTheFileAndComesBackUnchanged) {
+  expectDefaults(settingsFromText("{\"quantity\": \"jerk\","));
+  Settings s = settingsFromText(R"({"recent_files": ["/a.nc"], "theme": "light", "ui_scale": 1.5, "units": "mm"})");
+  EXPECT_EQ(s.recentFiles, (std::vector<std::string>{"/a.nc"}));
+  EXPECT_EQ(s.theme, "light");
+  EXPECT_FLOAT_EQ(s.uiScale, 1.5f);
+  EXPECT_EQ(s.units, "mm");
+  s.windowWidth = 333;
+  const Settings again = settingsFromText(settingsText(s));
+  EXPECT_EQ(again.recentFiles, s.recentFiles);
+  EXPECT_EQ(again.windowWidth, 333);
+  EXPECT_EQ(again.uiScale, s.uiScale);
+  EXPECT_EQ(again.units, "mm");
+}
+
 TEST(settings, WrongTypesFallBackOneByOne) {
   const std::string path = freshFolder("types") + "/settings.json";
   writeText(path, R"({"recent_files": ["/a.nc", 7, null, "/b.nc"], "quantity": 3, "color_map": "gray",

@@ -27,7 +27,7 @@ const std::string& scratchBase() {
   static const std::string* base = [] {
     auto* b = new std::string(scratchDirectory() + "/isurface-fuzz-" + std::to_string(::getpid()));
     std::atexit([] {
-      for (const char* suffix : {".biip", ".txt", ".csv", ".out.biip"})
+      for (const char* suffix : {".biip", ".txt", ".csv", ".out.biip", ".json"})
         std::remove((scratchBase() + suffix).c_str());
     });
     return b;

@@ -156,6 +156,52 @@ TEST(gcodeCycles, OtherPlanes) {
   EXPECT_EQ(p.moves[4].end, Vec3(1, 1, 2));  // G99: back to R
 }
 
+// LinuxCNC 2.9's G84 / G74 in G18 and G19 swaps the coordinates of its two feed moves; the
+// points are rs274's. The moves after the cycle are computed from the hole, as LinuxCNC does.
+TEST(gcodeCycles, TappingInG18AndG19AsLinuxcncRunsIt) {
+  InterpretResult r = run("G21 G18 G0 X0 Y2 Z0\nS100 M3\nG98 G84 X1 Z1 Y-1 R1 F100\nG91 X2 Z3 L2\nG90 G80 G0 X5\n");
+  ASSERT_TRUE(r.ok()) << r.errors[0].str();
+  ASSERT_EQ(r.program.moves.size(), 13u);
+  r.program.moves.pop_back();
+  expectMoves(r, 1,
+              {{'R', 1, 2, 1}, {'R', 1, 1, 1}, {'F', -1, 1, 1}, {'F', 2, 1, 1},
+               {'R', 1, 3, 1}, {'R', 3, 3, 4}, {'F', 2, 4, 3}, {'F', 3, 4, 3},
+               {'R', 5, 3, 7}, {'F', 2, 7, 5}, {'F', 3, 7, 5}});
+  ASSERT_EQ(r.program.warnings.size(), 1u);
+  EXPECT_NE(r.program.warnings[0].message.find("G84 in the XZ plane is expanded as LinuxCNC 2.9 runs it, not along Y"),
+            std::string::npos) << r.program.warnings[0].str();
+  EXPECT_EQ(run("G21 G18 G0 X0 Y2 Z0\nS100 M3\nG98 G84 X1 Z1 Y-1 R1 F100\nG90 G80 G0 X5\n").program.moves.back().end,
+            Vec3(5, 2, 1));
+
+  r = run("G21 G19 G0 X2 Y0 Z0\nS100 M4\nG99 G74 Y1 Z3 X-1 R1 P0.5 F100\n");
+  expectMoves(r, 1, {{'R', 2, 1, 3}, {'R', 1, 1, 3}, {'F', 3, -1, 1}, {'D', 3, -1, 1}, {'F', 3, 1, 1}});
+  ASSERT_EQ(r.program.warnings.size(), 1u);
+  EXPECT_NE(r.program.warnings[0].message.find("G74 in the YZ plane"), std::string::npos);
+
+  // A G92 offset applies after the swap.
+  r = run("G21 G18 G0 X0 Y2 Z0\nG92 X10 Y20 Z30\nS100 M3\nG98 G84 X11 Z31 Y19 R21 F100\n");
+  expectMoves(r, 1, {{'R', 0, 3, 0}, {'R', 1, 3, 1}, {'F', 9, 13, -19}, {'F', 11, 13, -19}});
+}
+
+TEST(gcodeCycles, ArcRightAfterALinuxcncSideTapIsRefused) {
+  const std::string tap = "G21 G18 G0 X0 Y2 Z0\nS100 M3\nG98 G84 X1 Z1 Y-1 R1 F100\nG80\n";
+  EXPECT_EQ(firstError(tap + "G2 X3 Z1 I1 K0\n"),
+            "t.ngc:5:1: Arc right after a G84 / G74 in G18 or G19: LinuxCNC starts it where the tap's last feed "
+            "ended, not over the hole; put a G0 or G1 between them");
+  EXPECT_TRUE(run(tap + "G0 Y2\nG2 X3 Z1 I1 K0\n").ok());
+}
+
+// A Fanuc control taps along the drilling axis of G18 and G19, as it drills there.
+TEST(gcodeCycles, FanucTapsAlongTheDrillingAxisInG18AndG19) {
+  InterpreterOptions fanuc;
+  fanuc.fanuc = true;
+  InterpretResult r = run("G21 G18 G0 X0 Y2 Z0\nS100 M3\nG98 G84 X1 Z1 Y-1 R1 F100\n", fanuc);
+  expectMoves(r, 1, {{'R', 1, 2, 1}, {'R', 1, 1, 1}, {'F', 1, -1, 1}, {'F', 1, 2, 1}});
+  EXPECT_TRUE(r.program.warnings.empty());
+  r = run("G21 G19 G0 X2 Y0 Z0\nS100 M4\nG99 G74 Y1 Z3 X-1 R1 F100\n", fanuc);
+  expectMoves(r, 1, {{'R', 2, 1, 3}, {'R', 1, 1, 3}, {'F', -1, 1, 3}, {'F', 1, 1, 3}});
+}
+
 TEST(gcodeCycles, Errors) {
   EXPECT_EQ(firstError("G18 G81 X1 Z1 R1 F100\n"),
             "t.ngc:1:5: Y value unspecified in XZ plane canned cycle");

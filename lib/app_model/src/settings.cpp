@@ -75,6 +75,11 @@ Settings loadSettings(const std::string& path) {
   } catch (const InputError&) {
     return settings;
   }
+  return settingsFromText(text);
+}
+
+Settings settingsFromText(const std::string& text) {
+  Settings settings;
   const nlohmann::json json = nlohmann::json::parse(text, nullptr, /*allow_exceptions=*/false);
   if (!json.is_object()) return settings;
 
@@ -99,8 +104,7 @@ Settings loadSettings(const std::string& path) {
   return settings;
 }
 
-bool saveSettings(const Settings& settings, const std::string& path) {
-  if (path.empty()) return false;
+std::string settingsText(const Settings& settings) {
   const nlohmann::json json = {
       {"recent_files", settings.recentFiles},
       {"quantity", settings.quantity},
@@ -111,11 +115,16 @@ bool saveSettings(const Settings& settings, const std::string& path) {
       {"ui_scale", settings.uiScale},
       {"units", settings.units},
   };
+  // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
+  return jsonText(json, 2) + "\n";
+}
+
+bool saveSettings(const Settings& settings, const std::string& path) {
+  if (path.empty()) return false;
   try {
     const std::filesystem::path parent = std::filesystem::path(path).parent_path();
     if (!parent.empty()) std::filesystem::create_directories(parent);
-    // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
-    writeFileAtomically(path, jsonText(json, 2) + "\n");
+    writeFileAtomically(path, settingsText(settings));
     return true;
   } catch (const std::exception&) {
     return false;

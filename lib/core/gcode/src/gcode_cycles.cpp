@@ -1,6 +1,6 @@
-// Canned cycles in the XY, XZ and YZ planes (drilling along Z, Y and X), expanded into rapid and feed moves the way RS274/NGC (LinuxCNC's
-// rs274) runs them: drilling G81 G82, pecking G73 G83, tapping G84 (right hand) and G74 (left
-// hand), boring G85 G86 G88 G89.
+// Canned cycles in the XY, XZ and YZ planes (drilling along Z, Y and X), expanded into rapid and
+// feed moves the way RS274/NGC (LinuxCNC's rs274) runs them: drilling G81 G82, pecking G73 G83,
+// tapping G84 (right hand) and G74 (left hand), boring G85 G86 G88 G89.
 #include <fmt/format.h>
 
 #include <cmath>
@@ -34,6 +34,21 @@ CycleAxes cycleAxes(Plane plane) {
   }
 }
 
+// Where LinuxCNC 2.9 sends a G84 / G74 feed move to `p` (program coordinates) in G18 or G19: its
+// tapping cycle hands the coordinates to the move in the wrong order, so the tap does not run
+// along the drilling axis (every other cycle there does).
+Vec3 linuxcncTapEnd(Plane plane, const Vec3& p) {
+  return plane == Plane::ZX ? Vec3(p.y(), p.z(), p.x()) : Vec3(p.z(), p.x(), p.y());
+}
+
+std::string linuxcncTapWarning(const std::string& name, const CycleAxes& ax) {
+  const char* axes = ax.c == 1 ? "X goes to the Y level, Y to the hole's Z and Z to the hole's X"
+                               : "X goes to the hole's Z, Y to the X level and Z to the hole's Y";
+  return fmt::format("{} in the {} plane is expanded as LinuxCNC 2.9 runs it, not along {}: in its feed "
+                     "moves {}; a Fanuc control (\"control\": {{\"dialect\": \"fanuc\"}}) taps along {}",
+                     name, ax.plane, kAxisLetter[ax.c], axes, kAxisLetter[ax.c]);
+}
+
 }  // namespace
 
 // The canned cycles G73 G76.. G89 as rs274 runs them: the checks, then the shared approach, then
@@ -41,10 +56,6 @@ CycleAxes cycleAxes(Plane plane) {
 bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t column) {
   const std::string name = fmt::format("G{}", motion / 10);
   const CycleAxes ax = cycleAxes(state_.plane);
-  // rs274 2.9 taps along the plane's first axis there, not the drilling one: no reading to follow.
-  if ((motion == kG84 || motion == kG74) && state_.plane != Plane::XY)
-    return fail(column, fmt::format("{}: tapping only in G17 (XY plane); LinuxCNC feeds along the wrong axis in {}",
-                                    name, ax.plane));
   const char cLetter = kAxisLetter[ax.c];
   if (state_.cutterComp != kG40)
     return fail(column, "Cannot use canned cycles with cutter radius compensation");
@@ -92,6 +103,9 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   if ((motion == kG84 || motion == kG74) && block.has('Q'))
     warnOnce(warnedPeckTapping_, block.col('Q'),
              fmt::format("{} with Q (peck tapping on Fanuc and Haas controls) is expanded as one tap to the bottom", name));
+  // What LinuxCNC does is what its machine does; a Fanuc control taps along the drilling axis.
+  const bool tapAsLinuxcnc = (motion == kG84 || motion == kG74) && state_.plane != Plane::XY && !options_.fanuc;
+  if (tapAsLinuxcnc) warnOnce(warnedLinuxcncTap_, column, linuxcncTapWarning(name, ax));
   const Vec3 start = state_.position;
   // x, y, z below are the cycle's a, b, c axes.
   const char aLetter = kAxisLetter[ax.a], bLetter = kAxisLetter[ax.b];
@@ -132,7 +146,9 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
   };
   const float feed = static_cast<float>(state_.feed);
   auto feedTo = [&](double px, double py, double pz) {
-    emit(MoveKind::Linear, at(px, py, pz), feed, kExactStop);
+    const Vec3& o = state_.offset;  // G92 / G52 apply after LinuxCNC's swap
+    emit(MoveKind::Linear, tapAsLinuxcnc ? linuxcncTapEnd(state_.plane, at(px, py, pz) - o) + o : at(px, py, pz),
+         feed, kExactStop);
   };
 
   if (oldZ < r) {
@@ -198,6 +214,13 @@ bool InterpreterState::cycle(const Block& block, int motion, std::uint32_t colum
     }
 
     oldZ = clear;
+  }
+  if (tapAsLinuxcnc && repeats > 0) {
+    // LinuxCNC takes the tool to be over the hole while its last move ended elsewhere: later
+    // moves are computed from the former and start from the latter.
+    const Vec3 ended = state_.position;
+    state_.position = at(x, y, oldZ);
+    state_.tapEndedElsewhere = (ended - state_.position).norm() > kLengthEpsilon;
   }
   state_.cyclePlane = state_.plane;
   state_.cycleZ = zWord;

@@ -88,7 +88,9 @@ void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uin
   m.feed = feed;
   m.kind = kind;
   m.flags = static_cast<std::uint8_t>(pathFlags() | extraFlags);
-  if (kind != MoveKind::Dwell) state_.position = end;
+  if (kind == MoveKind::Dwell) return;
+  state_.position = end;
+  state_.tapEndedElsewhere = false;
 }
 
 void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns,
@@ -105,12 +107,14 @@ void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centr
   m.flags = pathFlags();
   m.turns = static_cast<std::uint16_t>(turns);
   state_.position = end;
+  state_.tapEndedElsewhere = false;
 }
 
 bool InterpreterState::straight(const Block& block, int motion, std::uint32_t column) {
   Vec3 end;
   if (!machineCoordinates_) end = targetOf(block);
   else if (!machineTarget(block, column, end)) return false;
+  state_.tapEndedElsewhere = false;  // here, not at the emit: compensation may hold the move back
   if (motion == kG0) return emitPath(MoveKind::Rapid, end, Vec3::Zero(), 1, 0.0f, column);
   double feed = state_.feed;
   if (state_.inverseTime) {
@@ -124,6 +128,10 @@ bool InterpreterState::straight(const Block& block, int motion, std::uint32_t co
 }
 
 bool InterpreterState::arc(const Block& block, int motion, std::uint32_t column) {
+  // Its centre would be measured from one point and its start taken at another: no arc to draw.
+  if (state_.tapEndedElsewhere)
+    return fail(column, "Arc right after a G84 / G74 in G18 or G19: LinuxCNC starts it where the tap's last "
+                        "feed ended, not over the hole; put a G0 or G1 between them");
   const Plane plane = state_.plane;
   const PlaneAxes ax = planeAxes(plane);
   const char normalOffset = kOffsetLetter[ax.w];

@@ -102,6 +102,9 @@ struct ModalState {
   // the last one set (G92.3 brings it back).
   Vec3 offset = Vec3::Zero(), offsetStored = Vec3::Zero();
   double cycleStartZ = 0;       // mm, where the canned cycle began (its G91 R is measured from it)
+  // LinuxCNC's G84 / G74 in G18 or G19 left the tool away from `position` (gcode_cycles.cpp);
+  // the next move starts where the tool is.
+  bool tapEndedElsewhere = false;
   // G68: the program's coordinates turn by `rotation` (radians, counter-clockwise about the
   // plane's normal) about `rotationCentre` (program coordinates, mm) in `rotationPlane`.
   double rotation = 0;
@@ -259,6 +262,7 @@ class InterpreterState {
   bool warnedRotary_ = false;
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
+  bool warnedLinuxcncTap_ = false;
   bool unitsStated_ = false, planeStated_ = true, distanceStated_ = true;
   bool commentSaysInches_ = false;  // a comment before the first length speaks of inches
   bool unitsRecorded_ = false;  // the first G20/G21 has set Program::inch

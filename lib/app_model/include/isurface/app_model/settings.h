@@ -25,4 +25,9 @@ Settings loadSettings(const std::string& path = settingsPath());
 // Written atomically; returns false (and leaves the old file) when it cannot be written.
 bool saveSettings(const Settings& settings, const std::string& path = settingsPath());
 
+// What loadSettings makes of a file's text and what saveSettings writes: apart from the file,
+// so that the text's reading can be checked on its own.
+Settings settingsFromText(const std::string& text);
+std::string settingsText(const Settings& settings);
+
 }  // namespace isurface::app_model
