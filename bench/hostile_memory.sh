@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Programs that cost nothing to write and once cost gigabytes to read: millions of zero-length
 # moves, millions of `G4 P0`, and a program read from a pipe. `simulate` and `canon` must stay
-# within what isurface-cli takes to start plus 64 MB on each (the README's promise). Each run is
+# within what isurface-cli takes to start plus 64 MB on each (docs/benchmarks.md, Large inputs). Each run is
 # a whole process measured by /usr/bin/time (Debian package `time`): wall time and peak resident
 # set size. Exits 1 when a run fails or exceeds its bound.
 # Usage: bench/hostile_memory.sh [BUILD_DIR [LINES]]   (default: build, 5000000)

@@ -5,7 +5,7 @@
 #   - relief rasters generated here at a low feed (F600 over a wavy surface, 0.5 mm moves) of
 #     about 12 M and, with --huge, 100 M samples (a 28-hour run: a 6.4 GB dump; give WORK_DIR
 #     room for it).
-# Goals (see the README's table): render cameo.nc whole process 2 s (the median of 9 runs, with
+# Goals (see docs/benchmarks.md, Real scale): render cameo.nc whole process 2 s (the median of 9 runs, with
 # the fastest and slowest: this machine's speed varies from minute to minute); render of a dump
 # 100 B a sample over start; ui-snapshot of cameo 1.4 GB; the window on cameo: launch to
 # coloured map 4 s (the median of 3 launches), 1.2 GB, a click to every panel updated 50 ms, 15 frames a second while rotating;

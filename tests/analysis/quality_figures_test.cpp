@@ -71,8 +71,9 @@ double p99(std::vector<double> values) {
 }  // namespace
 
 // The values a run's figures are taken from are derived once and measured in several windows
-// (a candidate's region and its whole program): each window's figures are those of the README's
-// definitions over that window's samples, computed here directly from the samples.
+// (a candidate's region and its whole program): each window's figures are those of the
+// definitions in docs/optimising.md, "Quality figures", over that window's samples, computed
+// here directly from the samples.
 TEST(qualityFigures, OneRunsValuesMeasuredInTwoWindowsAreEachWindowsFigures) {
   std::string text = "G21 G90 G17\nG0 X0 Y0 Z1\nG1 Z0 F3000\n";
   for (int pass = 0; pass < 12; ++pass) {

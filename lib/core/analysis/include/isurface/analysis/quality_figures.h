@@ -1,5 +1,5 @@
 #pragma once
-// The figures a run is judged by (defined in the README, "Quality figures"): measured on the
+// The figures a run is judged by (defined in docs/optimising.md, "Quality figures"): measured on the
 // samples of the surface alone, whatever made the program, so that a re-optimised program is
 // judged by the same rule as the one it replaces and the optimiser cannot flatter itself (it
 // makes its choices with the planner's own limits, never with these).
