@@ -37,14 +37,30 @@ void expectMoves(const InterpretResult& r, std::size_t from, const std::vector<E
 
 }  // namespace
 
-TEST(gcodeCycles, G81ReturnsToInitialLevelByDefault) {
-  const InterpretResult r = run("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nX10\n");
+// Before any G98 / G99 a cycle retracts as the control powers on: LinuxCNC's rs274 to R (its
+// output for this program), Fanuc to the initial level.
+TEST(gcodeCycles, G81RetractsAsTheDialectPowersOn) {
+  const std::string program = "G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nX10\n";
+  const InterpretResult linuxcnc = run(program);
+  expectMoves(linuxcnc, 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 2},
+               {'R', 10, 5, 2}, {'F', 10, 5, -3}, {'R', 10, 5, 2}});
+  InterpreterOptions fanucOptions;
+  fanucOptions.fanuc = true;
+  const InterpretResult r = run(program, fanucOptions);
   expectMoves(r, 1,
               {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 10},
                {'R', 10, 5, 10}, {'R', 10, 5, 2}, {'F', 10, 5, -3}, {'R', 10, 5, 10}});
   EXPECT_EQ(r.program.moves[1].line, 2u);
   EXPECT_EQ(r.program.moves[5].line, 3u);
   EXPECT_FLOAT_EQ(r.program.moves[3].feed, 100.0f);
+}
+
+TEST(gcodeCycles, G98ReturnsToTheInitialLevel) {
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG98 G81 X5 Y5 Z-3 R2 F100\nX10\n");
+  expectMoves(r, 1,
+              {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'R', 5, 5, 10},
+               {'R', 10, 5, 10}, {'R', 10, 5, 2}, {'F', 10, 5, -3}, {'R', 10, 5, 10}});
 }
 
 TEST(gcodeCycles, G99ReturnsToR) {
@@ -60,7 +76,7 @@ TEST(gcodeCycles, StartBelowRGoesUpFirst) {
 }
 
 TEST(gcodeCycles, G82Dwells) {
-  const InterpretResult r = run("G0 X0 Y0 Z10\nG82 X5 Y5 Z-3 R2 P0.5 F100\nY6\n");
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG98 G82 X5 Y5 Z-3 R2 P0.5 F100\nY6\n");
   expectMoves(r, 1,
               {{'R', 5, 5, 10}, {'R', 5, 5, 2}, {'F', 5, 5, -3}, {'D', 5, 5, -3}, {'R', 5, 5, 10},
                {'R', 5, 6, 10}, {'R', 5, 6, 2}, {'F', 5, 6, -3}, {'D', 5, 6, -3}, {'R', 5, 6, 10}});
@@ -101,7 +117,7 @@ TEST(gcodeCycles, FanucLookAheadIsAcceptedOnce) {
 }
 
 TEST(gcodeCycles, G83PecksBackToR) {
-  const InterpretResult r = run("G0 X0 Y0 Z10\nG83 X0 Y0 Z-5 R1 Q2 F100\n");
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG98 G83 X0 Y0 Z-5 R1 Q2 F100\n");
   expectMoves(r, 1,
               {{'R', 0, 0, 10}, {'R', 0, 0, 1},
                {'F', 0, 0, -1}, {'R', 0, 0, 1}, {'R', 0, 0, -0.746},
@@ -110,14 +126,14 @@ TEST(gcodeCycles, G83PecksBackToR) {
 }
 
 TEST(gcodeCycles, G73BreaksChips) {
-  const InterpretResult r = run("G0 X0 Y0 Z10\nG73 X0 Y0 Z-5 R1 Q2 F100\n");
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG98 G73 X0 Y0 Z-5 R1 Q2 F100\n");
   expectMoves(r, 1,
               {{'R', 0, 0, 10}, {'R', 0, 0, 1}, {'F', 0, 0, -1}, {'R', 0, 0, -0.746},
                {'F', 0, 0, -3}, {'R', 0, 0, -2.746}, {'F', 0, 0, -5}, {'R', 0, 0, 10}});
 }
 
 TEST(gcodeCycles, IncrementalWithRepeats) {
-  const InterpretResult r = run("G0 X0 Y0 Z10\nG91 G81 X5 Y0 Z-4 R-8 L3 F100\n");
+  const InterpretResult r = run("G0 X0 Y0 Z10\nG91 G98 G81 X5 Y0 Z-4 R-8 L3 F100\n");
   expectMoves(r, 1,
               {{'R', 5, 0, 10}, {'R', 5, 0, 2}, {'F', 5, 0, -2}, {'R', 5, 0, 10},
                {'R', 10, 0, 10}, {'R', 10, 0, 2}, {'F', 10, 0, -2}, {'R', 10, 0, 10},
@@ -144,7 +160,7 @@ TEST(gcodeCycles, InchCycle) {
 
 // In G18 the cycle drills along Y (positions X and Z), in G19 along X (positions Y and Z).
 TEST(gcodeCycles, OtherPlanes) {
-  Program p = interpret("G21 G18 G0 Y5\nG81 X1 Z2 Y-1 R1 F100\n");
+  Program p = interpret("G21 G18 G0 Y5\nG98 G81 X1 Z2 Y-1 R1 F100\n");
   ASSERT_EQ(p.moves.size(), 5u);
   EXPECT_EQ(p.moves[1].end, Vec3(1, 5, 2));   // over the hole at the initial level
   EXPECT_EQ(p.moves[2].end, Vec3(1, 1, 2));   // down to R
@@ -228,7 +244,7 @@ TEST(gcodeCycles, BadCycleBlockLeavesNoMovesWithKeepGoing) {
   options.keepGoing = true;
   // The second block fails after some of its holes would have been drilled.
   const InterpretResult r =
-      run("G0 X0 Y0 Z10\nG81 X5 Y5 Z-3 R2 F100\nG18 X6\nG17 X7\n", options);
+      run("G0 X0 Y0 Z10\nG98 G81 X5 Y5 Z-3 R2 F100\nG18 X6\nG17 X7\n", options);
   ASSERT_EQ(r.errors.size(), 1u);
   EXPECT_EQ(r.errors[0].line, 3u);
   ASSERT_EQ(r.program.moves.size(), 9u);

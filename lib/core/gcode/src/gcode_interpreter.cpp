@@ -91,6 +91,9 @@ InterpreterState::InterpreterState(const InterpreterOptions& options, InterpretR
   result_.program.inch = options.inchAtPowerOn;
   state_.plane = options.planeAtPowerOn;
   state_.incremental = options.incrementalAtPowerOn;
+  // A canned cycle before any G98 / G99 retracts as the control powers on: LinuxCNC (rs274) to
+  // the R level, Fanuc to the initial level.
+  state_.retractToR = !options.fanuc;
   planeStated_ = distanceStated_ = !options.powerOnModesNamed;
   parameters_.bareSettings = options.fanuc;
   parameters_.set("_value", 0.0);  // as LinuxCNC: what the last call returned, 0 before any

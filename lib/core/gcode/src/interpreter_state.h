@@ -87,7 +87,7 @@ struct ModalState {
   bool exactPath = false;       // G61
   double blendTolerance = 0;    // mm, G64 P
   double mergeTolerance = 0;    // mm, G64 Q
-  bool retractToR = false;      // G99 (default G98: back to the initial level)
+  bool retractToR = false;      // G99 (else G98: back to the initial level); at power-on per dialect
   int cutterComp = kG40;
   int toolLength = kG49;
   int coordSystem = 540;
