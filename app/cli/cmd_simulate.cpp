@@ -38,6 +38,7 @@ int runSimulate(const SimulateOptions& o) {
                  "settled: the tool slows down there more than planning the whole program would\n",
                  s.forcedCommits);
   const SimulationReport& r = s.report;
+  for (const Diagnostic& w : r.warnings) std::fprintf(stderr, "warning: %s\n", w.str().c_str());
   const auto moves = static_cast<unsigned long long>(s.interpretation.moveCount);
   if (o.json) {
     nlohmann::json j = {{"source", o.input},          {"output", o.output},

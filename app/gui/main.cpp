@@ -251,6 +251,22 @@ int run(int argc, char** argv) {
       if (std::string(argv[i]) == "--exit-after-frames" && i + 1 < argc) exitAfter = std::atol(argv[++i]);
       else dropped.emplace_back(argv[i]);
     }
+    // Settings are written as soon as they change (a window ended by a signal keeps its recent
+    // files); the window's size, which changes every frame of a drag, when it closes.
+    std::string savedSettings = isurface::app_model::settingsText(settings);
+    auto keepSettings = [&](bool closing) {
+      if (closing) glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
+      settings.recentFiles = inspector.settings().recentFiles;
+      settings.quantity = inspector.settings().quantity;
+      settings.colorMap = inspector.settings().colorMap;
+      settings.theme = inspector.settings().theme;
+      settings.uiScale = inspector.settings().uiScale;
+      settings.units = inspector.settings().units;
+      const std::string text = isurface::app_model::settingsText(settings);
+      if (text == savedSettings) return;
+      savedSettings = text;  // a folder that cannot be written is not tried again every frame
+      isurface::app_model::saveSettings(settings);
+    };
     double lastInput = glfwGetTime();
     bool frameDue = true;
     bool laidOut = false;  // a frame has been drawn
@@ -281,16 +297,10 @@ int run(int argc, char** argv) {
       const bool keysHeld = releaseHeldKeys(window), pressesHeld = handOnHeldPress(window);
       frameDue = keysHeld || pressesHeld || mouseFrameDue(window);
       tellState(inspector, toldState);
+      keepSettings(false);
       laidOut = true;
     }
-    glfwGetWindowSize(window, &settings.windowWidth, &settings.windowHeight);
-    settings.recentFiles = inspector.settings().recentFiles;
-    settings.quantity = inspector.settings().quantity;
-    settings.colorMap = inspector.settings().colorMap;
-    settings.theme = inspector.settings().theme;
-    settings.uiScale = inspector.settings().uiScale;
-    settings.units = inspector.settings().units;
-    isurface::app_model::saveSettings(settings);
+    keepSettings(true);
   }
   ImGui_ImplOpenGL3_Shutdown();
   ImGui_ImplGlfw_Shutdown();

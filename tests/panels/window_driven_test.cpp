@@ -10,6 +10,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cstdlib>
@@ -132,6 +133,13 @@ class DrivenWindow {
     std::this_thread::sleep_for(std::chrono::milliseconds(250));
   }
   bool running() const { return window_ > 0 && waitpid(window_, nullptr, WNOHANG) == 0; }
+  // Ends the window as a session's logout or `kill` does.
+  void terminate() {
+    if (window_ <= 0) return;
+    kill(window_, SIGTERM);
+    waitpid(window_, nullptr, 0);
+    window_ = -1;
+  }
   // Waits for the window's process to end by itself; its exit code, or -1.
   int exitCode(double seconds) {
     int status = 0;
@@ -220,10 +228,12 @@ TEST(drivenWindow, AWorkingSessionWithMouseAndKeys) {
       w.typeInto(std::string("machine.velocity.") + "xyz"[axis], "1500");
     ASSERT_TRUE(w.waitFor(typed, 5 * kSlow)) << "axis " << "xyz"[axis] << "\n" << log();
   }
+  // The document holds a dump: the simulation opens beside it, which stays.
   w.clickControl("machine.simulate");
   ASSERT_TRUE(w.waitFor([&](const json& s) {
-    return idle(s) && s["machine"]["axes"][0]["max_velocity_mm_s"] == 25.0 && s["documents"].size() == 1 &&
-           s["documents"][0]["dump"] == "" && s["documents"][0].value("duration_s", 0.0) > before * 1.3;
+    return idle(s) && s["machine"]["axes"][0]["max_velocity_mm_s"] == 25.0 && s["documents"].size() == 2 &&
+           s["documents"][0]["dump"] == dump && s["documents"][1]["dump"] == "" &&
+           s["documents"][1].value("duration_s", 0.0) > before * 1.3;
   }, 60 * kSlow)) << log();
   w.clickControl("machine.close");
   ASSERT_TRUE(w.waitFor([](const json& s) { return !s["windows"]["machine"].get<bool>(); }, 5 * kSlow)) << log();
@@ -353,4 +363,30 @@ TEST(drivenWindow, ADoubleClickOnAFolderOpensNothingInIt) {
   EXPECT_TRUE(w.waitFor([](const json& s) { return s["documents"].size() == 2; }, 60)) << log();
   w.key("ctrl+q");
   EXPECT_EQ(w.exitCode(20), 0) << log();
+}
+
+// A window ended by a signal, not by Quit, has kept what changed: the program it opened is in
+// its recent files.
+TEST(drivenWindow, RecentFilesOutliveAWindowEndedByASignal) {
+  if (!installed("Xvfb") || !installed("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+#ifdef ISURFACE_SANITIZED
+  GTEST_SKIP() << "the driven session needs the uninstrumented window's frame rate";
+#endif
+  const char* config = std::getenv("XDG_CONFIG_HOME");
+  if (config && config[0] == '/') GTEST_SKIP() << "XDG_CONFIG_HOME is set: the window would keep its settings there";
+  const std::filesystem::path home = scratchDir() / "driven-signal";
+  std::filesystem::remove_all(home);
+  const std::string program = sourcePath("samples/transition-surface.nc");
+  DrivenWindow w(home, {program});
+  ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1; }, 60)) << readFile(w.logPath());
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));
+  w.terminate();
+  const std::filesystem::path settings = home / ".config" / "isurface" / "settings.json";
+  ASSERT_TRUE(std::filesystem::exists(settings)) << readFile(w.logPath());
+  const json saved = json::parse(readFile(settings.string()), nullptr, false);
+  ASSERT_TRUE(saved.is_object()) << readFile(settings.string());
+  const std::vector<std::string> recent = saved.value("recent_files", std::vector<std::string>{});
+  EXPECT_TRUE(std::any_of(recent.begin(), recent.end(), [](const std::string& path) {
+    return std::filesystem::path(path).filename() == "transition-surface.nc";
+  })) << readFile(settings.string());
 }

@@ -55,6 +55,11 @@ TEST(workingDay, TheMachineIsEditedSimulatedWithAndSaved) {
   const nlohmann::json state = described(*ui);
   EXPECT_DOUBLE_EQ(state["machine"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
   EXPECT_EQ(state["machine_source"], "edited");
+  // Named as a machine of its own, wherever the map and its exports name it.
+  const std::string edited = defaultMachine().name + " (edited: axes.x.max_velocity_mm_min, axes.y.max_velocity_mm_min, "
+                             "axes.z.max_velocity_mm_min)";
+  EXPECT_EQ(state["machine"]["name"], edited);
+  EXPECT_EQ(state["documents"][0]["machine"], edited);
   const double after = state["documents"][0]["duration_s"];
   EXPECT_GT(after, before * 1.3) << "a slower machine takes longer";
   ASSERT_NE(ui->inspector().activeMachine(), nullptr);
@@ -72,7 +77,7 @@ TEST(workingDay, TheMachineIsEditedSimulatedWithAndSaved) {
   EXPECT_EQ(described(*ui)["last_saved"], path.string());
   const Machine saved = loadMachine(path.string());
   EXPECT_DOUBLE_EQ(saved.axes[1].maxVelocity, 25.0);
-  EXPECT_EQ(saved.name, ui->inspector().machine().name);
+  EXPECT_EQ(saved.name, edited);
   EXPECT_EQ(machineDescriptionJson(saved), machineDescriptionJson(ui->inspector().machine()));
 }
 
@@ -237,6 +242,25 @@ TEST(workingDay, TheFeedbackSurfaceInTurnWithTheCommandedOne) {
   EXPECT_NE(map["caption"].get<std::string>().find("feedback surface"), std::string::npos) << map["caption"];
 }
 
+// A document that holds a dump (here a run of the program; a machine's recording alike) is not
+// replaced by a simulation: the simulation opens beside it.
+TEST(workingDay, SimulatingADocumentWithADumpKeepsTheDump) {
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  const std::string dump = test::transitionDump();
+  ui.inspector().open({test::sourcePath("samples/transition-surface.nc"), dump});
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
+  tapLetter(ui, 'M');
+  typeInto(ui, "machine.velocity.x", "1500");
+  clickControl(ui, "machine.simulate");
+  waitForJobs(ui);
+  const nlohmann::json documents = described(ui)["documents"];
+  ASSERT_EQ(documents.size(), 2u) << ui.inspector().statusText();
+  EXPECT_EQ(documents[0]["dump"], dump);
+  EXPECT_EQ(documents[1]["dump"], "");
+  EXPECT_GT(documents[1]["duration_s"].get<double>(), documents[0]["duration_s"].get<double>());
+}
+
 TEST(workingDay, AnInchProgramIsShownInInches) {
   const std::filesystem::path inch = test::scratchDir() / "inch-raster.nc";
   {
@@ -276,7 +300,7 @@ TEST(workingDay, ThemeAndSizeAreChosenAndRemembered) {
 TEST(workingDay, TheOpenDialogBrowsesFoldersAndOpensAFile) {
   panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
   settle(ui);
-  tapLetter(ui, 'O');
+  tapLetter(ui, 'O', true);  // Ctrl+O, as File > Open and the window's help say; O alone too
   // A folder typed and entered lists it; a file typed and entered opens.
   typeInto(ui, "open.path", test::sourcePath("samples"));
   tap(ui, ImGuiKey_Enter);

@@ -113,8 +113,11 @@ void Inspector::State::simulateAgain() {
     return;
   }
   if (refusedDuringReport("simulate again")) return;
-  startLoad(doc->programPath, "", active);
-  status = "simulating " + doc->name + " with " + machine.name;
+  // A document with a dump (a machine's recording, or a run simulated elsewhere) keeps it: the
+  // simulation opens beside it, as a document of its own.
+  const bool keepsDump = !doc->dumpPath.empty();
+  startLoad(doc->programPath, "", keepsDump ? ~std::size_t(0) : active);
+  status = "simulating " + doc->name + " with " + machine.name + (keepsDump ? ", beside its dump" : "");
 }
 
 void Inspector::State::closeActive() {

@@ -261,7 +261,8 @@ struct Inspector::State {
   bool loadFeedbackFirst(std::function<void()> then);
   // The loaded feedback joins its document's samples (on the UI thread, no job running).
   void attachLoadedFeedback(JobResult& result);
-  // Simulates the active document's program again with `machine` (a dump it came with is left).
+  // Simulates the active document's program again with `machine`: in its place, or, when it
+  // holds a dump (a recording), as a new document beside it.
   void simulateAgain();
   // Opens the machine window with the machine in use; an open one keeps its edits.
   void openMachineWindow() {

@@ -165,7 +165,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   ImGui::SetNextWindowPos(ImVec2(0, toolbarTop));
   ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetFrameHeightWithSpacing() + 10));
   ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-  if (toolButton("Open", "Open a G-code program or a Biip dump (O)") || shortcut('O')) s.openDialog = true;
+  if (toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)") || shortcut('O') || shortcut('O', true))
+    s.openDialog = true;
   if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
   if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut('M'))
     s.openMachineWindow();

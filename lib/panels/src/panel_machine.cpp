@@ -7,6 +7,7 @@
 #include <optional>
 
 #include "inspector_state.h"
+#include "isurface/app_model/machine_edits.h"
 #include "isurface/base/units.h"
 
 namespace isurface::panels {
@@ -91,7 +92,9 @@ void drawLoadAndSave(Inspector::State& s) {
   noteControl(s, "machine.save");
   if (save && s.machineSavePath[0]) {
     if (const std::optional<Machine> m = checked(s)) {
-      s.save(s.machineSavePath, machineDescriptionJson(*m), "machine description");
+      const Machine named = app_model::namedAfterEdits(*m, s.machine);
+      s.machineEdit.name = named.name;
+      s.save(s.machineSavePath, machineDescriptionJson(named), "machine description");
       s.machineMessage.clear();
     }
   }
@@ -132,7 +135,8 @@ void drawMachineWindow(Inspector::State& s) {
     noteControl(s, "machine.simulate");
     if (simulate) {
       if (const std::optional<Machine> m = checked(s)) {
-        s.machine = *m;
+        s.machine = app_model::namedAfterEdits(*m, s.machine);
+        s.machineEdit.name = s.machine.name;
         s.machineSource = "edited";
         s.machineMessage.clear();
         if (simulatable) s.simulateAgain();

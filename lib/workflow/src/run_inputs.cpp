@@ -162,12 +162,14 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
 }
 
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress,
-                       bool feedback) {
+                       bool feedback, std::vector<std::string>* warnings) {
   TrajectorySink trajectory(machine.cycle, program.source, feedback);
   {
     ThreadedSink sink(trajectory);
-    simulate(program, machine, sink, progress);
+    const SimulationReport report = simulate(program, machine, sink, progress);
     sink.drain();
+    if (warnings)
+      for (const Diagnostic& w : report.warnings) warnings->push_back(w.str());
   }
   return trajectory.take();
 }
@@ -265,7 +267,7 @@ OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progres
     readSamples(request, progress, run);
   } else if (run.program) {
     run.samples = std::make_shared<Trajectory>(
-        simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0), request.channels.feedback));
+        simulateRun(*run.program, run.machine, progressStage(progress, 0.2, 1.0), request.channels.feedback, &run.warnings));
     if (!request.channels.feedback) {
       run.feedbackSupply.servo = run.machine;
       run.feedbackSupply.servoStart = run.program->start;

@@ -1,5 +1,6 @@
 #include "isurface/nc/simulator.h"
 
+#include "isurface/nc/feed_cap_notes.h"
 #include "isurface/nc/linuxcnc_motion.h"
 
 #include <fmt/format.h>
@@ -68,8 +69,10 @@ SimulationReport simulateOnLinuxCnc(const Program& program, const Machine& machi
 
 }  // namespace
 
-SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
-                          const ProgressCallback& progress) {
+namespace {
+
+SimulationReport simulateWithoutNotes(const Program& program, const Machine& machine, SampleSink& sink,
+                                      const ProgressCallback& progress) {
   if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) return simulateOnLinuxCnc(program, machine, sink, progress);
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
@@ -121,6 +124,17 @@ SimulationReport simulate(const Program& program, const Machine& machine, Sample
   return report;
 }
 
+}  // namespace
+
+SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
+                          const ProgressCallback& progress) {
+  SimulationReport report = simulateWithoutNotes(program, machine, sink, progress);
+  FeedCapNotes feeds(machine);
+  for (std::size_t i = 0; i < program.moves.size(); ++i) feeds.note(program.moves[i], program.startOf(i));
+  if (auto w = feeds.warning(program.source)) report.warnings.push_back(*w);
+  return report;
+}
+
 StreamingSimulation::StreamingSimulation(const Machine& machine, const Vec3& start, const std::string& source,
                                          SampleSink& sink, const StreamingFeedPlanner::Window& window)
     : machine_(machine),
@@ -149,6 +163,7 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
   try {
     if (linuxcnc_) {
       for (std::size_t i = 0; i < count; ++i) {
+        feeds_.note(moves[i], moveStart_);
         linuxcnc_->add(firstIndex + i, moves[i], moveStart_);
         moveStart_ = moves[i].end;
       }
@@ -165,6 +180,7 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
         else
           pendingDwells_.back().seconds += moves[i].dwellSeconds();
       }
+      feeds_.note(moves[i], moveStart_);
       planner_.add(static_cast<std::uint32_t>(firstIndex + i), moves[i], moveStart_);
       // Only moves that may become segments wait for the interpolator: a program of millions
       // of dwells or zero-length moves must not pile them up.
@@ -229,6 +245,7 @@ SimulationReport StreamingSimulation::finish() {
     report_.machiningTime = summary.duration;
     report_.segments = linuxcnc_->segments();
     report_.pathLength = linuxcnc_->pathLength();
+    if (auto w = feeds_.warning(source_)) report_.warnings.push_back(*w);
     return report_;
   }
   try {
@@ -243,6 +260,7 @@ SimulationReport StreamingSimulation::finish() {
   }
   report_.samples = summary.samples;
   report_.machiningTime = summary.duration;
+  if (auto w = feeds_.warning(source_)) report_.warnings.push_back(*w);
   return report_;
 }
 

@@ -109,8 +109,10 @@ struct OpenedRun {
 OpenedRun openRun(const OpenRunRequest& request, const ProgressCallback& progress = {});
 
 // Simulates a program in memory with a machine (progress 0..1).
-// Without `feedback` the servo's positions are not kept (see TrajectoryChannels).
+// Without `feedback` the servo's positions are not kept (see TrajectoryChannels). What the
+// machine does otherwise than the program says (feeds above its axes' limits) is added to
+// `warnings` where given.
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress = {},
-                       bool feedback = true);
+                       bool feedback = true, std::vector<std::string>* warnings = nullptr);
 
 }  // namespace isurface

@@ -9,6 +9,7 @@
 
 #include "isurface/base/diagnostic.h"
 #include "isurface/gcode/gcode_stream.h"
+#include "isurface/nc/feed_cap_notes.h"
 #include "isurface/nc/interpolator.h"
 #include "isurface/nc/linuxcnc_motion.h"
 
@@ -21,6 +22,7 @@ struct SimulationReport {
   std::size_t segments = 0;  // moves with motion
   double filterTime1 = 0;    // s
   double filterTime2 = 0;    // s
+  std::vector<Diagnostic> warnings;  // what the machine does otherwise than the program says
 };
 
 // Progress is reported as planning (0..0.1) then interpolation (0.1..1).
@@ -84,6 +86,7 @@ class StreamingSimulation : public MoveSink {
   double plannedTime_ = 0;  // s, of the segments handed to the interpolator with their holds
   double countedTime_ = 0;  // s, of the motion handed on and the dwells counted, in program order
   std::vector<PlannedSegment> final_;
+  FeedCapNotes feeds_{machine_};
   SimulationReport report_;
   std::optional<InputError> simulationError_;
 };
