@@ -25,7 +25,7 @@ struct SnapshotOptions {
   long pickLine = -1, pickSample = -1;
   std::string optimizeLines, optimizeView = "side-by-side";
   std::string machine;
-  bool showMachine = false;
+  bool showMachine = false, showWarnings = false;
 };
 
 // The window's RGBA rows, top row first, as a PNG file.
@@ -90,6 +90,7 @@ int runSnapshot(const SnapshotOptions& o) {
     status = kExitInputError;
   }
   if (o.showMachine) inspector.showMachineWindow();
+  if (o.showWarnings) inspector.showWarningsWindow();
   // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
   for (int frame = 0; frame < 4; ++frame) ui.frame();
   if (status == kExitOk) writePng(ui.pixels(), width, height, o.output);
@@ -119,6 +120,7 @@ Command uiSnapshotCommand() {
           ->capture_default_str();
       sub.add_option("--machine", o->machine, "machine description (JSON) programs are simulated with");
       sub.add_flag("--show-machine", o->showMachine, "draw the machine window open");
+      sub.add_flag("--show-warnings", o->showWarnings, "draw the warnings window open");
       return [o] { return runSnapshot(*o); };
     }};
 }

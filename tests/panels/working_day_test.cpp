@@ -152,6 +152,8 @@ TEST(workingDay, ExportWritesTheViewFiguresAndSamples) {
   std::filesystem::remove(csv);
   tapLetter(*ui, 'E', true);
   clickControl(*ui, "export.csv");
+  // Another kind, its own extension: the CSV is not offered the view's name.
+  EXPECT_EQ(described(*ui)["export_path"], (test::scratchDir() / "view-export.csv").string());
   typeInto(*ui, "export.path", csv.string());
   clickControl(*ui, "export.write");
   // The samples are written with their feedback, loaded first in the background (slower than a
@@ -259,6 +261,38 @@ TEST(workingDay, SimulatingADocumentWithADumpKeepsTheDump) {
   EXPECT_EQ(documents[0]["dump"], dump);
   EXPECT_EQ(documents[1]["dump"], "");
   EXPECT_GT(documents[1]["duration_s"].get<double>(), documents[0]["duration_s"].get<double>());
+}
+
+// Every warning of every open document stays in the warnings window (W) after the status line
+// has moved on, and one that names a line goes there.
+TEST(workingDay, WarningsAreKeptPerDocumentAndGoToTheirLine) {
+  const std::filesystem::path program = test::scratchDir() / "inch-comment-raster.nc";
+  {
+    std::ofstream out(program);
+    out << "(OUTPUT IN ABSOLUTE INCHES)\nG90 G17\nG0 X0 Y0 Z0.1\nG1 Z0 F40\n";
+    for (int row = 0; row < 12; ++row)
+      out << "G1 X" << (row % 2 ? 0 : 20) << " Y" << row << (row == 3 ? " F9991300" : "") << "\nG1 Y" << row + 1
+          << (row == 3 ? " F40" : "") << "\n";
+    out << "M2\n";
+  }
+  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
+  ui.inspector().open(program.string());
+  waitForJobs(ui);
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  ASSERT_EQ(ui.inspector().documentCount(), 2u) << ui.inspector().statusText();
+  EXPECT_EQ(ui.inspector().statusText().find("inches"), std::string::npos) << "the status has moved on";
+  const nlohmann::json warnings = described(ui)["documents"][0]["warnings"];
+  ASSERT_EQ(warnings.size(), 2u) << warnings;
+  EXPECT_NE(warnings[0].get<std::string>().find("its comments speak of inches"), std::string::npos) << warnings;
+  EXPECT_NE(warnings[1].get<std::string>().find(program.string() + ":11:"), std::string::npos) << warnings;
+  tapLetter(ui, 'W');
+  ASSERT_TRUE(described(ui)["windows"]["warnings"].get<bool>());
+  clickControl(ui, "warnings.item:0:1");
+  settle(ui);
+  const nlohmann::json state = described(ui);
+  EXPECT_EQ(state["active"], 0);
+  EXPECT_EQ(state["selection"]["line"], 11);
 }
 
 TEST(workingDay, AnInchProgramIsShownInInches) {

@@ -451,6 +451,7 @@ const Machine* Inspector::activeMachine() const {
   return doc && doc->samples ? &doc->machine : nullptr;
 }
 void Inspector::showMachineWindow() { state_->openMachineWindow(); }
+void Inspector::showWarningsWindow() { state_->warningsOpen = true; }
 void Inspector::simulateAgain() { state_->simulateAgain(); }
 
 const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }

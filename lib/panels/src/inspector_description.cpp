@@ -65,6 +65,7 @@ std::string Inspector::describe() const {
     if (doc->samples && doc->samples->size() > 1)
       d["duration_s"] = doc->samples->timeAt(doc->samples->size() - 1) - doc->samples->timeAt(0);
     d["map_quantity"] = doc->scene ? doc->map.style.quantityLabel : "";  // what its map is coloured by
+    d["warnings"] = doc->warnings;
     documents.push_back(d);
   }
   const app_model::Selection& sel = s.selection.current();
@@ -91,7 +92,8 @@ std::string Inspector::describe() const {
                             {"locate", s.locateOpen},
                             {"optimise", s.optimiseDialogOpen},
                             {"replace_question", s.overwriteQuestion.has_value()},
-                            {"help", s.helpOpen}};
+                            {"help", s.helpOpen},
+                            {"warnings", s.warningsOpen}};
   nlohmann::json map = nlohmann::json::object();
   if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
     map = {{"quantity", doc->map.style.quantityLabel},
@@ -131,6 +133,7 @@ std::string Inspector::describe() const {
                               {"active", s.active},
                               {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
                               {"open_path", s.openPath},  // the Open dialog's path, typed or chosen
+                              {"export_path", s.exportPath},  // the Export dialog's
                               {"busy", s.job.running() || !s.queuedRuns.empty()},
                               {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}, {"stage", s.job.stage()}}
                                                       : nlohmann::json()},

@@ -232,6 +232,7 @@ struct Inspector::State {
   int extraCurve = 0;
   int locateSample = 0, locateLine = 1;  // the locate window's fields
   bool locateOpen = false;
+  bool warningsOpen = false;  // the warnings window (W)
   std::string locateMessage;  // why the last request went nowhere  // which extra channel the fourth curve shows
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
   // Opens a program or a dump: a dump joins the active program when that has none yet.
@@ -348,6 +349,9 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h);
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
 void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
+void drawWarningsWindow(Inspector::State& s);
+// The line of the document's program a warning names ("PROGRAM:LINE:..."), if any.
+std::optional<std::uint32_t> warningLine(const Document& doc, const std::string& warning);
 void drawOptimiseDialog(Inspector::State& s);
 void drawComparisonView(Inspector::State& s, float x, float y, float w, float h);
 void drawCompareDialog(Inspector::State& s);

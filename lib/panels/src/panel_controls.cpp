@@ -133,6 +133,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Left", "L")) setView(s, vis::ViewDirection::Left);
       if (ImGui::MenuItem("Reset", "R")) setView(s, s.settings.view);
       ImGui::MenuItem("Rectangle zoom", "Z", &s.rectangleZoom);
+      ImGui::MenuItem("Warnings", "W", &s.warningsOpen);
       ImGui::Separator();
       drawLookMenus(s);
       ImGui::EndMenu();
@@ -196,6 +197,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (shortcut('E', true) && s.activeDocument()) s.exportDialog = true;
   if (shortcut('W', true) && s.activeDocument()) s.closeActive();
   if (shortcut('H')) s.helpOpen = !s.helpOpen;
+  if (shortcut('W')) s.warningsOpen = !s.warningsOpen;
   if (s.measuring && s.takeEscape()) toggleMeasure(s);
   if (locate) s.locateDialog = true;
   if (simulate) s.simulateAgain();
@@ -381,6 +383,18 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
       ImGui::SameLine();
     }
   }
+  // The open documents' warnings, however many messages came after them.
+  std::size_t warnings = 0;
+  for (const auto& doc : s.documents) warnings += doc->warnings.size();
+  if (warnings > 0) {
+    const std::string label = std::to_string(warnings) + (warnings == 1 ? " warning (W)" : " warnings (W)");
+    ImGui::PushStyleColor(ImGuiCol_Text, ImVec4(1.0f, 0.75f, 0.3f, 1.0f));
+    const bool open = ImGui::SmallButton(label.c_str());
+    ImGui::PopStyleColor();
+    noteControl(s, "status.warnings");
+    if (open) s.warningsOpen = true;
+    ImGui::SameLine();
+  }
   // A status wider than the bar is cut at its end, and shown whole under the pointer.
   s.statusShown = fittedToWidth(s.status, ImGui::GetContentRegionAvail().x);
   ImGui::TextUnformatted(s.statusShown.c_str());
@@ -456,6 +470,7 @@ void drawLocateWindow(Inspector::State& s) {
 void drawDialogs(Inspector::State& s) {
   drawOpenDialog(s);
   drawLocateWindow(s);
+  drawWarningsWindow(s);
 }
 
 }  // namespace isurface::panels

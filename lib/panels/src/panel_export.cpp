@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 
@@ -98,6 +99,20 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
   return out;
 }
 
+// `path` (a buffer of `size` bytes) with the extension of export kind `kind` in place of a known
+// export's extension; a path with another extension, or none, is left to the user.
+void withExtensionOf(char* path, std::size_t size, int kind) {
+  static const char* const kExtensions[] = {".png", ".json", ".csv", ".html"};
+  std::string text(path);
+  for (const char* known : kExtensions) {
+    const std::size_t length = std::strlen(known);
+    if (text.size() <= length || text.compare(text.size() - length, length, known) != 0) continue;
+    text = text.substr(0, text.size() - length) + kExtensions[std::clamp(kind, 0, 3)];
+    if (text.size() < size) std::snprintf(path, size, "%s", text.c_str());
+    return;
+  }
+}
+
 // The map's figures (kind 1) or the samples of lines first..last (kind 2), written to `path`.
 void exportNumbers(Inspector::State& s, int kind, const std::string& path, int first, int last) {
   const Document* doc = s.activeDocument();
@@ -122,7 +137,9 @@ void drawExportDialog(Inspector::State& s) {
   s.exportDialog = false;
   if (!ImGui::BeginPopupModal("Export", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   Document* doc = s.activeDocument();
+  const int kindBefore = s.exportKind;
   ImGui::RadioButton("the view as PNG", &s.exportKind, 0);
+  noteControl(s, "export.png");
   ImGui::SameLine();
   ImGui::RadioButton("the map's figures as JSON", &s.exportKind, 1);
   noteControl(s, "export.json");
@@ -132,6 +149,8 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::SameLine();
   ImGui::RadioButton("a report (HTML)", &s.exportKind, 3);
   noteControl(s, "export.report");
+  // Another kind of export gets its own file name's extension: a JSON is not offered "view.png".
+  if (s.exportKind != kindBefore) withExtensionOf(s.exportPath, sizeof s.exportPath, s.exportKind);
   if (s.exportKind == 0) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("width [px]", &s.exportWidth, 0);

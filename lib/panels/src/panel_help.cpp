@@ -13,7 +13,7 @@ struct KeyHelp {
 };
 
 constexpr KeyHelp kKeys[] = {
-    {"O", "open a G-code program, a Biip dump or both"},
+    {"O / Ctrl+O", "open a G-code program, a Biip dump or both"},
     {"Ctrl+W", "close the active file"},
     {"S", "simulate the active program again"},
     {"M", "the machine: limits, servo, load, save, simulate with it"},
@@ -23,6 +23,7 @@ constexpr KeyHelp kKeys[] = {
     {"B", "drag a box over the view to choose the region to optimise"},
     {"D", "measure: the next two clicks on the surface are the ends of a distance"},
     {"Ctrl+L", "locate a sample or a G-code line"},
+    {"W", "every warning of the open files; a click goes to the line it names"},
     {"P", "re-optimise a region and compare the maps"},
     {"Ctrl+E", "export the view (PNG), the map's figures (JSON) or samples (CSV)"},
     {"Up / Down, PgUp / PgDn, Home / End", "step through the rows of the G-code pane or the data bar"},

@@ -71,6 +71,8 @@ class Inspector {
   const Machine* activeMachine() const;
   // Opens the machine window (limits, servo, load, save, simulate again).
   void showMachineWindow();
+  // Opens the warnings window (every warning of the open documents).
+  void showWarningsWindow();
   // Simulates the active document's program again with machine().
   void simulateAgain();
 
