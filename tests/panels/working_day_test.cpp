@@ -420,6 +420,34 @@ TEST(workingDay, AFixedRangeStartsAsTheRangeShown) {
   EXPECT_EQ(shown["quantity"], "Tangential acceleration");
 }
 
+// Enter in a field of the fixed range applies it; the Colour panel then shows the range of the
+// map of whichever document is shown.
+TEST(workingDay, AFixedRangeIsAppliedByEnterAndFollowsTheDocumentShown) {
+  auto ui = openedSample();
+  clickControl(*ui, "range.fixed");
+  waitForJobs(*ui);
+  typeInto(*ui, "range.low", "2000");
+  tap(*ui, ImGuiKey_Enter);
+  waitForJobs(*ui);
+  typeInto(*ui, "range.high", "2500");
+  tap(*ui, ImGuiKey_Enter);
+  waitForJobs(*ui);
+  nlohmann::json map = described(*ui)["map"];
+  EXPECT_DOUBLE_EQ(map["range"][0].get<double>(), 2000.0) << map;
+  EXPECT_DOUBLE_EQ(map["range"][1].get<double>(), 2500.0) << map;
+  // A second document, its map at 1-99 %.
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
+  waitForJobs(*ui);
+  clickControl(*ui, "range.percentile");
+  waitForJobs(*ui);
+  EXPECT_EQ(described(*ui)["colour"]["range_mode"], 0);
+  ui->inspector().showDocument(0);
+  settle(*ui);
+  const nlohmann::json colour = described(*ui)["colour"];
+  EXPECT_EQ(colour["range_mode"], 2) << "the panel says what the map shown is: fixed";
+  EXPECT_DOUBLE_EQ(colour["fixed"][1].get<double>(), 2500.0);
+}
+
 TEST(workingDay, LocateStartsAtTheSelectionAndSaysWhenARequestIsOutOfRange) {
   auto ui = openedSample();
   ASSERT_TRUE(ui->inspector().selectLine(2000));

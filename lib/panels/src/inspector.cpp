@@ -268,6 +268,14 @@ void Inspector::State::activate(std::size_t index) {
     settings.channel = doc->map.request.channel;
     settings.feedbackSurface = doc->map.request.feedbackSurface;
     settings.gapLimit = doc->map.request.gapLimit;
+    // And its range: fixed, full or 1-99 %, as that map was made.
+    if (const auto& fixed = doc->map.request.fixedRange) {
+      settings.rangeMode = 2;
+      settings.fixedLow = static_cast<float>(fixed->lo);
+      settings.fixedHigh = static_cast<float>(fixed->hi);
+    } else {
+      settings.rangeMode = doc->map.request.lowPercent == 0 && doc->map.request.highPercent == 100 ? 1 : 0;
+    }
   }
   view.invalidate();
   curveFirst = 0;

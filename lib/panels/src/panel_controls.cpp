@@ -329,6 +329,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     ImGui::EndCombo();
   }
   recolour |= ImGui::RadioButton("1-99 %", &s.settings.rangeMode, 0);
+  noteControl(s, "range.percentile");
   ImGui::SameLine();
   recolour |= ImGui::RadioButton("full", &s.settings.rangeMode, 1);
   ImGui::SameLine();
@@ -343,11 +344,19 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     }
   }
   if (s.settings.rangeMode == 2) {
-    ImGui::SetNextItemWidth(-1);
-    ImGui::InputFloat("##low", &s.settings.fixedLow);
-    ImGui::SetNextItemWidth(-1);
-    ImGui::InputFloat("##high", &s.settings.fixedHigh);
-    recolour |= ImGui::Button("Apply range");
+    // Enter in either field applies the range, as the button does.
+    const float labelRoom = ImGui::CalcTextSize("from ").x;
+    ImGui::SetNextItemWidth(-labelRoom);
+    bool apply = ImGui::InputFloat("from", &s.settings.fixedLow, 0, 0, "%g", ImGuiInputTextFlags_EnterReturnsTrue);
+    noteControl(s, "range.low");
+    ImGui::SetNextItemWidth(-labelRoom);
+    apply |= ImGui::InputFloat("to", &s.settings.fixedHigh, 0, 0, "%g", ImGuiInputTextFlags_EnterReturnsTrue);
+    noteControl(s, "range.high");
+    apply |= ImGui::Button("Apply range");
+    noteControl(s, "range.apply");
+    if (apply && !(s.settings.fixedLow < s.settings.fixedHigh))
+      s.status = "a fixed range needs its start below its end";
+    else recolour |= apply;
   }
   if (Document* doc = s.activeDocument(); doc && doc->scene) {
     ImGui::Separator();
