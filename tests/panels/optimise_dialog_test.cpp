@@ -110,5 +110,9 @@ TEST(optimiseDialog, TheWorstPredictedRegionIsHeldWithItsBox) {
   const auto lines = state["optimise_lines"].get<std::vector<int>>();
   EXPECT_GT(lines[1] - lines[0], 100) << "several whole passes";
   EXPECT_EQ(state["status"].get<std::string>().rfind("worst predicted region: lines ", 0), 0u) << state["status"];
+  // Why it spans more than the box, and what it costs: the share of the run every plan simulates.
+  EXPECT_NE(state["status"].get<std::string>().find("with every pass joined to it"), std::string::npos) << state["status"];
+  EXPECT_GT(state["optimise_time_share"].get<double>(), 0.05);
+  EXPECT_LE(state["optimise_time_share"].get<double>(), 1.0);
   EXPECT_LT(state["optimise_box"]["lower"][0].get<double>(), state["optimise_box"]["upper"][0].get<double>());
 }

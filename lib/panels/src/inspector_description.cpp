@@ -132,6 +132,7 @@ std::string Inspector::describe() const {
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
                               {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
+                              {"optimise_time_share", s.active < s.documents.size() ? linesTimeShare(*s.documents[s.active], s.optimiseFirst, s.optimiseLast).value_or(0.0) : 0.0},
                               {"open_path", s.openPath},  // the Open dialog's path, typed or chosen
                               {"export_path", s.exportPath},  // the Export dialog's
                               {"busy", s.job.running() || !s.queuedRuns.empty()},

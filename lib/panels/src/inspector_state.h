@@ -350,6 +350,8 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
 void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
 void drawWarningsWindow(Inspector::State& s);
+// The share of the document's samples (its run's time) on the lines first..last; none without samples.
+std::optional<double> linesTimeShare(const Document& doc, int first, int last);
 // The line of the document's program a warning names ("PROGRAM:LINE:..."), if any.
 std::optional<std::uint32_t> warningLine(const Document& doc, const std::string& warning);
 void drawOptimiseDialog(Inspector::State& s);

@@ -49,6 +49,19 @@ std::string whyNotOptimisable(const Document* doc) {
   return "";
 }
 
+}  // namespace
+
+std::optional<double> linesTimeShare(const Document& doc, int first, int last) {
+  if (!doc.samples || doc.samples->size() < 2 || first < 1 || last < first) return std::nullopt;
+  std::size_t inside = 0;
+  doc.samples->line.forEachRun([&](std::uint32_t line, std::size_t begin, std::size_t end) {
+    if (line >= static_cast<std::uint32_t>(first) && line <= static_cast<std::uint32_t>(last)) inside += end - begin;
+  });
+  return double(inside) / double(doc.samples->size());
+}
+
+namespace {
+
 // The dialog holds a region found for the user (not dragged on the view, so not drawn there).
 void holdRegion(Inspector::State& s, const ChosenRegion& region, const char* what) {
   s.optimiseFirst = static_cast<int>(region.lines.first);
@@ -66,6 +79,8 @@ void chooseWorstRegion(Inspector::State& s) {
   try {
     const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
     holdRegion(s, worstRegion(run, doc->name), "worst predicted region");
+    // Widened to the passes joined to it (a pass left as it was beside one re-planned leaves a seam).
+    s.status += " (with every pass joined to it on the surface)";
   } catch (const InputError& e) {
     s.status = s.optimiseNotice = e.what();
   }
@@ -246,6 +261,15 @@ void drawOptimiseDialog(Inspector::State& s) {
   noteControl(s, "optimise.first");
   ImGui::InputInt("last line", &s.optimiseLast);
   noteControl(s, "optimise.last");
+  // What the lines cost before the button does: every plan simulates them (the worst region of a
+  // raster is widened to the passes joined to it, which on a relief can be all of them).
+  if (const std::optional<double> share = linesTimeShare(*doc, s.optimiseFirst, s.optimiseLast)) {
+    const Trajectory& t = *doc->samples;
+    const double total = t.timeAt(t.size() - 1) - t.timeAt(0);
+    ImGui::TextWrapped("Lines %d-%d run %.0f s of the program's %.0f s (%.1f %%): each plan simulates them%s",
+                       s.optimiseFirst, s.optimiseLast, *share * total, total, 100 * *share,
+                       *share > 0.5 ? ", which takes a while" : "");
+  }
   // The box only stands for the region while the lines are still its own.
   const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
                      s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
