@@ -244,57 +244,6 @@ TEST(workingDay, TheFeedbackSurfaceInTurnWithTheCommandedOne) {
   EXPECT_NE(map["caption"].get<std::string>().find("feedback surface"), std::string::npos) << map["caption"];
 }
 
-// A document that holds a dump (here a run of the program; a machine's recording alike) is not
-// replaced by a simulation: the simulation opens beside it.
-TEST(workingDay, SimulatingADocumentWithADumpKeepsTheDump) {
-  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
-  const std::string dump = test::transitionDump();
-  ui.inspector().open({test::sourcePath("samples/transition-surface.nc"), dump});
-  waitForJobs(ui);
-  ASSERT_EQ(ui.inspector().documentCount(), 1u) << ui.inspector().statusText();
-  tapLetter(ui, 'M');
-  typeInto(ui, "machine.velocity.x", "1500");
-  clickControl(ui, "machine.simulate");
-  waitForJobs(ui);
-  const nlohmann::json documents = described(ui)["documents"];
-  ASSERT_EQ(documents.size(), 2u) << ui.inspector().statusText();
-  EXPECT_EQ(documents[0]["dump"], dump);
-  EXPECT_EQ(documents[1]["dump"], "");
-  EXPECT_GT(documents[1]["duration_s"].get<double>(), documents[0]["duration_s"].get<double>());
-}
-
-// Every warning of every open document stays in the warnings window (W) after the status line
-// has moved on, and one that names a line goes there.
-TEST(workingDay, WarningsAreKeptPerDocumentAndGoToTheirLine) {
-  const std::filesystem::path program = test::scratchDir() / "inch-comment-raster.nc";
-  {
-    std::ofstream out(program);
-    out << "(OUTPUT IN ABSOLUTE INCHES)\nG90 G17\nG0 X0 Y0 Z0.1\nG1 Z0 F40\n";
-    for (int row = 0; row < 12; ++row)
-      out << "G1 X" << (row % 2 ? 0 : 20) << " Y" << row << (row == 3 ? " F9991300" : "") << "\nG1 Y" << row + 1
-          << (row == 3 ? " F40" : "") << "\n";
-    out << "M2\n";
-  }
-  panels::HeadlessUi ui(kWidth, kHeight, app_model::Settings{});
-  ui.inspector().open(program.string());
-  waitForJobs(ui);
-  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
-  waitForJobs(ui);
-  ASSERT_EQ(ui.inspector().documentCount(), 2u) << ui.inspector().statusText();
-  EXPECT_EQ(ui.inspector().statusText().find("inches"), std::string::npos) << "the status has moved on";
-  const nlohmann::json warnings = described(ui)["documents"][0]["warnings"];
-  ASSERT_EQ(warnings.size(), 2u) << warnings;
-  EXPECT_NE(warnings[0].get<std::string>().find("its comments speak of inches"), std::string::npos) << warnings;
-  EXPECT_NE(warnings[1].get<std::string>().find(program.string() + ":11:"), std::string::npos) << warnings;
-  tapLetter(ui, 'W');
-  ASSERT_TRUE(described(ui)["windows"]["warnings"].get<bool>());
-  clickControl(ui, "warnings.item:0:1");
-  settle(ui);
-  const nlohmann::json state = described(ui);
-  EXPECT_EQ(state["active"], 0);
-  EXPECT_EQ(state["selection"]["line"], 11);
-}
-
 TEST(workingDay, AnInchProgramIsShownInInches) {
   const std::filesystem::path inch = test::scratchDir() / "inch-raster.nc";
   {
@@ -418,34 +367,6 @@ TEST(workingDay, AFixedRangeStartsAsTheRangeShown) {
   EXPECT_GT(colour["fixed"][1].get<double>(), 100.0);
   EXPECT_NEAR(colour["fixed"][0].get<double>(), -colour["fixed"][1].get<double>(), 1e-3);
   EXPECT_EQ(shown["quantity"], "Tangential acceleration");
-}
-
-// Enter in a field of the fixed range applies it; the Colour panel then shows the range of the
-// map of whichever document is shown.
-TEST(workingDay, AFixedRangeIsAppliedByEnterAndFollowsTheDocumentShown) {
-  auto ui = openedSample();
-  clickControl(*ui, "range.fixed");
-  waitForJobs(*ui);
-  typeInto(*ui, "range.low", "2000");
-  tap(*ui, ImGuiKey_Enter);
-  waitForJobs(*ui);
-  typeInto(*ui, "range.high", "2500");
-  tap(*ui, ImGuiKey_Enter);
-  waitForJobs(*ui);
-  nlohmann::json map = described(*ui)["map"];
-  EXPECT_DOUBLE_EQ(map["range"][0].get<double>(), 2000.0) << map;
-  EXPECT_DOUBLE_EQ(map["range"][1].get<double>(), 2500.0) << map;
-  // A second document, its map at 1-99 %.
-  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
-  waitForJobs(*ui);
-  clickControl(*ui, "range.percentile");
-  waitForJobs(*ui);
-  EXPECT_EQ(described(*ui)["colour"]["range_mode"], 0);
-  ui->inspector().showDocument(0);
-  settle(*ui);
-  const nlohmann::json colour = described(*ui)["colour"];
-  EXPECT_EQ(colour["range_mode"], 2) << "the panel says what the map shown is: fixed";
-  EXPECT_DOUBLE_EQ(colour["fixed"][1].get<double>(), 2500.0);
 }
 
 TEST(workingDay, LocateStartsAtTheSelectionAndSaysWhenARequestIsOutOfRange) {

@@ -52,7 +52,11 @@ std::string figuresJson(const Document& doc) {
                         {"passes", doc.map.passes.passes.size()},
                         {"values", valueFigures(doc.map.data.scalars)}};
   if (doc.map.mesh) {
-    const QualityFigures f = measureQualityFigures(*doc.samples, *vis::figuresMesh(*doc.samples, doc.map));
+    // The values at the figures' resolution, where the map's range is taken too, whatever the
+    // window's size thinned the map to.
+    const std::shared_ptr<const SurfaceMesh> mesh = vis::figuresMesh(*doc.samples, doc.map);
+    out["values"] = valueFigures(vis::vertexValuesShown(doc.map.request, *doc.samples, *mesh));
+    const QualityFigures f = measureQualityFigures(*doc.samples, *mesh);
     out["figures"] = {{"surface_samples", f.samples},
                       {"speed_fluctuation_mm_min", f.speedFluctuation},
                       {"inconsistency_p99_mm_min", f.inconsistencyP99},
