@@ -41,7 +41,23 @@ void onDrop(GLFWwindow*, int count, const char** paths) {
 std::set<int> pressedSinceFrame;
 std::vector<std::array<int, 4>> heldReleases;
 
+// Dear ImGui 1.86 inserts a frame's typed characters before it acts on the frame's key presses:
+// "out/exp.json" typed right after Ctrl+A, in one batch of events, had "ou" inserted and then
+// selected and replaced by the next character. Characters that come after a shortcut (a key with
+// Ctrl) not yet seen by a frame wait for the frame after it, and so do those after them.
+bool shortcutSinceFrame = false;
+std::vector<unsigned int> heldCharacters;
+
+void onChar(GLFWwindow* window, unsigned int character) {
+  if (shortcutSinceFrame || !heldCharacters.empty()) {
+    heldCharacters.push_back(character);
+    return;
+  }
+  ImGui_ImplGlfw_CharCallback(window, character);
+}
+
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  if (action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL) != 0) shortcutSinceFrame = true;
   if (action == GLFW_RELEASE && (!pressedSinceFrame.empty() || !heldReleases.empty())) {
     heldReleases.push_back({key, scancode, action, mods});
     return;
@@ -123,12 +139,16 @@ bool mouseFrameDue(GLFWwindow* window) {
   return false;
 }
 
-// After a frame: the releases it waited for. Returns whether there were any (another frame is due).
+// After a frame: the releases and characters it waited for. Returns whether there were any (another
+// frame is due).
 bool releaseHeldKeys(GLFWwindow* window) {
   pressedSinceFrame.clear();
-  const bool any = !heldReleases.empty();
+  shortcutSinceFrame = false;
+  const bool any = !heldReleases.empty() || !heldCharacters.empty();
   for (const auto& r : heldReleases) ImGui_ImplGlfw_KeyCallback(window, r[0], r[1], r[2], r[3]);
   heldReleases.clear();
+  for (const unsigned int c : heldCharacters) ImGui_ImplGlfw_CharCallback(window, c);
+  heldCharacters.clear();
   return any;
 }
 
@@ -238,6 +258,7 @@ int run(int argc, char** argv) {
   ImGui::GetIO().IniFilename = nullptr;  // the layout is fixed; settings.json keeps the rest
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   glfwSetKeyCallback(window, onKey);  // in front of Dear ImGui's, which it calls
+  glfwSetCharCallback(window, onChar);  // so too
   glfwSetMouseButtonCallback(window, onMouseButton);  // so too
   ImGui_ImplOpenGL3_Init("#version 150");
   {

@@ -390,3 +390,22 @@ TEST(drivenWindow, RecentFilesOutliveAWindowEndedByASignal) {
     return std::filesystem::path(path).filename() == "transition-surface.nc";
   })) << readFile(settings.string());
 }
+
+// Text typed right after Ctrl+A, in the same instant (a fast typist, or a pasting tool), replaces
+// the field whole: "out/exp.json" became "t/exp.json" when the first characters were inserted
+// before the select-all.
+TEST(drivenWindow, TextTypedRightAfterCtrlAIsKeptWhole) {
+  if (!installed("Xvfb") || !installed("xdotool")) GTEST_SKIP() << "Xvfb or xdotool is not installed";
+#ifdef ISURFACE_SANITIZED
+  GTEST_SKIP() << "the driven session needs the uninstrumented window's frame rate";
+#endif
+  const std::filesystem::path home = scratchDir() / "driven-ctrl-a";
+  std::filesystem::remove_all(home);
+  DrivenWindow w(home, {sourcePath("samples/transition-surface.nc")});
+  ASSERT_TRUE(w.waitFor([](const json& s) { return idle(s) && s["documents"].size() == 1; }, 60)) << readFile(w.logPath());
+  w.key("ctrl+e");
+  w.clickControl("export.path");
+  w.xdotool("key ctrl+a type --delay 1 'out/exp.json'");
+  EXPECT_TRUE(w.waitFor([](const json& s) { return s["export_path"] == "out/exp.json"; }, 10)) << w.state()["export_path"];
+}
+
