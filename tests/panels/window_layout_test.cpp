@@ -1,6 +1,7 @@
 // The window's layout holds at small sizes: a long status is cut at its end, the picked
 // sample's read-out stays inside a narrow view.
 #include <gtest/gtest.h>
+#include <imgui.h>
 
 #include <array>
 #include <nlohmann/json.hpp>
@@ -11,7 +12,7 @@
 #include "ui_driving.h"
 
 using namespace isurface;
-using test::settle, test::described, test::waitForJobs;
+using test::settle, test::described, test::waitForJobs, test::clickControl, test::tap;
 
 namespace {
 
@@ -84,3 +85,16 @@ TEST(windowLayout, TheReadOutStaysInsideANarrowView) {
   EXPECT_LE(readout[3], view[3]);
   EXPECT_GT(readout[3] - readout[1], wideHeight) << "more lines where the view is narrower";
 }
+
+// Esc closes an open menu of the bar, as in any desktop application.
+TEST(windowLayout, EscClosesAnOpenMenu) {
+  panels::HeadlessUi ui(1280, 800, app_model::Settings{});
+  settle(ui);
+  clickControl(ui, "menu.file");
+  settle(ui);
+  ASSERT_TRUE(described(ui)["windows"]["menu"].get<bool>());
+  tap(ui, ImGuiKey_Escape);
+  settle(ui);
+  EXPECT_FALSE(described(ui)["windows"]["menu"].get<bool>());
+}
+

@@ -93,7 +93,8 @@ std::string Inspector::describe() const {
                             {"optimise", s.optimiseDialogOpen},
                             {"replace_question", s.overwriteQuestion.has_value()},
                             {"help", s.helpOpen},
-                            {"warnings", s.warningsOpen}};
+                            {"warnings", s.warningsOpen},
+                            {"menu", s.menuOpen}};
   nlohmann::json map = nlohmann::json::object();
   if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
     map = {{"quantity", doc->map.style.quantityLabel},

@@ -233,6 +233,7 @@ struct Inspector::State {
   int locateSample = 0, locateLine = 1;  // the locate window's fields
   bool locateOpen = false;
   bool warningsOpen = false;  // the warnings window (W)
+  bool menuOpen = false;      // a menu of the bar is open (last frame)
   std::string locateMessage;  // why the last request went nowhere  // which extra channel the fourth curve shows
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
   // Opens a program or a dump: a dump joins the active program when that has none yet.

@@ -100,9 +100,16 @@ void beginPanel(const char* name, float x, float y, float w, float h, int extraF
   ImGui::Begin(name, nullptr, kPanel | extraFlags);
 }
 
+// Inside a menu of the bar: Esc closes it (Dear ImGui 1.86 does only with keyboard navigation on).
+void closeMenuOnEscape(Inspector::State& s) {
+  s.menuOpen = true;
+  if (s.takeEscape()) ImGui::CloseCurrentPopup();
+}
+
 void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   bool simulate = false, locate = false;
   const bool boxSelectWasOn = s.boxSelect;
+  s.menuOpen = false;
   if (ImGui::BeginMainMenuBar()) {
     const bool fileMenu = ImGui::BeginMenu("File");
     noteControl(s, "menu.file");
@@ -124,6 +131,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Export...", "Ctrl+E", false, s.activeDocument() != nullptr)) s.exportDialog = true;
       if (ImGui::MenuItem("Close", "Ctrl+W", false, s.activeDocument() != nullptr)) s.closeActive();
       if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.quit = true;
+      closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("View")) {
@@ -136,6 +144,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       ImGui::MenuItem("Warnings", "W", &s.warningsOpen);
       ImGui::Separator();
       drawLookMenus(s);
+      closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Colour by")) {
@@ -146,6 +155,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
           if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was the other quantity's
           s.startRecolour();
         }
+      closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Tools")) {
@@ -155,10 +165,12 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
       ImGui::MenuItem("Select region box", "B", &s.boxSelect);
       if (ImGui::MenuItem("Measure distance", "D", s.measuring)) toggleMeasure(s);
+      closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
       if (ImGui::MenuItem("Keys and version", "H", s.helpOpen)) s.helpOpen = !s.helpOpen;
+      closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     ImGui::EndMainMenuBar();
