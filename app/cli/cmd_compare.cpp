@@ -146,9 +146,15 @@ int runCompare(const CompareOptions& o) {
   const Program* programPointer = program ? &*program : nullptr;
   const Trajectory a = loadRun(o.runA, programPointer, o.linuxcncLines);
   const Trajectory b = loadRun(o.runB, programPointer, o.linuxcncLines);
-  if (!o.force)
+  if (!o.force) {
     if (const auto why = runsMismatch(a, b))
       throw InputError(Diagnostic{o.runB, 0, 0, "is not a run of " + o.runA + "'s program: " + *why + " (--force compares them anyway)"});
+    // The program given must be the one they ran: its lines name their samples in the report.
+    if (program)
+      for (const auto& [run, path] : {std::pair<const Trajectory&, const std::string&>{a, o.runA}, {b, o.runB}})
+        if (const auto why = samplesMismatch(run, *program))
+          throw InputError(Diagnostic{o.gcode, 0, 0, "is not the program " + path + " ran: " + *why + " (--force compares them anyway)"});
+  }
   ProgressLine progress("comparing");
   const RunComparison comparison = compareRuns(a, b, o.comparison);
   progress.finish();

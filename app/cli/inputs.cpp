@@ -43,11 +43,15 @@ void MachineOption::addTo(CLI::App& sub, const std::string& help) {
 }
 
 void GapLimitOption::addTo(CLI::App& sub) {
-  sub.add_option("--gap-limit", mm, "mm; passes further apart are not joined into the surface")->capture_default_str();
+  // Passes a kilometre apart are not one surface: an infinite gap would join anything to anything.
+  sub.add_option("--gap-limit", mm, "mm; passes further apart are not joined into the surface")
+      ->capture_default_str()
+      ->check(numberFrom(0, 1e6, true));
 }
 
 double GapLimitOption::checked() const {
-  if (!(mm > 0)) throw InputError(Diagnostic{"", 0, 0, "the gap limit (--gap-limit) must be greater than 0 mm"});
+  if (!(mm > 0) || !(mm <= 1e6))
+    throw InputError(Diagnostic{"", 0, 0, "the gap limit (--gap-limit) must be greater than 0 mm and at most 1e6 mm"});
   return mm;
 }
 

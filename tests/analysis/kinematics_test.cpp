@@ -296,6 +296,25 @@ TEST(kinematics, StreamingSummaryMatchesTheArrays) {
   }
 }
 
+// An infinite position (a dump with x = inf, or 1e300) is left out of the maxima, as a NaN is:
+// the summary's maxima are those of the finite samples, not inf.
+TEST(kinematics, AnInfiniteSampleIsLeftOutOfTheMaxima) {
+  for (const double bad : {HUGE_VAL, -HUGE_VAL, 1e300}) {
+    const std::size_t n = 200;
+    std::vector<double> x(n), y(n), z(n);
+    for (std::size_t i = 0; i < n; ++i) x[i] = 0.05 * i, y[i] = 0.001 * i * i * 0.001, z[i] = 0;
+    const KinematicsSummary clean = summarizeKinematics(x.data(), y.data(), z.data(), nullptr, n, 0.001);
+    x[100] = bad;
+    const KinematicsSummary s = summarizeKinematics(x.data(), y.data(), z.data(), nullptr, n, 0.001);
+    EXPECT_TRUE(std::isfinite(s.maxSpeed)) << bad;
+    EXPECT_TRUE(std::isfinite(s.maxAccel)) << bad;
+    EXPECT_TRUE(std::isfinite(s.maxJerk)) << bad;
+    EXPECT_TRUE(std::isfinite(s.axis[0].speed) && std::isfinite(s.axis[0].accel) && std::isfinite(s.axis[0].jerk)) << bad;
+    EXPECT_NEAR(s.maxSpeed, clean.maxSpeed, 1e-9 * clean.maxSpeed) << bad;
+    EXPECT_LT(s.finiteSamples, clean.finiteSamples) << bad;
+  }
+}
+
 // A map derives only at its vertices' samples; every value must be the one of the whole
 // derivation, bit for bit: at the ends (one-sided stencils), beside a bad sample, in any order.
 TEST(kinematics, ValuesAtChosenSamplesAreThoseOfTheWholeArrays) {

@@ -161,6 +161,8 @@ void writeInputs() {
   { BiipSpec b; b.cycle = -0.001; writeBytes("cycle_neg.biip", biip(b)); }
   { BiipSpec b; b.cycle = std::nan(""); writeBytes("cycle_nan.biip", biip(b)); }
   { BiipSpec b; b.cycle = HUGE_VAL; writeBytes("cycle_inf.biip", biip(b)); }
+  { BiipSpec b; b.cycle = 5e-324; writeBytes("cycle_tiny.biip", biip(b)); }
+  { BiipSpec b; b.cycle = 1e300; writeBytes("cycle_huge.biip", biip(b)); }
   { BiipSpec b; b.channels[0].name = "w"; writeBytes("no_x.biip", biip(b)); }
   { BiipSpec b; b.recordBytes = 0; writeBytes("record0.biip", biip(b)); }
   { BiipSpec b; b.recordBytes = 5000; b.records = 1; writeBytes("record_huge.biip", biip(b)); }
@@ -301,13 +303,17 @@ const std::vector<Row>& catalogue() {
       {"biip_duplicate_channel", "info {in}/dup_chan.biip -o {out}/dup_chan.json", 2,
        {"dup_chan.biip", "two channels are named 'x'"}, "dup_chan.json"},
       {"biip_cycle_zero", "info {in}/cycle0.biip -o {out}/cycle0.json", 2,
-       {"cycle0.biip", "is not a finite number > 0"}, "cycle0.json"},
+       {"cycle0.biip", "is not a sample period (1e-6 to 60 s)"}, "cycle0.json"},
       {"biip_cycle_negative", "info {in}/cycle_neg.biip -o {out}/cycle_neg.json", 2,
-       {"cycle_neg.biip", "cycle_s -0.001", "is not a finite number > 0"}, "cycle_neg.json"},
+       {"cycle_neg.biip", "cycle_s -0.001", "is not a sample period"}, "cycle_neg.json"},
       {"biip_cycle_nan", "export {in}/cycle_nan.biip --vtp {out}/cycle_nan.vtp", 2,
-       {"cycle_nan.biip", "cycle_s nan is not a finite number > 0"}, "cycle_nan.vtp"},
+       {"cycle_nan.biip", "cycle_s nan is not a sample period"}, "cycle_nan.vtp"},
       {"biip_cycle_inf", "locate {in}/cycle_inf.biip --sample 0", 2,
-       {"cycle_inf.biip", "cycle_s inf is not a finite number > 0"}, ""},
+       {"cycle_inf.biip", "cycle_s inf is not a sample period"}, ""},
+      {"biip_cycle_tiny", "info {in}/cycle_tiny.biip -o {out}/cycle_tiny.json", 2,
+       {"cycle_tiny.biip", "cycle_s 4.94066e-324 is not a sample period"}, "cycle_tiny.json"},
+      {"biip_cycle_huge", "compare {in}/cycle_huge.biip {in}/cycle_huge.biip -o {out}/cycle_huge.json", 2,
+       {"cycle_huge.biip", "cycle_s 1e+300 is not a sample period"}, "cycle_huge.json"},
       {"biip_no_x_channel", "info {in}/no_x.biip -o {out}/no_x.json", 2,
        {"no_x.biip", "no 'x' channel"}, "no_x.json"},
       {"biip_record_bytes_zero", "info {in}/record0.biip -o {out}/record0.json", 2,

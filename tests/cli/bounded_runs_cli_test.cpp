@@ -39,6 +39,33 @@ TEST(BoundedRuns, TheBoundIsTheUsersToSet) {
   EXPECT_EQ(accepted.exitCode, 0) << accepted.err;
 }
 
+// LinuxCNC's planner runs cycle by cycle: a move at a crawl (an acceleration of 1e-12 mm/s^2)
+// is stopped at the bound as it is sampled, not after years of samples.
+TEST(BoundedRuns, ACrawlOnLinuxCncsPlannerStopsAtTheBound) {
+  const std::string program = writeScratch("crawl.nc", "G21 G90 F1000\nG1 X1\nM30\n");
+  const std::string machine = writeScratch(
+      "crawl-machine.json",
+      R"({"control": {"planner": "linuxcnc-2.9"}, "axes": {"x": {"max_acceleration_mm_s2": 1e-12},
+          "y": {"max_acceleration_mm_s2": 1e-12}, "z": {"max_acceleration_mm_s2": 1e-12}}})");
+  const std::string dump = (scratchDir() / "crawl.biip").string();
+  const auto r = runCli("simulate " + program + " --machine " + machine + " -o " + dump + " --max-hours 0.2");
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("crawl.nc:2:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the run passes 0.2 h of machining"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dump));
+}
+
+// A pipe that never ends with text (every line the same zero-length move, which takes no time)
+// is refused once it passes 2 GB, within seconds, and nothing is written.
+TEST(BoundedRuns, ATextPipeThatNeverEndsIsRefused) {
+  const std::string dump = (scratchDir() / "endless-pipe.biip").string();
+  const auto r = isurface::test::runShell("yes 'G1 X1 F100' | timeout 120 " + std::string(isurface::test::cliProgram()) +
+                                         " simulate /dev/stdin -o " + dump);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("more than 2 GB through a pipe"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dump));
+}
+
 TEST(BoundedRuns, BinaryDataOnAPipeIsRefusedAtOnce) {
   const auto r = runCli("canon /dev/zero");
   EXPECT_EQ(r.exitCode, 2) << r.err;

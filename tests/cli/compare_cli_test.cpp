@@ -78,7 +78,7 @@ TEST(compareCli, badInputsExitWithTwoAndWriteNothing) {
       {a + " " + other, "shares no G-code line"},
       {a + " " + a + " --quantity jerk", "unknown quantity"},
       {a + " " + a + " --range 5:1", "5:1"},
-      {a + " " + a + " --gap-limit 0", "gap limit"},
+      {a + " " + a + " --gap-limit 0", "--gap-limit: 0 must be above 0"},
       {a + " " + a + " --cmap nosuch", "nosuch"},
       {a + " " + a + " --pattern spiral", "spiral"},
   };
@@ -104,6 +104,20 @@ TEST(compareCli, runsOfDifferentProgramsAreRefusedUnlessForced) {
   EXPECT_FALSE(fileExists(out));
   EXPECT_EQ(runCli("compare " + a + " " + b + " -o " + out + " --force").exitCode, 0);
   EXPECT_TRUE(fileExists(out));
+}
+
+// The program given with --gcode names the runs' lines in the report: one that neither ran is
+// refused as another dump is.
+TEST(compareCli, aProgramNeitherRunRanIsRefusedUnlessForced) {
+  const std::string here = writeText("here-again.nc", "G1 X10 F1000\nG1 X20\nG1 X30\n");
+  const std::string a = simulated(here, "here-a.biip"), b = simulated(here, "here-b.biip");
+  const std::string other = writeText("elsewhere.nc", "G1 Y50 F1000\nG1 Y60\nG1 Y70\n");
+  const std::string out = scratch("wrong-program.json");
+  const CommandResult refused = runCli("compare " + a + " " + b + " -o " + out + " --gcode " + other);
+  EXPECT_EQ(refused.exitCode, 2) << refused.err;
+  EXPECT_NE(refused.err.find("elsewhere.nc: is not the program"), std::string::npos) << refused.err;
+  EXPECT_FALSE(fileExists(out));
+  EXPECT_EQ(runCli("compare " + a + " " + b + " -o " + out + " --gcode " + here).exitCode, 0);
 }
 
 TEST(compareCli, linuxcncRecordingAgainstOurSimulation) {

@@ -27,6 +27,8 @@ TEST(numberOptions, ValuesAnOptionCannotMeanAreRefusedNamingTheOption) {
       {"analyze " + program + " -o " + out + " --speed-threshold nan", "--speed-threshold: nan is not a finite number"},
       {"intervals " + program + " -o " + out + " --dist-ratio 1", "--dist-ratio: 1 must be above 1"},
       {"sts --surface toric -o " + out + " --spindle-rpm 1e308", "--spindle-rpm: 1e308 must be from"},
+      {"analyze " + program + " -o " + out + " --gap-limit inf", "--gap-limit: inf is not a finite number"},
+      {"analyze " + program + " -o " + out + " --gap-limit 1e400", "--gap-limit: 1e400"},
   };
   for (const auto& c : cases) {
     const CommandResult r = runCli(c.args);

@@ -268,3 +268,37 @@ TEST(Report, LongProgramLinesAreCutWhereTheReportShowsThem) {
   EXPECT_NE(text.find("characters)"), std::string::npos);
   EXPECT_EQ(text.find(std::string(1000, 'x')), std::string::npos);
 }
+
+namespace {
+
+// Whether every byte sequence of `text` is well-formed UTF-8 (as a page that says so must be).
+bool wellFormedUtf8(const std::string& text) {
+  for (std::size_t i = 0; i < text.size();) {
+    const auto b = [&](std::size_t k) { return i + k < text.size() ? static_cast<unsigned char>(text[i + k]) : 0u; };
+    const unsigned lead = b(0);
+    std::size_t length = lead < 0x80 ? 1 : lead >= 0xC2 && lead <= 0xDF ? 2 : lead >= 0xE0 && lead <= 0xEF ? 3
+                                     : lead >= 0xF0 && lead <= 0xF4 ? 4 : 0;
+    if (length == 0) return false;
+    for (std::size_t k = 1; k < length; ++k)
+      if (b(k) < 0x80 || b(k) > 0xBF) return false;
+    i += length;
+  }
+  return true;
+}
+
+}  // namespace
+
+// A program whose file name is not UTF-8 (Latin-1 from an old share) is reported under its name
+// with replacement characters: the page says it is UTF-8 and holds only UTF-8.
+TEST(Report, AFileNameThatIsNotUtf8MakesAWellFormedPage) {
+  const fs::path folder = scratchDir() / "latin1-name";
+  fs::create_directories(folder);
+  const fs::path program = folder / "r\xe9sum\xe9.nc";
+  fs::copy_file(isurface::test::sourcePath("samples/transition-surface.nc"), program, fs::copy_options::overwrite_existing);
+  const std::string html = (scratchDir() / "latin1-name.html").string();
+  const auto r = runCli("report '" + program.string() + "' -o " + html);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const std::string page = readAll(html);
+  EXPECT_TRUE(wellFormedUtf8(page));
+  EXPECT_NE(page.find("r\xEF\xBF\xBDsum\xEF\xBF\xBD.nc"), std::string::npos);
+}

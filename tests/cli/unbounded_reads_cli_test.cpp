@@ -32,3 +32,24 @@ TEST(unboundedReads, ADeviceOrAHugeFileAsADescriptionIsRefusedAtOnce) {
     EXPECT_FALSE(fileExists(out));
   }
 }
+
+// A named pipe nobody writes to, given as a program, a dump or a machine description, is read at
+// once as what it holds, nothing (an empty program: `canon` lists no move, as of an empty file;
+// the others refuse it, naming it), instead of the command waiting for a writer for ever.
+TEST(unboundedReads, ANamedPipeWithoutAWriterIsNotWaitedFor) {
+  const std::filesystem::path fifo = scratchDir() / "nobody-writes";
+  std::filesystem::remove(fifo);
+  ASSERT_EQ(runShell("mkfifo '" + fifo.string() + "'").exitCode, 0);
+  const std::string out = (scratchDir() / "fifo-out.biip").string();
+  const CommandResult listed = runShell("timeout 20 " + std::string(cliProgram()) + " canon " + fifo.string());
+  EXPECT_EQ(listed.exitCode, 0) << listed.err;  // 124: it waited
+  EXPECT_EQ(listed.out, "");
+  for (const std::string& args : {"simulate " + fifo.string() + " -o " + out, "info " + fifo.string(),
+                                  "simulate " + sourcePath("samples/transition-surface.nc") + " --machine " +
+                                      fifo.string() + " -o " + out}) {
+    const CommandResult r = runShell("timeout 20 " + std::string(cliProgram()) + " " + args);
+    EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
+    EXPECT_NE(r.err.find("nobody-writes"), std::string::npos) << args << "\n" << r.err;
+  }
+  EXPECT_FALSE(std::filesystem::exists(out));
+}

@@ -54,6 +54,11 @@ TEST(gcodeSubprograms, MistakesAreErrors) {
   EXPECT_EQ(firstError("G21\nM98 P7\nM30\nO7\nM99 P40\n"), "t.ngc:5:5: M99 P40: no block N40 in the calling program");
   const std::string deep = firstError("O5\nM98 P5\n");
   EXPECT_NE(deep.find("nested deeper than 200"), std::string::npos) << deep;
+  // A count past the controls' most says so, not that it is not whole.
+  EXPECT_EQ(firstError("G21\nM98 P7 L100000\nM30\nO7\nM99\n"),
+            "t.ngc:2:8: M98 L must be a whole number of runs from 0 to 99999 (it is 100000)");
+  EXPECT_EQ(firstError("G21\nG65 P7 L2.5\nM30\nO7\nM99\n"),
+            "t.ngc:2:8: G65 L must be a whole number of runs from 0 to 99999 (it is 2.5)");
 }
 
 TEST(gcodeSubprograms, M99PReturnsToTheNumberedBlockOfTheCaller) {

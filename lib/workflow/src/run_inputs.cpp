@@ -156,6 +156,10 @@ std::optional<Machine> machineOfDump(const BiipReader& reader) {
   }
 }
 
+std::optional<std::string> samplesMismatch(const Trajectory& samples, const Program& program) {
+  return pathMismatch(samples, program);
+}
+
 std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory& samples, const Program& program) {
   if (auto why = sourceMismatch(dump, program)) return why;
   return pathMismatch(samples, program);

@@ -2,6 +2,7 @@
 #include "isurface/analysis/kinematics.h"
 
 #include <cmath>
+#include <limits>
 
 #include "isurface/base/units.h"
 
@@ -152,6 +153,8 @@ PathValues pathValues(const Derivatives& d) {
   return p;
 }
 
+constexpr double kInfinite = std::numeric_limits<double>::infinity();
+
 // While accumulating, the path maxima are held squared (one square root per new maximum rather
 // than three per sample); finished() takes the roots.
 void accumulate(KinematicsSummary& s, std::size_t i, const Derivatives& d) {
@@ -159,25 +162,26 @@ void accumulate(KinematicsSummary& s, std::size_t i, const Derivatives& d) {
   const double a2 = d.a[0] * d.a[0] + d.a[1] * d.a[1] + d.a[2] * d.a[2];
   const double j2 = d.j[0] * d.j[0] + d.j[1] * d.j[1] + d.j[2] * d.j[2];
   ++s.samples;
-  // NaN compares false: non-finite values never become maxima.
-  if (v2 > s.maxSpeed) {
+  // Non-finite values never become maxima: NaN compares false, and an infinite one (a position
+  // of inf or 1e300 in a dump) is left out as the docs say, not reported as the maximum.
+  if (v2 > s.maxSpeed && v2 < kInfinite) {
     s.maxSpeed = v2;
     s.maxSpeedIndex = i;
   }
-  if (a2 > s.maxAccel) {
+  if (a2 > s.maxAccel && a2 < kInfinite) {
     s.maxAccel = a2;
     s.maxAccelIndex = i;
   }
-  if (j2 > s.maxJerk) {
+  if (j2 > s.maxJerk && j2 < kInfinite) {
     s.maxJerk = j2;
     s.maxJerkIndex = i;
   }
   for (int ax = 0; ax < 3; ++ax) {
     KinematicsMaxima& m = s.axis[ax];
     const double v = std::fabs(d.v[ax]), a = std::fabs(d.a[ax]), j = std::fabs(d.j[ax]);
-    if (v > m.speed) m.speed = v;
-    if (a > m.accel) m.accel = a;
-    if (j > m.jerk) m.jerk = j;
+    if (v > m.speed && v < kInfinite) m.speed = v;
+    if (a > m.accel && a < kInfinite) m.accel = a;
+    if (j > m.jerk && j < kInfinite) m.jerk = j;
   }
   s.finiteSamples += static_cast<std::size_t>((v2 - v2) + (a2 - a2) + (j2 - j2) == 0);
 }

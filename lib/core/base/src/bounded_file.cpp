@@ -29,9 +29,16 @@ struct OpenFile {
 
 }  // namespace
 
+int openForReading(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_CLOEXEC | O_NONBLOCK);
+  if (fd < 0) return fd;
+  const int flags = fcntl(fd, F_GETFL);
+  if (flags >= 0) fcntl(fd, F_SETFL, flags & ~O_NONBLOCK);
+  return fd;
+}
+
 std::string readBoundedFile(const std::string& path, const BoundedRead& limits) {
-  // Non-blocking: opening a FIFO without a writer would wait for ever.
-  const OpenFile file{open(path.c_str(), O_RDONLY | O_CLOEXEC | (limits.regularOnly ? O_NONBLOCK : 0))};
+  const OpenFile file{openForReading(path)};
   if (file.fd < 0) fail(path, fmt::format("cannot open {}: {}", limits.what, std::strerror(errno)));
   struct stat info {};
   if (fstat(file.fd, &info) != 0) fail(path, fmt::format("cannot read {}: {}", limits.what, std::strerror(errno)));

@@ -20,6 +20,7 @@
 #include <optional>
 
 #include "interpreter_state.h"
+#include "isurface/base/bounded_file.h"
 #include "isurface/base/shrink_guard.h"
 #include "isurface/base/input_files.h"
 
@@ -429,8 +430,9 @@ namespace {
 using TextUse = std::function<void(std::string_view, bool)>;
 
 // A program read from a pipe is copied to an unlinked temporary file and mapped like any other,
-// so that it costs disk, not memory. Beyond this it is refused: save it to a file.
-constexpr std::uint64_t kLargestPipedProgram = std::uint64_t{16} << 30;  // bytes
+// so that it costs disk, not memory. Beyond this it is refused: save it to a file. A pipe that
+// never ends (`yes 'G1 X1' |`) reaches it in seconds; at 16 GB it filled a disk first.
+constexpr std::uint64_t kLargestPipedProgram = std::uint64_t{2} << 30;  // bytes
 
 // Maps `size` bytes of `fd` and calls use(text, true), guarded against the file shrinking under
 // the mapping. Returns nullopt when the file cannot be mapped, else why it could not be read
@@ -496,7 +498,7 @@ std::variant<std::pair<int, std::uint64_t>, std::string> spool(int fd) {
 // ahead when `readAhead`), a pipe or a device copied to a temporary file first. Returns why the
 // file could not be read, or an empty string.
 std::string withFileText(const std::string& path, bool readAhead, const TextUse& use) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = openForReading(path);
   if (fd < 0) return fmt::format("cannot open: {}", std::strerror(errno));
   try {
     noteInputFile(fd, path);

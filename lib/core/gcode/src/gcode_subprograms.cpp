@@ -69,7 +69,7 @@ bool InterpreterState::subprogram(const Block& block, int code) {
     if (block.has(letter)) {
       const double l = block.get(letter);
       if (l < 0 || std::fabs(l - std::nearbyint(l)) > kWholeNumberTolerance || l > 99999)
-        return fail(block.col(letter), fmt::format("M98 {} must be a whole number of runs", letter));
+        return fail(block.col(letter), fmt::format("M98 {} must be a whole number of runs from 0 to 99999 (it is {:g})", letter, l));
       times = static_cast<long>(std::nearbyint(l));
     }
   const ControlFlow::Outcome out = flow_.callProgram(*program, {}, false, times, lineStart_, nextLine_, column);
@@ -86,7 +86,7 @@ bool InterpreterState::macroCall(const Block& block, std::uint32_t column) {
   if (block.has('L')) {
     const double l = block.get('L');
     if (l < 0 || std::fabs(l - std::nearbyint(l)) > kWholeNumberTolerance || l > 99999)
-      return fail(block.col('L'), "G65 L must be a whole number of runs");
+      return fail(block.col('L'), fmt::format("G65 L must be a whole number of runs from 0 to 99999 (it is {:g})", l));
     times = static_cast<long>(std::nearbyint(l));
   }
   std::vector<std::pair<int, double>> arguments;

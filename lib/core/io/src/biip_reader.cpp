@@ -17,6 +17,7 @@
 
 #include "isurface/io/biip.h"
 #include "isurface/base/input_files.h"
+#include "isurface/base/bounded_file.h"
 #include "isurface/base/diagnostic.h"
 
 namespace isurface {
@@ -142,7 +143,7 @@ void BiipReader::checkIntact() const {
 }
 
 void BiipReader::mapFile() {
-  const int fd = ::open(path_.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = openForReading(path_);
   if (fd < 0) refuse("cannot read: " + std::error_code(errno, std::generic_category()).message());
   try {
     noteInputFile(fd, path_);
@@ -205,8 +206,10 @@ std::pair<std::uint32_t, std::uint32_t> BiipReader::parseFixedHeader() {
   if (h.recordBytes == 0 || h.recordBytes > kBiipMaxRecordBytes) {
     refuse("record_bytes " + std::to_string(h.recordBytes) + " is outside 1..4096");
   }
-  if (!std::isfinite(h.cycleSeconds) || h.cycleSeconds <= 0) {
-    refuse("cycle_s " + std::to_string(h.cycleSeconds) + " is not a finite number > 0");
+  // The sample periods a control or a recorder has (import --cycle takes the same): 5e-324 s or
+  // 1e300 s made every speed infinite or zero.
+  if (!(h.cycleSeconds >= 1e-6 && h.cycleSeconds <= 60)) {
+    refuse(fmt::format("cycle_s {:g} is not a sample period (1e-6 to 60 s)", h.cycleSeconds));
   }
   const std::uint64_t tableEnd = kBiipFixedHeaderBytes + std::uint64_t(kBiipChannelEntryBytes) * channelCount;
   const std::uint64_t minimumHeader = tableEnd + metadataBytes;

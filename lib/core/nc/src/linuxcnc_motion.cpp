@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "isurface/base/geometry.h"
+#include "isurface/nc/run_bound.h"
 #include "isurface/nc/servo.h"
 #include "linuxcnc_arc_blend.h"
 #include "linuxcnc_blend.h"
@@ -353,6 +354,10 @@ void LinuxCncMotion::Impl::flushBatch() {
   summary.samples += batch.size();
   if (!batch.empty()) sink.consumeBatch(batch);
   batch.clear();
+  // Cycle by cycle, a move at a crawl (an acceleration of 1e-12 mm/s^2) would run for years of
+  // samples before its planned time were known: the run's bound is checked as it is sampled.
+  const double seconds = double(summary.samples) * machine.cycle;
+  if (seconds > machine.longestRun) throw runTooLongError(machine, "", lastPart.line, 0);
 }
 
 LinuxCncMotion::LinuxCncMotion(const Machine& machine, const Vec3& start, SampleSink& sink)

@@ -2,6 +2,7 @@
 
 #include "isurface/nc/feed_cap_notes.h"
 #include "isurface/nc/linuxcnc_motion.h"
+#include "isurface/nc/run_bound.h"
 
 #include <fmt/format.h>
 
@@ -32,11 +33,7 @@ InputError naming(const InputError& e, const std::string& source) {
 // made: `move` is where the plan passes it (null: at the end).
 void checkRunLength(double seconds, const Machine& machine, const Move* move, const std::string& source) {
   if (seconds <= machine.longestRun) return;
-  throw InputError(Diagnostic{
-      source, move ? move->line : 0, move ? move->column : 0u,
-      fmt::format("the run passes {:.4g} h of machining here ({:.4g} samples at {:g} ms): a longer run is refused "
-                  "(raise --max-hours to simulate it)",
-                  machine.longestRun / 3600, machine.longestRun / machine.cycle, machine.cycle * 1000)});
+  throw runTooLongError(machine, source, move ? move->line : 0, move ? move->column : 0u);
 }
 
 // The program through LinuxCNC 2.9's planner, cycle by cycle.

@@ -55,6 +55,9 @@ std::optional<Machine> machineOfDump(const BiipReader& reader);
 // program's path (more than 1 % of the samples checked lie farther than kJoinDistance from
 // every move near their line).
 std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory& samples, const Program& program);
+// Why samples with G-code lines are not a run of `program` (they name lines it does not have, or
+// lie away from its moves of their lines); nullopt when they may be.
+std::optional<std::string> samplesMismatch(const Trajectory& samples, const Program& program);
 constexpr double kJoinDistance = 1.0;  // mm
 
 // A dump refused as another program's: the message names both files and why. A caller may

@@ -17,4 +17,9 @@ struct BoundedRead {
 // maxBytes, or (regularOnly) is not a regular file.
 std::string readBoundedFile(const std::string& path, const BoundedRead& limits);
 
+// open(path, O_RDONLY | O_CLOEXEC) that does not wait for a FIFO's writer: a named pipe nobody
+// writes to reads as empty (at once) instead of keeping the command waiting for ever. Reads of
+// what it returns block as usual. -1 and errno as open().
+int openForReading(const std::string& path);
+
 }  // namespace isurface
