@@ -51,9 +51,7 @@ class PathPiece {
   explicit PathPiece(const PathSegment& move) : segment_(move) {}
   explicit PathPiece(const CornerBlend& blend) : blend_(blend) {}
   Vec3 at(double s) const { return blend_ ? blend_->at(s) : segment_.at(s); }
-  Vec3 start() const { return blend_ ? blend_->start() : segment_.start; }
   Vec3 end() const { return blend_ ? blend_->end() : segment_.end; }
-  Vec3 startTangent() const { return blend_ ? blend_->tangentAt(0) : segment_.startTangent(); }
   Vec3 endTangent() const { return blend_ ? blend_->tangentAt(blend_->length()) : segment_.endTangent(); }
 
  private:
