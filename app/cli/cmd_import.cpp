@@ -1,4 +1,5 @@
 // isurface-cli import: a recorded machine trace (LinuxCNC halsampler text or CSV) -> Biip dump.
+#include <cmath>
 #include <cstdio>
 #include <memory>
 
@@ -47,12 +48,26 @@ void printMappingReport(const LineMappingReport& r) {
               r.samples, r.meanDistance, r.maxDistance, 100.0 * r.fractionWithin, r.tolerance);
 }
 
+// Positions a recorder wrote as inf or nan (or beyond a double, 1e309) are kept, as a dump keeps
+// them, and left out of every figure: said here, where the file is still at hand.
+void warnOfNonFinitePositions(const Trajectory& trace, const std::string& file) {
+  std::size_t count = 0, first = 0;
+  for (std::size_t i = 0; i < trace.size(); ++i)
+    if (!std::isfinite(trace.x[i]) || !std::isfinite(trace.y[i]) || !std::isfinite(trace.z[i]))
+      if (count++ == 0) first = i;
+  if (count > 0)
+    std::fprintf(stderr, "warning: %s: %zu of %zu samples have a non-finite x, y or z (the first: sample %zu); they are "
+                 "kept out of the surface and every figure\n",
+                 file.c_str(), count, trace.size(), first + 1);
+}
+
 int runImport(const ImportOptions& o) {
   if (!(o.cycle >= 0)) throw InputError(Diagnostic{"--cycle", 0, 0, "the cycle must be > 0 s"});
   const TraceImportOptions options = traceOptions(o);
   Trajectory trace = o.format == "halsampler" ? importHalsampler(o.input, options) : importCsv(o.input, options);
   std::printf("%s: %zu samples at %g ms%s%s\n", o.input.c_str(), trace.size(), trace.cycle * 1000.0,
               trace.hasLine ? ", with lines" : "", trace.hasFeedback() ? ", with feedback" : "");
+  warnOfNonFinitePositions(trace, o.input);
   if (!o.gcode.empty()) {
     const Program program = loadProgram(o.gcode, false, false);
     LineMappingOptions mappingOptions = o.linuxcncLines ? linuxcncLineMappingOptions() : LineMappingOptions{};

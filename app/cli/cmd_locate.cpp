@@ -1,5 +1,6 @@
 // isurface-cli locate BIIP (--line N | --sample K | --point X,Y,Z): one sample and its motion,
 // as JSON. Reads the dump in place: a query on a dump of any size answers at once.
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -26,7 +27,7 @@ namespace {
 struct LocateOptions {
   std::string file;
   std::optional<std::uint32_t> line;
-  std::optional<long long> sample;  // signed, so that a negative index is reported as such
+  std::optional<std::string> sample;  // as typed: a number too large for any type is reported as it was given
   std::optional<std::string> point;
 };
 
@@ -101,14 +102,24 @@ int runLocate(const LocateOptions& o) {
   std::size_t sample = 0;
   std::optional<double> distance;
   if (o.sample) {
-    if (*o.sample < 0 || static_cast<unsigned long long>(*o.sample) >= n)
-      inputError("sample " + std::to_string(*o.sample) + " is out of range: " + o.file + " has " + std::to_string(n) +
-                 " samples (0.." + (n > 0 ? std::to_string(n - 1) : std::string("none")) + ")");
-    sample = static_cast<std::size_t>(*o.sample);
+    const std::string range = n > 0 ? "0.." + std::to_string(n - 1) : std::string("none");
+    unsigned long long index = 0;
+    const char* first = o.sample->data();
+    const char* last = first + o.sample->size();
+    const bool negative = first != last && *first == '-';  // a whole number, out of range
+    const auto parsed = std::from_chars(first + (negative ? 1 : 0), last, index);
+    if (parsed.ec == std::errc::invalid_argument || parsed.ptr != last)
+      inputError("--sample '" + *o.sample + "' is not a sample number: " + o.file + " has " + std::to_string(n) +
+                 " samples (" + range + ")");
+    if (negative || parsed.ec == std::errc::result_out_of_range || index >= n)
+      inputError("sample " + *o.sample + " is out of range: " + o.file + " has " + std::to_string(n) + " samples (" +
+                 range + ")");
+    sample = static_cast<std::size_t>(index);
   } else if (o.line) {
+    if (*o.line == 0) inputError("--line 0: G-code lines are numbered from 1");
     if (!reader.hasChannel("line")) inputError(o.file + " has no line channel: samples cannot be traced to lines");
     const auto found = firstSampleOfLine(reader, *o.line);
-    if (!found) inputError("line " + std::to_string(*o.line) + " produced no samples");
+    if (!found) inputError(o.file + ": line " + std::to_string(*o.line) + " produced no samples");
     sample = *found;
   } else {
     const auto found = nearestSample(reader, *point);

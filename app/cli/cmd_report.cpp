@@ -1,6 +1,8 @@
 // isurface-cli report: one self-contained HTML document about a program: its summary, its
 // quality maps, the worst regions with their G-code and the speed over them, and how close each
 // axis came to the machine's limits.
+#include <unistd.h>
+
 #include <algorithm>
 #include <limits>
 #include <cstdlib>
@@ -123,14 +125,24 @@ nlohmann::json reportOne(const ReportCliOptions& o, const std::string& program, 
 // The name (without .html or .json) of the report on the program `name` in a batch: the
 // program's name, or with " (2)", " (3)" ... when that is taken (a program called `index` is not
 // to be replaced by the index). `taken` holds the pages named so far, in lower case.
-std::string reportName(const std::string& name, std::set<std::string>& taken) {
+// A name longer than the folder's file system holds is cut (at a character's start) and marked
+// with "~", so that its report is written too.
+std::string reportName(const std::string& name, std::set<std::string>& taken, std::size_t longestName) {
   const auto lower = [](std::string s) {
     for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
     return s;
   };
-  std::string base = name;
+  // Room for " (999).html" after the name.
+  const std::size_t room = longestName > 16 ? longestName - 11 : 5;
+  std::string stem = name;
+  if (stem.size() > room) {
+    std::size_t cut = room - 1;
+    while (cut > 0 && (static_cast<unsigned char>(stem[cut]) & 0xC0) == 0x80) --cut;
+    stem = stem.substr(0, cut) + "~";
+  }
+  std::string base = stem;
   for (int n = 2; taken.count(lower(base + ".html")) > 0 || taken.count(lower(base + ".json")) > 0; ++n)
-    base = name + " (" + std::to_string(n) + ")";
+    base = stem + " (" + std::to_string(n) + ")";
   taken.insert(lower(base + ".html"));
   taken.insert(lower(base + ".json"));
   return base;
@@ -154,6 +166,8 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
   };
   std::vector<Row> rows;
   std::set<std::string> pages = {"index.html"};  // lower case: a folder may not tell case apart
+  const long nameMax = ::pathconf(o.output.c_str(), _PC_NAME_MAX);
+  const std::size_t longestName = nameMax > 0 ? static_cast<std::size_t>(nameMax) : 255;
   for (const std::string& path : programs) {
     try {
       if (fileKind(path, 4096) != FileKind::Program) continue;
@@ -162,7 +176,7 @@ int runBatch(const ReportCliOptions& o, const std::vector<Threshold>& thresholds
     }
     Row row;
     row.name = std::filesystem::path(path).filename().string();
-    const std::string base = reportName(row.name, pages);
+    const std::string base = reportName(row.name, pages, longestName);
     row.page = base + ".html";
     try {
       row.figures = reportOne(o, path, "", (std::filesystem::path(o.output) / row.page).string(),

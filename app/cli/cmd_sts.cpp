@@ -46,9 +46,9 @@ int runPaperTables() {
 int runSts(const StsOptions& o) {
   if (o.paperTables) return runPaperTables();
   if (o.output.empty() && o.report.empty() && o.biip.empty() && o.png.empty())
-    usage("sts: give -o PATH.nc, --report REPORT.json, --biip OUT.biip or --png MAP.png (or --paper-tables)");
+    usage("give -o PATH.nc, --report REPORT.json, --biip OUT.biip or --png MAP.png (or --paper-tables)");
   if (o.color != "discrete" && o.color != "interpolation")
-    usage("sts: --color is discrete or interpolation (error)");
+    usage("--color is discrete or interpolation (error)");
   StsJobOptions job;
   job.discretisation = parseStsDiscretisation(o.discretise);
   job.nodes = parseStsNodes(o.nodes);
@@ -71,7 +71,7 @@ int runSts(const StsOptions& o) {
 
   const StsJobResult r = runStsJob(*surface, p, job);
   if (!std::isfinite(r.discrete.max) || !std::isfinite(r.interpolation.max))
-    usage("sts: the surface is not finite along the tool path (check the expression's domain)");
+    usage("the surface is not finite along the tool path (check the expression's domain)");
   const std::string program = formatStsNcProgram(*surface, p, job, r);
   if (!o.output.empty()) writeFileAtomically(o.output, program);
   if (!o.biip.empty() || !o.png.empty()) {

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "isurface/base/diagnostic.h"
+#include "isurface/io/output_path.h"
 
 namespace isurface::cli {
 
@@ -21,8 +22,9 @@ std::set<const CLI::Option*>& outputOptions() {
 }
 
 // What makes two names the same file: its device and inode when it exists, else the absolute
-// path with links and `.`/`..` resolved. Empty for a device or a pipe, which may be named twice.
-std::string fileIdentity(const std::string& path) {
+// path with links (a dangling one too) and `.`/`..` resolved. Empty for a device or a pipe, which may be named twice.
+std::string fileIdentity(const std::string& name) {
+  const std::string path = outputDestination(name);
   struct stat st {};
   if (::stat(path.c_str(), &st) == 0)
     return S_ISREG(st.st_mode) || S_ISDIR(st.st_mode)

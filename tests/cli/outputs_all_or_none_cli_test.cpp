@@ -17,6 +17,7 @@
 namespace fs = std::filesystem;
 using isurface::test::runCli;
 using isurface::test::scratchDir;
+using isurface::test::freshScratchFolder;
 using isurface::test::writeScratch;
 
 namespace {
@@ -24,13 +25,6 @@ namespace {
 std::string readAll(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   return std::string(std::istreambuf_iterator<char>(in), {});
-}
-
-fs::path freshFolder(const std::string& name) {
-  const fs::path folder = scratchDir() / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
 }
 
 // Names in `folder` that look like a temporary output.
@@ -48,7 +42,7 @@ const char* kProgram = "G21 G90\nG1 X10 Y5 F600\nG1 X0\nM2\n";
 }  // namespace
 
 TEST(Outputs, AnOutputThatIsTheInputIsRefusedAndTheInputKept) {
-  const fs::path folder = freshFolder("output-is-input");
+  const fs::path folder = freshScratchFolder("output-is-input");
   const std::string program = writeScratch("output-is-input/p.nc", kProgram);
   for (const std::string command : {"simulate", "canon"}) {
     const auto r = runCli(command + " " + program + " -o " + program);
@@ -65,7 +59,7 @@ TEST(Outputs, AnOutputThatIsTheInputIsRefusedAndTheInputKept) {
 }
 
 TEST(Outputs, ATraceImportedOverItselfIsRefused) {
-  const fs::path folder = freshFolder("import-over-itself");
+  const fs::path folder = freshScratchFolder("import-over-itself");
   const std::string trace = writeScratch("import-over-itself/t.csv", "x,y,z\n0,0,0\n1,0,0\n2,0,0\n");
   const auto r = runCli("import csv " + trace + " --map x=x,y=y,z=z -o " + trace);
   EXPECT_EQ(r.exitCode, 2) << r.err;
@@ -73,7 +67,7 @@ TEST(Outputs, ATraceImportedOverItselfIsRefused) {
 }
 
 TEST(Outputs, WhenALaterFileCannotBeWrittenNoneIsLeft) {
-  const fs::path folder = freshFolder("all-or-none");
+  const fs::path folder = freshScratchFolder("all-or-none");
   const std::string program = (folder / "path.nc").string();
   const auto r = runCli("sts --surface toric -o " + program + " --report " + (folder / "no_dir" / "report.json").string());
   EXPECT_NE(r.exitCode, 0);
@@ -83,7 +77,7 @@ TEST(Outputs, WhenALaterFileCannotBeWrittenNoneIsLeft) {
 }
 
 TEST(Outputs, ALegalLongNameIsWritten) {
-  const fs::path folder = freshFolder("long-name");
+  const fs::path folder = freshScratchFolder("long-name");
   const std::string program = writeScratch("long-name/p.nc", kProgram);
   const std::string name = std::string(250, 'n') + ".txt";  // 254 bytes: legal, but not with ".tmpXXXXXX"
   const auto r = runCli("canon " + program + " -o " + (folder / name).string());
@@ -102,7 +96,7 @@ TEST(Outputs, StandardOutputOnAFullDiskIsAFailure) {
 }
 
 TEST(Outputs, ASignalLeavesNoTemporaryFileBehind) {
-  const fs::path folder = freshFolder("signalled");
+  const fs::path folder = freshScratchFolder("signalled");
   // Ten thousand seconds at F6: ten million samples, written for several seconds.
   const std::string program = writeScratch("signalled/slow.nc", "G21 G90\nG1 X1000 F6\nM2\n");
   const std::string dump = (folder / "slow.biip").string();

@@ -19,22 +19,11 @@ namespace {
 
 const char* const kSquare = "G21 G90 G17\nG1 X10 Y0 F600\nG1 X10 Y10\nG1 X0 Y10\nM2\n";
 
-fs::path freshFolder(const std::string& name) {
-  const fs::path folder = scratchDir() / name;
-  fs::remove_all(folder);
-  fs::create_directories(folder);
-  return folder;
-}
-
-void write(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
-
-std::string quoted(const fs::path& path) { return "'" + path.string() + "'"; }
-
 // `report --batch` on a folder holding one program named `program`; the folder of the reports.
 fs::path reportBatchOf(const std::string& test, const std::string& program) {
-  const fs::path in = freshFolder(test + "-in"), out = scratchDir() / (test + "-out");
-  write(in / program, kSquare);
-  const auto r = runCli("report --batch " + quoted(in) + " -o " + quoted(out));
+  const fs::path in = freshScratchFolder(test + "-in"), out = scratchDir() / (test + "-out");
+  writeFileBytes(in / program, kSquare);
+  const auto r = runCli("report --batch " + shellQuoted(in) + " -o " + shellQuoted(out));
   EXPECT_EQ(r.exitCode, 0) << r.err;
   return out;
 }
@@ -58,9 +47,9 @@ TEST(OutputsRoundTwoCli, BatchIndexLinksAreRelativeAndPercentEncoded) {
 
 // Item 2: two options naming one file, however written, are refused before anything is done.
 TEST(OutputsRoundTwoCli, TwoOutputsOnOneFileAreRefused) {
-  const fs::path dir = freshFolder("same-output");
-  write(dir / "p.nc", kSquare);
-  const std::string cd = "cd " + quoted(dir) + " && " + cliProgram();
+  const fs::path dir = freshScratchFolder("same-output");
+  writeFileBytes(dir / "p.nc", kSquare);
+  const std::string cd = "cd " + shellQuoted(dir) + " && " + cliProgram();
   const auto analyze = runShell(cd + " analyze p.nc -o a.json --png ./a.json");
   EXPECT_EQ(analyze.exitCode, 2);
   EXPECT_NE(analyze.err.find("--output and --png name the same file"), std::string::npos) << analyze.err;
@@ -71,7 +60,7 @@ TEST(OutputsRoundTwoCli, TwoOutputsOnOneFileAreRefused) {
   EXPECT_NE(report.err.find("--output and --json name the same file"), std::string::npos) << report.err;
   EXPECT_FALSE(fs::exists(dir / "r.html"));
 
-  write(dir / "o.nc", "old");
+  writeFileBytes(dir / "o.nc", "old");
   fs::create_symlink("o.nc", dir / "link.nc");
   const auto linked = runShell(cd + " optimize p.nc -o o.nc --report link.nc");
   EXPECT_EQ(linked.exitCode, 2);
@@ -96,12 +85,12 @@ TEST(OutputsRoundTwoCli, BatchProgramNamedIndexIsNotReplacedByTheIndex) {
 
 // Item 3: standard output appended onto an input is refused before a byte is written.
 TEST(OutputsRoundTwoCli, StandardOutputOntoAnInputIsRefused) {
-  const fs::path dir = freshFolder("stdout-input");
-  write(dir / "p.nc", kSquare);
-  const std::string program = quoted(dir / "p.nc");
+  const fs::path dir = freshScratchFolder("stdout-input");
+  writeFileBytes(dir / "p.nc", kSquare);
+  const std::string program = shellQuoted(dir / "p.nc");
   const std::string cli = cliProgram();
   for (const std::string& command : {cli + " canon " + program + " >> " + program,
-                                     cli + " simulate " + program + " -o " + quoted(dir / "p.biip") + " >> " + program}) {
+                                     cli + " simulate " + program + " -o " + shellQuoted(dir / "p.biip") + " >> " + program}) {
     const auto r = runShell(command);
     EXPECT_EQ(r.exitCode, 2) << command;
     EXPECT_NE(r.err.find("standard output is this file"), std::string::npos) << r.err;
@@ -110,7 +99,7 @@ TEST(OutputsRoundTwoCli, StandardOutputOntoAnInputIsRefused) {
   EXPECT_FALSE(fs::exists(dir / "p.biip"));
   // A folder of programs with standard output into one of them: refused, nothing written.
   const fs::path out = scratchDir() / "stdout-batch-out";
-  const auto batch = runShell(cli + " report --batch " + quoted(dir) + " -o " + quoted(out) + " >> " + program);
+  const auto batch = runShell(cli + " report --batch " + shellQuoted(dir) + " -o " + shellQuoted(out) + " >> " + program);
   EXPECT_EQ(batch.exitCode, 2);
   EXPECT_EQ(readFile((dir / "p.nc").string()), kSquare);
   EXPECT_FALSE(fs::exists(out / "index.html"));
@@ -118,10 +107,10 @@ TEST(OutputsRoundTwoCli, StandardOutputOntoAnInputIsRefused) {
 
 // Item 12: a file name that is not UTF-8 is carried by the JSON, never a failure.
 TEST(OutputsRoundTwoCli, JsonCarriesFileNamesThatAreNotUtf8) {
-  const fs::path dir = freshFolder("not-utf8");
+  const fs::path dir = freshScratchFolder("not-utf8");
   const std::string name = "bad\xff.nc";
-  write(dir / name, kSquare);
-  const std::string cd = "cd " + quoted(dir) + " && " + cliProgram();
+  writeFileBytes(dir / name, kSquare);
+  const std::string cd = "cd " + shellQuoted(dir) + " && " + cliProgram();
   const auto simulate = runShell(cd + " simulate $(printf 'bad\\377.nc') -o s.biip --json");
   ASSERT_EQ(simulate.exitCode, 0) << simulate.err;
   EXPECT_NE(simulate.out.find("\"source\": \"bad\xEF\xBF\xBD.nc\""), std::string::npos) << simulate.out;
@@ -134,9 +123,9 @@ TEST(OutputsRoundTwoCli, JsonCarriesFileNamesThatAreNotUtf8) {
 
 // Item 13: a command that fails prints no result.
 TEST(OutputsRoundTwoCli, NothingIsPrintedByACommandThatFailed) {
-  const fs::path dir = freshFolder("no-success");
-  write(dir / "p.nc", kSquare);
-  const auto r = runCli("ui-snapshot " + quoted(dir / "p.nc") + " -o " + quoted(dir / "x.png") +
+  const fs::path dir = freshScratchFolder("no-success");
+  writeFileBytes(dir / "p.nc", kSquare);
+  const auto r = runCli("ui-snapshot " + shellQuoted(dir / "p.nc") + " -o " + shellQuoted(dir / "x.png") +
                         " --size 320x240 --pick-sample 999999");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_EQ(r.out, "");
@@ -146,23 +135,23 @@ TEST(OutputsRoundTwoCli, NothingIsPrintedByACommandThatFailed) {
 
 // Item 14: a standard output that cannot be written is exit code 2, as a file that cannot.
 TEST(OutputsRoundTwoCli, FailedStandardOutputIsExitCodeTwo) {
-  const fs::path dir = freshFolder("stdout-full");
-  write(dir / "p.nc", kSquare);
-  const auto r = runShell(std::string(cliProgram()) + " simulate " + quoted(dir / "p.nc") + " -o " +
-                          quoted(dir / "p.biip") + " --json > /dev/full");
+  const fs::path dir = freshScratchFolder("stdout-full");
+  writeFileBytes(dir / "p.nc", kSquare);
+  const auto r = runShell(std::string(cliProgram()) + " simulate " + shellQuoted(dir / "p.nc") + " -o " +
+                          shellQuoted(dir / "p.biip") + " --json > /dev/full");
   EXPECT_EQ(r.exitCode, 2);
   EXPECT_NE(r.err.find("cannot write standard output"), std::string::npos) << r.err;
 }
 
 // Item 14: values out of range are said as written, and why.
 TEST(OutputsRoundTwoCli, OutOfRangeValuesAreSaidAsWritten) {
-  const fs::path dir = freshFolder("ranges");
-  write(dir / "p.nc", kSquare);
-  ASSERT_EQ(runCli("simulate " + quoted(dir / "p.nc") + " -o " + quoted(dir / "p.biip")).exitCode, 0);
-  const auto far = runCli("locate " + quoted(dir / "p.biip") + " --point 1e308,0,0");
+  const fs::path dir = freshScratchFolder("ranges");
+  writeFileBytes(dir / "p.nc", kSquare);
+  ASSERT_EQ(runCli("simulate " + shellQuoted(dir / "p.nc") + " -o " + shellQuoted(dir / "p.biip")).exitCode, 0);
+  const auto far = runCli("locate " + shellQuoted(dir / "p.biip") + " --point 1e308,0,0");
   EXPECT_EQ(far.exitCode, 2);
   EXPECT_NE(far.err.find("--point 1e308,0,0 is out of range"), std::string::npos) << far.err;
-  const auto pick = runCli("ui-snapshot " + quoted(dir / "p.nc") + " -o " + quoted(dir / "x.png") + " --pick-sample -1");
+  const auto pick = runCli("ui-snapshot " + shellQuoted(dir / "p.nc") + " -o " + shellQuoted(dir / "x.png") + " --pick-sample -1");
   EXPECT_EQ(pick.exitCode, 2);
   EXPECT_NE(pick.err.find("--pick-sample: -1 must be from 0"), std::string::npos) << pick.err;
   EXPECT_LT(pick.err.size(), 200u) << pick.err;
@@ -170,15 +159,15 @@ TEST(OutputsRoundTwoCli, OutOfRangeValuesAreSaidAsWritten) {
 
 // Item 14: a program without motion has nothing to simulate: said, not 43 samples of standing.
 TEST(OutputsRoundTwoCli, ProgramWithoutMotionIsRefused) {
-  const fs::path dir = freshFolder("no-motion");
-  write(dir / "empty.nc", "");
-  write(dir / "modal.nc", "G21 G90 G17\nF600\nM2\n");
+  const fs::path dir = freshScratchFolder("no-motion");
+  writeFileBytes(dir / "empty.nc", "");
+  writeFileBytes(dir / "modal.nc", "G21 G90 G17\nF600\nM2\n");
   for (const std::string name : {"empty.nc", "modal.nc"}) {
-    const auto simulate = runCli("simulate " + quoted(dir / name) + " -o " + quoted(dir / "s.biip"));
+    const auto simulate = runCli("simulate " + shellQuoted(dir / name) + " -o " + shellQuoted(dir / "s.biip"));
     EXPECT_EQ(simulate.exitCode, 2) << name;
     EXPECT_NE(simulate.err.find(name + ": no motion in the program"), std::string::npos) << simulate.err;
     EXPECT_FALSE(fs::exists(dir / "s.biip"));
-    const auto report = runCli("report " + quoted(dir / name) + " -o " + quoted(dir / "r.html"));
+    const auto report = runCli("report " + shellQuoted(dir / name) + " -o " + shellQuoted(dir / "r.html"));
     EXPECT_EQ(report.exitCode, 2) << name;
     EXPECT_NE(report.err.find("no motion in the program"), std::string::npos) << report.err;
   }

@@ -35,7 +35,7 @@ TEST(unboundedReads, ADeviceOrAHugeFileAsADescriptionIsRefusedAtOnce) {
 
 // A named pipe nobody writes to, given as a program, a dump or a machine description, is read at
 // once as what it holds, nothing (an empty program: `canon` lists no move, as of an empty file;
-// the others refuse it, naming it), instead of the command waiting for a writer for ever.
+// the others, trace import and the window's snapshot too, refuse it, naming it), instead of the command waiting for a writer for ever.
 TEST(unboundedReads, ANamedPipeWithoutAWriterIsNotWaitedFor) {
   const std::filesystem::path fifo = scratchDir() / "nobody-writes";
   std::filesystem::remove(fifo);
@@ -44,12 +44,17 @@ TEST(unboundedReads, ANamedPipeWithoutAWriterIsNotWaitedFor) {
   const CommandResult listed = runShell("timeout 20 " + std::string(cliProgram()) + " canon " + fifo.string());
   EXPECT_EQ(listed.exitCode, 0) << listed.err;  // 124: it waited
   EXPECT_EQ(listed.out, "");
+  const std::string png = (scratchDir() / "fifo-out.png").string();
   for (const std::string& args : {"simulate " + fifo.string() + " -o " + out, "info " + fifo.string(),
                                   "simulate " + sourcePath("samples/transition-surface.nc") + " --machine " +
-                                      fifo.string() + " -o " + out}) {
+                                      fifo.string() + " -o " + out,
+                                  "import csv " + fifo.string() + " --map t=t,x=x,y=y,z=z -o " + out,
+                                  "import halsampler " + fifo.string() + " -o " + out,
+                                  "ui-snapshot " + fifo.string() + " -o " + png}) {
     const CommandResult r = runShell("timeout 20 " + std::string(cliProgram()) + " " + args);
     EXPECT_EQ(r.exitCode, 2) << args << "\n" << r.err;
     EXPECT_NE(r.err.find("nobody-writes"), std::string::npos) << args << "\n" << r.err;
   }
   EXPECT_FALSE(std::filesystem::exists(out));
+  EXPECT_FALSE(std::filesystem::exists(png));
 }

@@ -83,3 +83,10 @@ TEST(gcodeFanucMacro, ALoopNumberAtTheVeryEndOfTheTextIsReadWithinIt) {
   EXPECT_EQ(fanuc("G21\n#1=1\nN10 IF [#1 EQ 1] THEN G1 X1 I5 F10\n").errors.at(0).str(),
             "t.ngc:3:29: i word with no G2 or G3 to use it");
 }
+
+// Fanuc's M98 takes its count of runs in L or K (M98 P2 K3): the K is the call's, not an arc's.
+TEST(gcodeFanucMacro, M98CountsItsRunsInLOrK) {
+  const std::string sub = "\nM30\nO2\nG91 G1 X1 F100\nG90\nM99\n";
+  EXPECT_EQ(xs(fanuc("O1\nG21 G90\nG0 X0\nM98 P2 K3" + sub)), std::vector<double>({0, 1, 2, 3}));
+  EXPECT_EQ(xs(fanuc("O1\nG21 G90\nG0 X0\nM98 P2 L3" + sub)), std::vector<double>({0, 1, 2, 3}));
+}

@@ -13,6 +13,7 @@
 #include <limits>
 #include <memory>
 
+#include "isurface/base/bounded_file.h"
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/shrink_guard.h"
 #include "isurface/gcode/line_ends.h"
@@ -74,7 +75,7 @@ struct TextLines::Impl {
 };
 
 TextLines::TextLines(const std::string& path) : impl_(std::make_unique<Impl>()) {
-  const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
+  const int fd = openForReading(path);  // a FIFO without a writer: refused below, not waited on
   if (fd < 0) failToOpen(path, errno);
   struct stat info {};
   if (::fstat(fd, &info) != 0) {
@@ -84,7 +85,8 @@ TextLines::TextLines(const std::string& path) : impl_(std::make_unique<Impl>()) 
   }
   if (!S_ISREG(info.st_mode)) {
     ::close(fd);
-    failToOpen(path, S_ISDIR(info.st_mode) ? EISDIR : ENODEV);
+    if (S_ISDIR(info.st_mode)) failToOpen(path, EISDIR);
+    throw InputError(Diagnostic{path, 0, 0, "cannot be shown: it is a pipe or a device, not a file (save it to a file and open that)"});
   }
   const std::size_t size = static_cast<std::size_t>(info.st_size);
   if (size > 0) {

@@ -1,5 +1,6 @@
 // Telling files apart by their first bytes.
 #include "isurface/workflow/file_kinds.h"
+#include "isurface/base/file_read_stream.h"
 
 #include <fmt/format.h>
 
@@ -131,7 +132,7 @@ bool looksLikeGcode(const std::string& line) {
 }  // namespace
 
 FileKind fileKind(const std::string& path, std::size_t headBytes) {
-  std::ifstream in(path, std::ios::binary);
+  FileReadStream in(path);
   if (!in) fail(path, std::string("cannot open: ") + std::strerror(errno));
   std::string head(std::max<std::size_t>(headBytes, 4), '\0');
   in.read(head.data(), static_cast<std::streamsize>(head.size()));
@@ -175,7 +176,7 @@ const char* fileKindName(FileKind kind) {
 
 Trajectory readTrace(const std::string& path, FileKind kind) {
   if (kind == FileKind::HalsamplerTrace) return importHalsampler(path);
-  std::ifstream in(path, std::ios::binary);
+  FileReadStream in(path);
   std::string headerLine;
   std::getline(in, headerLine);
   if (!headerLine.empty() && headerLine.back() == '\r') headerLine.pop_back();

@@ -1,5 +1,6 @@
 // Opening programs and dumps, and joining a dump to its program.
 #include "isurface/workflow/run_inputs.h"
+#include "isurface/base/file_read_stream.h"
 
 #include "isurface/workflow/file_kinds.h"
 
@@ -92,7 +93,7 @@ std::optional<std::string> pathMismatch(const Trajectory& samples, const Program
 }  // namespace
 
 bool isBiipFile(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+  FileReadStream in(path);
   char magic[4] = {};
   in.read(magic, 4);
   return in.gcount() == 4 && std::memcmp(magic, "BIIP", 4) == 0;

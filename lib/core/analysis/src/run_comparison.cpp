@@ -230,11 +230,16 @@ class Aligner {
 };
 
 void requireLines(const Trajectory& t) {
+  if (t.size() == 0) throw InputError(Diagnostic{t.source, 0, 0, "has no samples: there is no run to compare"});
   bool any = false;
   for (std::size_t r = 0; r < t.line.runCount(); ++r) any = any || t.line.runValue(r) != 0;
-  if (!t.hasLine || !any)
+  if (!t.hasLine)
     throw InputError(Diagnostic{t.source, 0, 0,
                                 "no G-code line channel to align by (import the trace with --gcode to map its samples to lines)"});
+  if (!any)
+    throw InputError(Diagnostic{t.source, 0, 0,
+                                "its line channel is 0 (no line) on every sample: nothing to align by (import the trace "
+                                "with --gcode to map its samples to lines)"});
 }
 
 // The share of a run's samples with a line that lie on lines both runs have.

@@ -1,4 +1,5 @@
 #include "isurface/io/atomic_file.h"
+#include "isurface/io/output_path.h"
 
 #include <fcntl.h>
 #include <sys/stat.h>
@@ -167,10 +168,11 @@ class AtomicOutputFile::BackgroundSync {
 AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
     : target_(std::move(target)), capacity_(std::max<std::size_t>(bufferBytes, 4096)) {
   if (target_.empty()) fail(ENOENT, "empty file name");
-  std::string destination = target_;  // the path the temporary file is renamed to
+  // The path the temporary file is renamed to: the file the target's links lead to.
+  const std::string destination = outputDestination(target_);
   mode_t mode = 0666 & ~currentUmask();
   struct stat st {};
-  if (::stat(target_.c_str(), &st) == 0) {
+  if (::stat(destination.c_str(), &st) == 0) {
     if (S_ISDIR(st.st_mode)) fail(EISDIR);
     if (isProtectedInputFile(target_)) throw InputError(Diagnostic{target_, 0, 0, kInputMessage});
     if (!S_ISREG(st.st_mode)) {
@@ -183,14 +185,6 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
     } else {
       mode = st.st_mode & 07777;  // keep an existing file's permissions
       replacing_ = true;
-      struct stat lst {};
-      if (::lstat(target_.c_str(), &lst) == 0 && S_ISLNK(lst.st_mode)) {
-        // Replace the file the link points to, not the link.
-        if (char* real = ::realpath(target_.c_str(), nullptr)) {
-          destination = real;
-          std::free(real);
-        }
-      }
     }
   }
   if (!direct_) {

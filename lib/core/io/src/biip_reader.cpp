@@ -208,7 +208,7 @@ std::pair<std::uint32_t, std::uint32_t> BiipReader::parseFixedHeader() {
   }
   // The sample periods a control or a recorder has (import --cycle takes the same): 5e-324 s or
   // 1e300 s made every speed infinite or zero.
-  if (!(h.cycleSeconds >= 1e-6 && h.cycleSeconds <= 60)) {
+  if (!(h.cycleSeconds >= kBiipShortestCycle && h.cycleSeconds <= kBiipLongestCycle)) {
     refuse(fmt::format("cycle_s {:g} is not a sample period (1e-6 to 60 s)", h.cycleSeconds));
   }
   const std::uint64_t tableEnd = kBiipFixedHeaderBytes + std::uint64_t(kBiipChannelEntryBytes) * channelCount;

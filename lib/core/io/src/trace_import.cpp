@@ -1,4 +1,5 @@
 #include "isurface/io/trace_import.h"
+#include "isurface/base/file_read_stream.h"
 
 #include <fmt/format.h>
 #include "isurface/base/input_files.h"
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <string_view>
 
 #include "isurface/io/biip.h"
@@ -175,7 +177,14 @@ class TrajectoryBuilder {
       // A recorded time column: its mean step is the nominal cycle unless one was given.
       if (!cycleGiven && rows_ > 1 && time_.back() > time_.front()) {
         const double mean = (time_.back() - time_.front()) / double(rows_ - 1);
-        if (std::isfinite(mean)) t.cycle = mean;  // times nearly 1e308 apart overflow it
+        // A dump holds a control's or a recorder's period: times in the wrong unit, or far apart,
+        // would make every speed zero or infinite.
+        if (!(mean >= kBiipShortestCycle && mean <= kBiipLongestCycle))
+          fail(file_, 0, 0,
+               fmt::format("the time column's mean step, {:g} s over {} rows, is not a sample period (1e-6 to 60 s): "
+                           "are its times in seconds?",
+                           mean, rows_));
+        t.cycle = mean;
       }
       t.time = std::move(time_);
       t.irregularTime = timeIsIrregular(t.time.data(), t.time.size(), t.cycle);
@@ -230,7 +239,7 @@ class TrajectoryBuilder {
   void checkSampleIndex(double v, const Cell& cell, const Binding& b, unsigned lineNumber) const {
     const std::string text(cell.text.substr(0, 40));
     if (!(v >= 0 && v <= 9007199254740992.0 && v == std::floor(v)))
-      fail(file_, lineNumber, cell.column, "column " + b.label + ": sample number '" + text + "' is not a whole number from 0");
+      fail(file_, lineNumber, cell.column, "column " + b.label + ": sample number '" + text + "' is not a whole number from 0 to 9007199254740992");
     if (!index_.empty() && !(v > index_.back()))
       fail(file_, lineNumber, cell.column,
            "column " + b.label + ": sample number " + text + (v < index_.back() ? " runs backwards" : " repeats") +
@@ -242,10 +251,11 @@ class TrajectoryBuilder {
   std::size_t rows_ = 0;
 };
 
-std::ifstream openTrace(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+std::unique_ptr<FileReadStream> openTrace(const std::string& path) {
+  auto in = std::make_unique<FileReadStream>(path);
+  const int error = errno;
   noteInputFile(path);
-  if (!in) fail(path, 0, 0, std::string("cannot open: ") + std::strerror(errno));
+  if (!*in) fail(path, 0, 0, std::string("cannot open: ") + std::strerror(error));
   return in;
 }
 
@@ -313,7 +323,8 @@ Trajectory importHalsampler(const std::string& path, const TraceImportOptions& o
       fail(path, 0, 0, "column '" + c.column + "' of role '" + c.role + "' is not a column index (0, 1, ...)");
     builder.bind(c.role, std::size_t(index), c.column + " (" + c.role + ")");
   }
-  std::ifstream in = openTrace(path);
+  const std::unique_ptr<FileReadStream> stream = openTrace(path);
+  std::istream& in = *stream;
   std::string text;
   std::vector<Cell> cells;
   unsigned lineNumber = 0;
@@ -329,7 +340,8 @@ Trajectory importHalsampler(const std::string& path, const TraceImportOptions& o
 
 Trajectory importCsv(const std::string& path, const TraceImportOptions& options) {
   checkPositionsMapped(options.columns, path);
-  std::ifstream in = openTrace(path);
+  const std::unique_ptr<FileReadStream> stream = openTrace(path);
+  std::istream& in = *stream;
   std::string text;
   std::vector<Cell> cells;
   unsigned lineNumber = 0;

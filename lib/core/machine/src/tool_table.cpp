@@ -3,6 +3,7 @@
 #include "isurface/base/input_files.h"
 
 #include <fast_float/fast_float.h>
+#include <fmt/format.h>
 
 #include <cctype>
 #include <cmath>
@@ -18,6 +19,9 @@ namespace isurface {
 namespace {
 
 constexpr const char* kTableLetters = "TPXYZABCUVWDIJQ";
+// The largest tool diameter taken, mm: a face mill is a few hundred; beyond this a number is a
+// typing error that would throw cutter compensation's offsets far off the part.
+constexpr double kLargestDiameterMm = 2000;
 
 [[noreturn]] void fail(const std::string& source, std::uint32_t line, const std::string& message) {
   throw InputError(Diagnostic{source, line, 0, message});
@@ -35,6 +39,7 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
     const std::string words = line.substr(0, line.find(';'));
     int tool = -1;
     double diameter = 0;
+    std::string seen;  // the letters of this entry so far
     for (std::size_t i = 0; i < words.size();) {
       const char c = static_cast<char>(std::toupper(static_cast<unsigned char>(words[i])));
       if (std::isspace(static_cast<unsigned char>(c)) || c == '\r') {
@@ -43,6 +48,9 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
       }
       if (!std::isalpha(static_cast<unsigned char>(c)) || std::string(kTableLetters).find(c) == std::string::npos)
         fail(sourceName, number, std::string("unexpected '") + words[i] + "' in a tool table entry");
+      if (seen.find(c) != std::string::npos)
+        fail(sourceName, number, std::string("the ") + c + " word is twice in one tool table entry");
+      seen += c;
       double value = 0;
       const char* first = words.data() + i + 1;
       if (first < words.data() + words.size() && *first == '+') ++first;  // LinuxCNC writes Z+0.511000
@@ -54,9 +62,16 @@ ToolDiameters parseToolTable(const std::string& text, const std::string& sourceN
         if (value < 0 || value != std::floor(value) || value > 1e9)
           fail(sourceName, number, "a tool number (T) must be a whole number, 0 or more");
         tool = static_cast<int>(value);
+      } else if (c == 'P') {
+        if (value < 0 || value != std::floor(value) || value > 1e9)
+          fail(sourceName, number, "a pocket number (P) must be a whole number, 0 or more");
       } else if (c == 'D') {
         if (value < 0) fail(sourceName, number, "a tool diameter (D) must not be negative");
         diameter = inch ? value * kMmPerInch : value;
+        if (diameter > kLargestDiameterMm)
+          fail(sourceName, number,
+               fmt::format("a tool diameter (D) of {:g} mm is more than any tool has (at most {:g} mm)", diameter,
+                           kLargestDiameterMm));
       }
     }
     if (words.find_first_not_of(" \t\r") == std::string::npos) continue;  // blank or comment only

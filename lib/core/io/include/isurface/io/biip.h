@@ -27,6 +27,9 @@ constexpr std::uint32_t kBiipFixedHeaderBytes = 64;
 constexpr std::uint32_t kBiipChannelEntryBytes = 32;
 constexpr std::uint32_t kBiipMaxChannels = 256;
 constexpr std::uint32_t kBiipMaxRecordBytes = 4096;
+// The sample periods a control or a recorder has, s: a dump's cycle_s and every importer's.
+constexpr double kBiipShortestCycle = 1e-6;
+constexpr double kBiipLongestCycle = 60;
 constexpr std::size_t kBiipMaxNameLength = 24;
 
 std::size_t biipTypeSize(BiipType type);   // 0 for a value outside the enumeration
