@@ -172,6 +172,24 @@ TEST(workingDay, ExportWritesTheViewFiguresAndSamples) {
   EXPECT_GT(rows, 0u);
 }
 
+// Keeping the file the export would replace goes back to the Export dialog, its path to be
+// changed, not out of it.
+TEST(workingDay, KeepingTheFileAnExportWouldReplaceReturnsToTheDialog) {
+  auto ui = openedSample();
+  const std::filesystem::path png = test::scratchDir() / "kept-view.png";
+  std::ofstream(png) << "kept";
+  tapLetter(*ui, 'E', true);
+  typeInto(*ui, "export.path", png.string());
+  clickControl(*ui, "export.write");
+  ASSERT_TRUE(described(*ui)["windows"]["replace_question"].get<bool>());
+  EXPECT_FALSE(described(*ui)["windows"]["export"].get<bool>());
+  clickControl(*ui, "replace.no");
+  settle(*ui);
+  EXPECT_TRUE(described(*ui)["windows"]["export"].get<bool>());
+  EXPECT_EQ(described(*ui)["export_path"], png.string());
+  EXPECT_EQ(test::readFile(png.string()), "kept");
+}
+
 TEST(workingDay, CloseAndHelp) {
   auto ui = openedSample();
   tapLetter(*ui, 'H');
@@ -386,6 +404,39 @@ TEST(workingDay, LocateStartsAtTheSelectionAndSaysWhenARequestIsOutOfRange) {
   typeInto(*ui, "locate.sample", "1234");
   tap(*ui, ImGuiKey_Enter);
   EXPECT_EQ(*ui->inspector().selection().sample, 1234u);
+}
+
+// Ctrl+F in the G-code: Enter goes to the next line holding the text, Shift+Enter back, round
+// past the ends; text no line holds is said, and the selection stays.
+TEST(workingDay, CtrlFFindsTextInTheGcode) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  settle(*ui);
+  // The lines holding "X23.35", as a reader of the file finds them.
+  std::vector<std::uint32_t> holding;
+  std::ifstream program(test::sourcePath("samples/transition-surface.nc"));
+  std::string text;
+  for (std::uint32_t line = 1; std::getline(program, text); ++line)
+    if (text.find("X23.35") != std::string::npos) holding.push_back(line);
+  ASSERT_GE(holding.size(), 2u);
+  const auto after2000 = std::upper_bound(holding.begin(), holding.end(), 2000u);
+  const std::uint32_t next = after2000 == holding.end() ? holding.front() : *after2000;
+  tapLetter(*ui, 'F', true);
+  ui->type("x23.35");
+  tap(*ui, ImGuiKey_Enter);
+  EXPECT_EQ(ui->inspector().selection().line, next);
+  ui->shift(true);
+  tap(*ui, ImGuiKey_Enter);
+  ui->shift(false);
+  const auto before = std::lower_bound(holding.begin(), holding.end(), next);
+  EXPECT_EQ(ui->inspector().selection().line, before == holding.begin() ? holding.back() : *(before - 1));
+  typeInto(*ui, "gcode.find", "s12000 m3");
+  tap(*ui, ImGuiKey_Enter);
+  EXPECT_EQ(ui->inspector().selection().line, 6u);
+  typeInto(*ui, "gcode.find", "G65 P9999");
+  tap(*ui, ImGuiKey_Enter);
+  EXPECT_EQ(ui->inspector().selection().line, 6u);
+  EXPECT_EQ(described(*ui)["gcode_search"], "no line holds \"G65 P9999\"");
 }
 
 TEST(workingDay, ARecentFileClickedOpensThatFile) {

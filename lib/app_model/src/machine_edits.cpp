@@ -38,12 +38,16 @@ std::vector<std::string> differences(const Machine& a, const Machine& b) {
   auto note = [&](const std::string& path) {
     if (path != "name" && std::find(paths.begin(), paths.end(), path) == paths.end()) paths.push_back(path);
   };
-  for (const auto& [path, value] : one) {
+  // Pairs, not structured bindings: C++17 lambdas cannot capture those (clang refuses it).
+  for (const auto& entry : one) {
+    const std::string& path = entry.first;
     const auto match = std::find_if(other.begin(), other.end(), [&](const auto& p) { return p.first == path; });
-    if (match == other.end() || match->second != value) note(path);
+    if (match == other.end() || match->second != entry.second) note(path);
   }
-  for (const auto& [path, value] : other)
+  for (const auto& entry : other) {
+    const std::string& path = entry.first;
     if (std::none_of(one.begin(), one.end(), [&](const auto& p) { return p.first == path; })) note(path);
+  }
   return paths;
 }
 

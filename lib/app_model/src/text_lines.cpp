@@ -7,6 +7,8 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cstdint>
 #include <cstring>
@@ -127,6 +129,28 @@ std::string_view TextLines::line(std::size_t oneBased) const {
   std::uint64_t end = impl_->start(oneBased) - 1;  // drops the '\n'
   if (end > begin && impl_->data[end - 1] == '\r') --end;
   return std::string_view(impl_->data + begin, static_cast<std::size_t>(end - begin));
+}
+
+namespace {
+
+bool holdsIgnoringCase(std::string_view text, std::string_view needle) {
+  const auto same = [](char a, char b) {
+    return std::tolower(static_cast<unsigned char>(a)) == std::tolower(static_cast<unsigned char>(b));
+  };
+  return std::search(text.begin(), text.end(), needle.begin(), needle.end(), same) != text.end();
+}
+
+}  // namespace
+
+std::optional<std::size_t> findLine(const TextLines& text, std::string_view needle, std::size_t from, bool backwards) {
+  const std::size_t n = text.count();
+  if (needle.empty() || n == 0) return std::nullopt;
+  std::size_t line = std::min(from, n);
+  for (std::size_t step = 0; step < n; ++step) {
+    line = backwards ? (line <= 1 ? n : line - 1) : (line >= n ? 1 : line + 1);
+    if (holdsIgnoringCase(text.line(line), needle)) return line;
+  }
+  return std::nullopt;
 }
 
 }  // namespace isurface::app_model

@@ -96,6 +96,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
     for (const auto& channel : samples->extra) made.push_back(channelCurve(channel.first, samples));
     return made;
   });
+  doc->lineTimes = app_model::LineTimes(*doc->samples);
   vis::QualityMapRequest fitted = fitRequest(request, *doc->samples, doc->warnings);
   fitted.caption = mapCaption(*doc);
   if (unitsOfProgram) fitted.inch = doc->program && doc->program->inch;

@@ -16,22 +16,21 @@ bool Inspector::State::loadFeedbackFirst(std::function<void()> then) {
     status = "wait until " + job.label() + " ends (or cancel it) to load the feedback";
     return true;
   }
-  auto result = std::make_shared<JobResult>();
-  result->feedbackFor = doc->samples;
-  result->afterFeedback = std::move(then);
+  auto result = std::make_shared<JobResult>(LoadedFeedback{doc->samples, std::nullopt, std::move(then)});
   pending = result;
   const std::string label = "loading the feedback of " + doc->name;
   job.start(label, [result, supply = doc->feedbackSupply](app_model::JobControl& control) {
-    result->feedback = loadFeedback(*result->feedbackFor, supply, [&control](double f) { control.progress(f); });
+    LoadedFeedback& loaded = std::get<LoadedFeedback>(*result);
+    loaded.feedback = loadFeedback(*loaded.madeFor, supply, [&control](double f) { control.progress(f); });
   });
   status = label;
   return true;
 }
 
-void Inspector::State::attachLoadedFeedback(JobResult& result) {
+void Inspector::State::attachLoadedFeedback(LoadedFeedback& result) {
   for (std::size_t k = 0; k < documents.size(); ++k) {
     Document& doc = *documents[k];
-    if (doc.samples != result.feedbackFor) continue;
+    if (doc.samples != result.madeFor) continue;
     // Nothing else reads this document's feedback now: the one job has ended, and a close-up
     // being built (a map that shows no feedback) is waited for. The samples were made
     // non-const (openRun), so writing them through this pointer is defined.
@@ -41,9 +40,9 @@ void Inspector::State::attachLoadedFeedback(JobResult& result) {
     status = fmt::format("{}: feedback loaded ({} samples)", doc.name, doc.samples->size());
     // What waited for the feedback (a colouring, a re-optimisation) was asked of this
     // document: it is shown again for it, though another was chosen meanwhile.
-    if (result.afterFeedback) {
+    if (result.then) {
       if (k != active) activate(k);
-      result.afterFeedback();
+      result.then();
     }
     return;
   }

@@ -48,6 +48,7 @@ void HeadlessUi::key(int imguiKey, bool down) { ImGui::GetIO().KeysDown[kNamedKe
 
 void HeadlessUi::letter(char upperCase, bool down) { ImGui::GetIO().KeysDown[static_cast<unsigned char>(upperCase)] = down; }
 void HeadlessUi::ctrl(bool down) { ImGui::GetIO().KeyCtrl = down; }
+void HeadlessUi::shift(bool down) { ImGui::GetIO().KeyShift = down; }
 void HeadlessUi::type(const std::string& text) { ImGui::GetIO().AddInputCharactersUTF8(text.c_str()); }
 
 void HeadlessUi::frame() {

@@ -1,5 +1,6 @@
 #include "isurface/panels/inspector.h"
 
+#include <filesystem>
 #include <imgui.h>
 
 #include <algorithm>
@@ -48,27 +49,27 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
   // A new document's own units: as it is written, unless the user chose.
   request.inch = persistent.units == "inch";
   const bool unitsOfProgram = persistent.units == "auto";
-  auto result = std::make_shared<JobResult>();
-  result->replaces = replaces;
+  auto result = std::make_shared<JobResult>(LoadedDocument{nullptr, replaces, {}});
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
   const bool programOpen = replaces < documents.size();
   job.start(label, [result, programPath, dumpPath, request, programOpen, unitsOfProgram,
-                    machine = machine](app_model::JobControl& control) {
+                    machine = dialogs.machine.inUse](app_model::JobControl& control) {
+    LoadedDocument& loaded = std::get<LoadedDocument>(*result);
     try {
-      result->document = loadDocument(programPath, dumpPath, request, machine, unitsOfProgram, control);
+      loaded.document = loadDocument(programPath, dumpPath, request, machine, unitsOfProgram, control);
     } catch (const DumpMismatchError& e) {
       // Not joined: the program stays (or opens) by itself, and the dump opens as a document
       // of its own, saying why; a dump that cannot stand alone says both.
       const std::string notJoined = std::string("not joined: ") + e.what();
-      if (!programOpen) result->programAlone = programPath;
-      result->replaces = ~std::size_t(0);
+      if (!programOpen) loaded.programAlone = programPath;
+      loaded.replaces = ~std::size_t(0);
       try {
-        result->document = loadDocument("", dumpPath, request, machine, unitsOfProgram, control);
+        loaded.document = loadDocument("", dumpPath, request, machine, unitsOfProgram, control);
       } catch (const InputError& alone) {
         throw InputError(Diagnostic{"", 0, 0, notJoined + "; by itself: " + alone.what()});
       }
-      result->document->warnings.insert(result->document->warnings.begin(), notJoined);
+      loaded.document->warnings.insert(loaded.document->warnings.begin(), notJoined);
     }
   });
   status = label;
@@ -86,22 +87,22 @@ void Inspector::State::startRecolour() {
   vis::QualityMapRequest request = mapRequest();
   request.pickable = true;
   request.caption = mapCaption(*doc);
-  auto result = std::make_shared<JobResult>();
-  result->madeFor = doc->samples;
+  auto result = std::make_shared<JobResult>(Recolouring{doc->samples, {}, nullptr, {}});
   pending = result;
   std::shared_ptr<const Trajectory> samples = doc->samples;
   std::shared_ptr<const Program> program = doc->program;
   job.start("colouring by " + std::string(quantityInfo(request.quantity).label),
             [result, samples, program, request](app_model::JobControl& control) {
+              Recolouring& colouring = std::get<Recolouring>(*result);
               control.progress(0.1);
               try {
-                result->map = vis::buildQualityMap(*samples, program.get(), request);
+                colouring.map = vis::buildQualityMap(*samples, program.get(), request);
               } catch (const InputError& e) {
-                result->mapRefused = e.what();
+                colouring.mapRefused = e.what();
                 throw;
               }
               control.progress(0.7);
-              result->scene = std::make_shared<vis::QualityScene>(result->map.data, result->map.style);
+              colouring.scene = std::make_shared<vis::QualityScene>(colouring.map.data, colouring.map.style);
               control.progress(1.0);
             });
 }
@@ -117,7 +118,7 @@ void Inspector::State::simulateAgain() {
   // simulation opens beside it, as a document of its own.
   const bool keepsDump = !doc->dumpPath.empty();
   startLoad(doc->programPath, "", keepsDump ? ~std::size_t(0) : active);
-  status = "simulating " + doc->name + " with " + machine.name + (keepsDump ? ", beside its dump" : "");
+  status = "simulating " + doc->name + " with " + dialogs.machine.inUse.name + (keepsDump ? ", beside its dump" : "");
 }
 
 void Inspector::State::closeActive() {
@@ -128,9 +129,9 @@ void Inspector::State::closeActive() {
   }
   const std::string name = documents[active]->name;
   documents.erase(documents.begin() + static_cast<std::ptrdiff_t>(active));
-  measureA.reset();
-  measureB.reset();
-  hoverSample.reset();
+  pointer.measureA.reset();
+  pointer.measureB.reset();
+  pointer.hoverSample.reset();
   activate(std::min(active, documents.empty() ? 0 : documents.size() - 1));
   status = "closed " + name;
 }
@@ -140,99 +141,106 @@ void Inspector::State::takeJobResult() {
   std::shared_ptr<JobResult> result = std::move(pending);
   // The reason a dump was not joined goes with the program that opens by itself next, and
   // with nothing else.
-  const std::string notice = std::exchange(joinNotice, std::string());
-  if (result && result->optimisation && comparison && (job.wasCancelled() || !job.error().empty()))
+  const std::string notice = std::exchange(queue.joinNotice, std::string());
+  if (job.wasCancelled() || !job.error().empty()) return jobEndedWithout(result.get());
+  if (result) std::visit([&](auto& r) { take(r, notice); }, *result);
+}
+
+void Inspector::State::jobEndedWithout(JobResult* result) {
+  if (result && std::holds_alternative<OptimisedRegion>(*result) && comparison)
     comparison->supersededBy = job.label() + (job.wasCancelled() ? " was cancelled" : " failed");
   if (job.wasCancelled()) {
     status = job.label() + ": cancelled";
     return;
   }
-  if (result && !result->programAlone.empty()) queuedRuns.push_front(RunFiles{result->programAlone, ""});
-  if (!job.error().empty()) {
-    status = "error: " + job.error();
-    // A map made again with a new gap between passes failed: the gap is the map's that stays.
-    if (const Document* doc = activeDocument(); doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
-    // A document still without a map: the view says why it has none now, at the gap typed.
-    if (const std::size_t k = result ? documentOf(result->madeFor) : documents.size();
-        k < documents.size() && !documents[k]->scene && !result->mapRefused.empty()) {
-      Document* doc = documents[k].get();
-      auto& w = doc->warnings;
-      w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.rfind("no map: ", 0) == 0; }), w.end());
-      w.push_back("no map: " + result->mapRefused);
-    }
-    if (result && !result->programAlone.empty()) joinNotice = job.error(), noticeProgram = result->programAlone;
-    return;
-  }
+  status = "error: " + job.error();
+  // A map made again with a new gap between passes failed: the gap is the map's that stays.
+  if (const Document* doc = activeDocument(); doc && doc->scene) settings.gapLimit = doc->map.request.gapLimit;
   if (!result) return;
-  if (result->feedback) {
-    attachLoadedFeedback(*result);
-    return;
+  if (const auto* loaded = std::get_if<LoadedDocument>(result); loaded && !loaded->programAlone.empty()) {
+    queue.runs.push_front(RunFiles{loaded->programAlone, ""});
+    queue.joinNotice = job.error();
+    queue.noticeProgram = loaded->programAlone;
   }
-  if (!result->reportPath.empty()) {
-    save(result->reportPath, std::move(result->report), "report");
-    return;
+  // A document still without a map: the view says why it has none now, at the gap typed.
+  if (const auto* colouring = std::get_if<Recolouring>(result); colouring && !colouring->mapRefused.empty()) {
+    const std::size_t k = documentOf(colouring->madeFor);
+    if (k == documents.size() || documents[k]->scene) return;
+    auto& w = documents[k]->warnings;
+    w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.rfind("no map: ", 0) == 0; }), w.end());
+    w.push_back("no map: " + colouring->mapRefused);
   }
-  if ((result->runComparison || result->comparison) && !showDocumentOf(*result)) return;
-  if (result->runComparison) {
-    comparison.reset();
-    runComparison = result->runComparison;
-    showRunDifference(runComparison->showDifference);
-    view.refit();  // the main view is half as wide now
-    status = runComparison->summary;
-    return;
+}
+
+void Inspector::State::take(LoadedFeedback& result, const std::string&) { attachLoadedFeedback(result); }
+
+void Inspector::State::take(WrittenReport& result, const std::string&) {
+  save(result.path, std::move(result.html), "report", backToTheDialog(*this));
+}
+
+void Inspector::State::take(ComparedRun& result, const std::string&) {
+  if (!showDocumentOf(result.madeFor)) return;
+  comparison.reset();
+  runComparison = result.view;
+  showRunDifference(runComparison->showDifference);
+  view.refit();  // the main view is half as wide now
+  status = runComparison->summary;
+}
+
+void Inspector::State::take(OptimisedRegion& result, const std::string&) {
+  if (!result.comparison || !showDocumentOf(result.madeFor)) return;
+  runComparison.reset();
+  comparison = result.comparison;
+  showOptimisedDifference(comparison->showDifference);
+  view.refit();
+  if (Document* doc = activeDocument()) {
+    // Where the user saved last, not the program's own folder (read-only, or someone else's).
+    const std::string folder =
+        chrome.lastSaved.empty() ? std::string() : std::filesystem::path(chrome.lastSaved).parent_path().string();
+    dialogs.optimise.offerSavePath(doc->programPath, folder);
   }
-  if (result->comparison) {
-    runComparison.reset();
-    comparison = result->comparison;
-    showOptimisedDifference(comparison->showDifference);
-    view.refit();
-    if (Document* doc = activeDocument()) {
-      const std::string suggested = doc->programPath.substr(0, doc->programPath.rfind('.')) + "-optimized.nc";
-      const bool typed = savePath[0] && suggestedSavePath != savePath;
-      if (!typed || savePathProgram != doc->programPath) std::snprintf(savePath, sizeof savePath, "%s", suggested.c_str());
-      suggestedSavePath = suggested;
-      savePathProgram = doc->programPath;
-    }
-    status = comparison->summary;
-    return;
+  status = comparison->summary;
+}
+
+void Inspector::State::take(LoadedDocument& result, const std::string& notice) {
+  if (!result.programAlone.empty()) queue.runs.push_front(RunFiles{result.programAlone, ""});
+  Document& doc = *result.document;
+  // The colouring gave way (see loadDocument): the controls say what the map shows.
+  if (doc.samples && !doc.samples->hasFeedback() && settings.channel.empty() &&
+      quantityInfo(settings.quantity).needsFeedback)
+    settings.quantity = Quantity::Speed;
+  status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
+  for (const std::string& w : doc.warnings) status += " | " + w;
+  if (!notice.empty() && doc.dumpPath.empty() && doc.programPath == queue.noticeProgram) status += " | " + notice;
+  if (!result.programAlone.empty()) {
+    queue.joinNotice = doc.warnings.front();
+    queue.noticeProgram = result.programAlone;
   }
-  if (result->document) {
-    Document& doc = *result->document;
-    // The colouring gave way (see loadDocument): the controls say what the map shows.
-    if (doc.samples && !doc.samples->hasFeedback() && settings.channel.empty() &&
-        quantityInfo(settings.quantity).needsFeedback)
-      settings.quantity = Quantity::Speed;
-    status = doc.name + ": " + (doc.samples ? std::to_string(doc.samples->size()) + " samples" : "no samples");
-    for (const std::string& w : doc.warnings) status += " | " + w;
-    if (!notice.empty() && doc.dumpPath.empty() && doc.programPath == noticeProgram) status += " | " + notice;
-    if (!result->programAlone.empty()) {
-      joinNotice = doc.warnings.front();
-      noticeProgram = result->programAlone;
-    }
-    if (result->replaces < documents.size()) {
-      documents[result->replaces] = std::move(result->document);
-      activate(result->replaces);
-    } else {
-      documents.push_back(std::move(result->document));
-      activate(documents.size() - 1);
-    }
-    view.refit();  // a new map fills the view it is shown in
-  } else if (result->scene) {
-    const std::size_t k = documentOf(result->madeFor);
-    if (k == documents.size()) return;
-    Document* doc = documents[k].get();
-    const bool firstMap = !doc->scene;
-    doc->map = std::move(result->map);
-    doc->scene = result->scene;
-    noteFoldedPasses(*doc);
-    doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
-    status = doc->name + ": coloured by " +
-             (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);
-    if (k != active) return;  // shown when that document is chosen again
-    view.setScene(doc->scene, doc->map.rayIndex);
-    if (firstMap) view.refit();  // a map made after the gap between passes was raised
-    shownGeneration = ~std::uint64_t(0);
+  if (result.replaces < documents.size()) {
+    documents[result.replaces] = std::move(result.document);
+    activate(result.replaces);
+  } else {
+    documents.push_back(std::move(result.document));
+    activate(documents.size() - 1);
   }
+  view.refit();  // a new map fills the view it is shown in
+}
+
+void Inspector::State::take(Recolouring& result, const std::string&) {
+  const std::size_t k = documentOf(result.madeFor);
+  if (k == documents.size() || !result.scene) return;
+  Document* doc = documents[k].get();
+  const bool firstMap = !doc->scene;
+  doc->map = std::move(result.map);
+  doc->scene = result.scene;
+  noteFoldedPasses(*doc);
+  doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  status = doc->name + ": coloured by " +
+           (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);
+  if (k != active) return;  // shown when that document is chosen again
+  view.setScene(doc->scene, doc->map.rayIndex);
+  if (firstMap) view.refit();  // a map made after the gap between passes was raised
+  follow.shownGeneration = ~std::uint64_t(0);
 }
 
 std::size_t Inspector::State::documentOf(const std::shared_ptr<const Trajectory>& samples) const {
@@ -241,8 +249,8 @@ std::size_t Inspector::State::documentOf(const std::shared_ptr<const Trajectory>
   return documents.size();
 }
 
-bool Inspector::State::showDocumentOf(const JobResult& result) {
-  const std::size_t k = documentOf(result.madeFor);
+bool Inspector::State::showDocumentOf(const std::shared_ptr<const Trajectory>& madeFor) {
+  const std::size_t k = documentOf(madeFor);
   if (k == documents.size()) {
     status = "the result was made for a document since closed";
     return false;
@@ -278,22 +286,22 @@ void Inspector::State::activate(std::size_t index) {
     }
   }
   view.invalidate();
-  curveFirst = 0;
-  curveLast = doc && doc->samples ? doc->samples->size() : 0;
-  shownGeneration = ~std::uint64_t(0);
+  follow.curveFirst = 0;
+  follow.curveLast = doc && doc->samples ? doc->samples->size() : 0;
+  follow.shownGeneration = ~std::uint64_t(0);
 }
 
 void Inspector::State::syncHighlight() {
   Document* doc = activeDocument();
   const app_model::Selection& sel = selection.current();
-  if (!doc || !doc->scene || !doc->samples || sel.generation == shownGeneration) return;
+  if (!doc || !doc->scene || !doc->samples || sel.generation == follow.shownGeneration) return;
   // The frame after a selection shows it in every panel at once (a marker over the view);
   // the glow of its line in the 3D scene, which costs a full render, follows a frame later.
-  if (glowDeferred != sel.generation) {
-    glowDeferred = sel.generation;
+  if (follow.glowDeferred != sel.generation) {
+    follow.glowDeferred = sel.generation;
     return;
   }
-  shownGeneration = sel.generation;
+  follow.shownGeneration = sel.generation;
   std::vector<Vec3> line, sample;
   const Trajectory& t = *doc->samples;
   if (sel.line) {
@@ -333,7 +341,7 @@ void Inspector::State::openFile(const std::string& path) { openFiles({path}); }
 
 void Inspector::State::openFiles(const std::vector<std::string>& paths) {
   for (const std::string& path : paths) persistent.addRecent(path);
-  for (RunFiles& run : pairRunFiles(paths)) queuedRuns.push_back(std::move(run));
+  for (RunFiles& run : pairRunFiles(paths)) queue.runs.push_back(std::move(run));
   startQueuedLoad();
 }
 
@@ -344,9 +352,9 @@ void Inspector::State::startQueuedLoad() {
     startRecolour();
     return;
   }
-  if (queuedRuns.empty()) return;
-  const RunFiles run = queuedRuns.front();
-  queuedRuns.pop_front();
+  if (queue.runs.empty()) return;
+  const RunFiles run = queue.runs.front();
+  queue.runs.pop_front();
   // A dump alone joins the active program when that has no dump of its own yet.
   Document* doc = activeDocument();
   if (run.program.empty() && doc && doc->dumpPath.empty() && !doc->programPath.empty())
@@ -360,7 +368,7 @@ void Inspector::open(const std::vector<std::string>& paths) { state_->openFiles(
 
 void Inspector::frame() {
   State& s = *state_;
-  s.escapeTaken = false;
+  s.chrome.escapeTaken = false;
   s.takeJobResult();
   s.startQueuedLoad();
   s.syncHighlight();
@@ -401,7 +409,7 @@ void Inspector::frame() {
 
 // A job's result is taken, and queued files start loading, by the next frame: until then too.
 bool Inspector::busy() const {
-  return state_->job.running() || state_->job.finishedPending() || !state_->queuedRuns.empty();
+  return state_->job.running() || state_->job.finishedPending() || !state_->queue.runs.empty();
 }
 bool Inspector::refining() const { return state_->refinement.pending(); }
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }
@@ -449,22 +457,20 @@ const RunComparison* Inspector::runComparison() const {
 }
 
 void Inspector::useMachine(const Machine& machine, const std::string& source) {
-  state_->machine = machine;
-  state_->machineEdit = machine;
-  state_->machineSource = source;
+  state_->dialogs.machine.use(machine, source);
 }
-const Machine& Inspector::machine() const { return state_->machine; }
+const Machine& Inspector::machine() const { return state_->dialogs.machine.inUse; }
 const Machine* Inspector::activeMachine() const {
   const Document* doc = state_->activeDocument();
   return doc && doc->samples ? &doc->machine : nullptr;
 }
 void Inspector::showMachineWindow() { state_->openMachineWindow(); }
-void Inspector::showWarningsWindow() { state_->warningsOpen = true; }
+void Inspector::showWarningsWindow() { state_->dialogs.warningsOpen = true; }
 void Inspector::simulateAgain() { state_->simulateAgain(); }
 
 const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }
 std::string Inspector::statusText() const { return state_->status; }
 app_model::Settings& Inspector::settings() { return state_->persistent; }
-bool Inspector::quitRequested() const { return state_->quit; }
+bool Inspector::quitRequested() const { return state_->chrome.quit; }
 
 }  // namespace isurface::panels

@@ -10,12 +10,12 @@ namespace isurface::panels {
 
 void noteControl(Inspector::State& s, const std::string& name) {
   const ImVec2 min = ImGui::GetItemRectMin(), max = ImGui::GetItemRectMax();
-  s.controls[name] = {min.x, min.y, max.x, max.y};
+  s.chrome.controls[name] = {min.x, min.y, max.x, max.y};
 }
 
 std::optional<std::array<float, 4>> Inspector::controlRect(const std::string& name) const {
-  const auto found = state_->controls.find(name);
-  if (found == state_->controls.end()) return std::nullopt;
+  const auto found = state_->chrome.controls.find(name);
+  if (found == state_->chrome.controls.end()) return std::nullopt;
   return found->second;
 }
 
@@ -72,29 +72,30 @@ std::string Inspector::describe() const {
   nlohmann::json selection = nlohmann::json::object();
   if (sel.sample) selection["sample"] = *sel.sample;
   if (sel.line) selection["line"] = *sel.line;
-  if (s.hoverSample) selection["hover_sample"] = *s.hoverSample;
+  if (s.pointer.hoverSample) selection["hover_sample"] = *s.pointer.hoverSample;
   nlohmann::json measure = nlohmann::json::object();
-  measure["active"] = s.measuring;
-  if (s.measureA) measure["a"] = pointJson(*s.measureA);
-  if (s.measureB) measure["b"] = pointJson(*s.measureB);
-  if (s.measureA && s.measureB) measure["distance_mm"] = (*s.measureB - *s.measureA).norm();
+  measure["active"] = s.pointer.measuring;
+  if (s.pointer.measureA) measure["a"] = pointJson(*s.pointer.measureA);
+  if (s.pointer.measureB) measure["b"] = pointJson(*s.pointer.measureB);
+  if (s.pointer.measureA && s.pointer.measureB) measure["distance_mm"] = (*s.pointer.measureB - *s.pointer.measureA).norm();
   nlohmann::json controls = nlohmann::json::object();
-  for (const auto& [name, rect] : s.controls) controls[name] = rect;
+  for (const auto& [name, rect] : s.chrome.controls) controls[name] = rect;
   // The surface's box in window pixels, where a script clicks to pick.
-  const auto view = s.controls.find("view");
-  if (const auto r = s.view.surfaceOnScreen(); r && view != s.controls.end())
+  const auto view = s.chrome.controls.find("view");
+  if (const auto r = s.view.surfaceOnScreen(); r && view != s.chrome.controls.end())
     controls["surface"] = {view->second[0] + r->x0, view->second[1] + r->y0, view->second[0] + r->x1, view->second[1] + r->y1};
   nlohmann::json camera = nlohmann::json::object();
   if (const auto pose = s.view.camera())
     camera = {{"position", pointJson(pose->position)}, {"focal_point", pointJson(pose->focalPoint)}, {"view_up", pointJson(pose->viewUp)},
               {"parallel_scale_mm", pose->parallelScale}, {"view_angle_deg", pose->viewAngle}};
-  nlohmann::json windows = {{"machine", s.machineOpen},
-                            {"locate", s.locateOpen},
-                            {"optimise", s.optimiseDialogOpen},
-                            {"replace_question", s.overwriteQuestion.has_value()},
-                            {"help", s.helpOpen},
-                            {"warnings", s.warningsOpen},
-                            {"menu", s.menuOpen}};
+  nlohmann::json windows = {{"machine", s.dialogs.machine.open},
+                            {"locate", s.dialogs.locate.open},
+                            {"optimise", s.dialogs.optimise.open},
+                            {"export", s.dialogs.exportTo.open},
+                            {"replace_question", s.dialogs.overwriteQuestion.has_value()},
+                            {"help", s.dialogs.helpOpen},
+                            {"warnings", s.dialogs.warningsOpen},
+                            {"menu", s.chrome.menuOpen}};
   nlohmann::json map = nlohmann::json::object();
   if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
     map = {{"quantity", doc->map.style.quantityLabel},
@@ -126,33 +127,34 @@ std::string Inspector::describe() const {
                                           {"range_mode", s.settings.rangeMode},
                                           {"gap_limit_mm", s.settings.gapLimit},
                                           {"fixed", {s.settings.fixedLow, s.settings.fixedHigh}}}},
-                              {"locate", {{"sample", s.locateSample}, {"line", s.locateLine}, {"message", s.locateMessage}}},
+                              {"locate", {{"sample", s.dialogs.locate.sample}, {"line", s.dialogs.locate.line}, {"message", s.dialogs.locate.message}}},
                               {"recent_files", s.persistent.recentFiles},
-                              {"scale_bar", {{"length", s.scaleBar.length}, {"unit", s.scaleBar.unit}, {"pixels", s.scaleBar.pixels}}},
+                              {"scale_bar", {{"length", s.pointer.scaleBar.length}, {"unit", s.pointer.scaleBar.unit}, {"pixels", s.pointer.scaleBar.pixels}}},
                               {"theme", s.persistent.theme},
                               {"ui_scale", s.persistent.uiScale},
                               {"active", s.active},
-                              {"optimise_lines", {s.optimiseFirst, s.optimiseLast}},  // the Optimise dialog's range
-                              {"optimise_time_share", s.active < s.documents.size() ? linesTimeShare(*s.documents[s.active], s.optimiseFirst, s.optimiseLast).value_or(0.0) : 0.0},
-                              {"open_path", s.openPath},  // the Open dialog's path, typed or chosen
-                              {"export_path", s.exportPath},  // the Export dialog's
-                              {"busy", s.job.running() || !s.queuedRuns.empty()},
+                              {"optimise_lines", {s.dialogs.optimise.first, s.dialogs.optimise.last}},  // the Optimise dialog's range
+                              {"optimise_time_share", s.active < s.documents.size() ? linesTimeShare(*s.documents[s.active], s.dialogs.optimise.first, s.dialogs.optimise.last).value_or(0.0) : 0.0},
+                              {"open_path", s.dialogs.open.path},  // the Open dialog's path, typed or chosen
+                              {"export_path", s.dialogs.exportTo.path},  // the Export dialog's
+                              {"busy", s.job.running() || !s.queue.runs.empty()},
                               {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}, {"stage", s.job.stage()}}
                                                       : nlohmann::json()},
                               {"selection", selection},
-                              {"machine", machineJson(s.machine)},
-                              {"machine_source", s.machineSource},
-                              {"machine_edited", s.machineOpen ? machineJson(s.machineEdit) : nlohmann::json()},
+                              {"gcode_search", s.dialogs.gcodeSearch.message},
+                              {"machine", machineJson(s.dialogs.machine.inUse)},
+                              {"machine_source", s.dialogs.machine.source},
+                              {"machine_edited", s.dialogs.machine.open ? machineJson(s.dialogs.machine.edit) : nlohmann::json()},
                               {"measure", measure},
                               {"windows", windows},
-                              {"last_saved", s.lastSaved},
-                              {"optimise_problem", s.optimiseDialogOpen ? s.optimiseProblem : std::string()},
-                              {"optimise_range_problem", s.optimiseDialogOpen ? optimiseRangeProblem(s.optimiseFirst, s.optimiseLast) : std::string()},
-                              {"optimise_notice", s.optimiseDialogOpen ? s.optimiseNotice : std::string()},
-                              {"optimise_box", s.optimiseDialogOpen && s.optimiseBox ? optimiseBoxJson(*s.optimiseBox) : nlohmann::json()},
-                              {"optimise_replaces", s.optimiseDialogOpen ? unsavedResultReplaced(s) : std::string()},
+                              {"last_saved", s.chrome.lastSaved},
+                              {"optimise_problem", s.dialogs.optimise.open ? s.dialogs.optimise.problem : std::string()},
+                              {"optimise_range_problem", s.dialogs.optimise.open ? s.dialogs.optimise.rangeProblem() : std::string()},
+                              {"optimise_notice", s.dialogs.optimise.open ? s.dialogs.optimise.notice : std::string()},
+                              {"optimise_box", s.dialogs.optimise.open && s.dialogs.optimise.box ? optimiseBoxJson(*s.dialogs.optimise.box) : nlohmann::json()},
+                              {"optimise_replaces", s.dialogs.optimise.open ? unsavedResultReplaced(s) : std::string()},
                               {"status", s.status},
-                              {"status_shown", s.statusShown},
+                              {"status_shown", s.chrome.statusShown},
                               {"camera", camera},
                               {"controls", controls}};
   return jsonText(out, 1);

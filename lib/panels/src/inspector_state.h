@@ -11,6 +11,7 @@
 #include <optional>
 #include <string>
 #include <utility>
+#include <variant>
 #include <vector>
 
 #include "isurface/gcode/program.h"
@@ -22,7 +23,12 @@
 #include "isurface/panels/scene_view.h"
 #include "isurface/app_model/background_job.h"
 #include "isurface/app_model/box_selection.h"
-#include "isurface/app_model/folder_listing.h"
+#include "isurface/app_model/export_dialog.h"
+#include "isurface/app_model/line_times.h"
+#include "isurface/app_model/open_dialog.h"
+#include "isurface/app_model/optimise_dialog.h"
+#include "isurface/app_model/locate_window.h"
+#include "isurface/app_model/machine_window.h"
 #include "isurface/app_model/signal_pyramid.h"
 #include "isurface/app_model/text_lines.h"
 #include "isurface/vis/quality_map.h"
@@ -65,6 +71,7 @@ struct Document {
   // The servo's positions are loaded when first needed (12 bytes a sample): from here.
   FeedbackSupply feedbackSupply;
   std::shared_ptr<const BiipReader> thinnedDump;  // a thinned run's dump, for its close-ups
+  app_model::LineTimes lineTimes;                  // each line's time, for the G-code pane
   bool feedbackAvailable() const { return samples && (samples->hasFeedback() || feedbackSupply.available()); }
 };
 
@@ -118,26 +125,38 @@ struct RunComparisonView {
   std::string summary;
 };
 
-// What a background job hands over to the UI thread when it ends.
-struct JobResult {
-  std::shared_ptr<Comparison> comparison;   // a re-optimised region
-  bool optimisation = false;                 // the job re-optimises a region (even if it ends in nothing)
-  std::shared_ptr<RunComparisonView> runComparison;  // a second run compared
-  std::unique_ptr<Document> document;        // a newly loaded document
-  std::size_t replaces = ~std::size_t(0);    // the document it takes the place of (a dump joining its program)
-  std::string programAlone;                  // a program whose dump was refused, to open by itself next
-  std::shared_ptr<vis::QualityScene> scene;  // or a new colouring of a document
-  // The samples of the document a colouring, a re-optimisation or a comparison was made for:
-  // another may be shown by the time it ends.
+// What a background job hands over to the UI thread when it ends: one kind for each job, each
+// taken by its own handler (Inspector::State::take). Written by the job, read once it has ended.
+struct LoadedDocument {
+  std::unique_ptr<Document> document;
+  std::size_t replaces = ~std::size_t(0);  // the document it takes the place of (a dump joining its program)
+  std::string programAlone;                // a program whose dump was refused, to open by itself next
+};
+// A new colouring of the document holding `madeFor` (another may be shown by the time it ends).
+struct Recolouring {
   std::shared_ptr<const Trajectory> madeFor;
   vis::QualityMap map;
-  std::string mapRefused;                    // why that colouring made no map
-  std::string reportPath, report;            // or a report to save (File > Export)
-  // or the feedback of a document's samples, and what was waiting for it
-  std::optional<FeedbackOffsets> feedback;
-  std::shared_ptr<const Trajectory> feedbackFor;
-  std::function<void()> afterFeedback;
+  std::shared_ptr<vis::QualityScene> scene;
+  std::string mapRefused;  // why it made no map
 };
+struct OptimisedRegion {
+  std::shared_ptr<const Trajectory> madeFor;
+  std::shared_ptr<Comparison> comparison;  // none when it ended in nothing
+};
+struct ComparedRun {
+  std::shared_ptr<const Trajectory> madeFor;
+  std::shared_ptr<RunComparisonView> view;
+};
+struct WrittenReport {
+  std::string path, html;  // a report to save (File > Export)
+};
+// The feedback of a document's samples, and what was waiting for it.
+struct LoadedFeedback {
+  std::shared_ptr<const Trajectory> madeFor;
+  std::optional<FeedbackOffsets> feedback;
+  std::function<void()> then;
+};
+using JobResult = std::variant<LoadedDocument, Recolouring, OptimisedRegion, ComparedRun, WrittenReport, LoadedFeedback>;
 
 // The label of the report's job begins so.
 inline constexpr const char* kReportJob = "report on ";
@@ -145,6 +164,79 @@ inline constexpr const char* kReportJob = "report on ";
 // A file the user asked to save, waiting for "replace?" when it exists.
 struct PendingSave {
   std::string path, content, what;
+  std::function<void()> ifKept;  // the file is not replaced: back to what asked (a dialog opens again)
+};
+
+// The scale bar last drawn: its length in display units, the unit, its pixels.
+struct ScaleBar {
+  double length = 0;
+  std::string unit;
+  float pixels = 0;
+};
+
+// The pointer over the 3D view: the press of a drag, what the next drag does, the sample it
+// rests on, a distance being measured, the scale bar drawn under it.
+struct ViewPointer {
+  float pressX = 0, pressY = 0;  // where the press began (screen pixels)
+  bool pressedInView = false;    // and whether it began in the view
+  bool rectangleZoom = false;    // the next drag zooms to its rectangle
+  bool boxSelect = false;        // the next drag chooses the region to optimise
+  std::optional<std::size_t> hoverSample;  // the sample under the resting pointer
+  int hoverRestFrames = 0;                 // for how many frames it has rested
+  // Measuring: the next two picks on the surface are the ends of a distance (mm).
+  bool measuring = false;
+  std::optional<Vec3> measureA, measureB;
+  ScaleBar scaleBar;
+};
+
+// The dialogs and windows over the layout, each with its own state.
+struct Dialogs {
+  app_model::OpenDialog open;
+  app_model::LocateWindow locate;
+  app_model::ExportDialog exportTo;
+  app_model::OptimiseDialog optimise;
+  app_model::MachineWindow machine;  // and the machine programs are simulated with
+  struct Compare {
+    bool opening = false;
+    std::string path;  // run B's dump
+  } compare;
+  std::optional<PendingSave> overwriteQuestion;
+  bool helpOpen = false;
+  bool warningsOpen = false;  // the warnings window (W)
+  // The G-code pane's search field (Ctrl+F): what is looked for, and why nothing was found.
+  struct GcodeSearch {
+    std::string text, message;
+    bool focus = false;  // Ctrl+F: the field takes the keyboard on the next frame
+  } gcodeSearch;
+};
+
+// The window around the panels: the status line, the menu, the keys taken this frame, where the
+// controls were drawn.
+struct WindowChrome {
+  std::string statusShown;  // the status as the bar shows it: cut with "..." when too wide
+  bool menuOpen = false;    // a menu of the bar is open (last frame)
+  bool escapeTaken = false; // this frame's Esc was used (a window, measuring): it cancels no job
+  bool quit = false;
+  std::string lastSaved;    // the file the window wrote last
+  // Where the named controls were drawn last (window pixels: x0, y0, x1, y1), for tests and
+  // scripts that drive the window.
+  std::map<std::string, std::array<float, 4>> controls;
+};
+
+// How the panes follow the selection and the view: what each last scrolled or glowed for.
+struct PaneFollow {
+  std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
+  std::uint64_t glowDeferred = ~std::uint64_t(0);     // the selection whose glow comes next frame
+  std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
+  std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
+  int extraCurve = 0;                         // which extra channel the fourth curve shows
+};
+
+// Files opened together, loaded one run after another, and why a dump was not joined to its
+// program (said when that program opens).
+struct RunQueue {
+  std::deque<RunFiles> runs;
+  std::string joinNotice, noticeProgram;
 };
 
 struct Inspector::State {
@@ -155,87 +247,21 @@ struct Inspector::State {
   SceneView afterView;                          // the re-optimised map beside it
   std::shared_ptr<Comparison> comparison;       // of the active document
   std::shared_ptr<RunComparisonView> runComparison;  // of the active document
-  bool compareDialog = false;
-  char comparePath[1024] = "";
-  bool optimiseDialog = false, optimiseDialogOpen = false;
-  int optimiseFirst = 1, optimiseLast = 1;
-  int optimiseObjective = 0;
-  std::string optimiseProblem;  // why the open dialog cannot optimise, if it cannot
-  std::string optimiseNotice;   // why the region asked for in the dialog was not chosen
-  // The rectangle last dragged over the view to choose the region, and what it holds; shown
-  // while the dialog is open, and the region's figures are taken inside it.
-  std::optional<app_model::BoxSelection> optimiseBox;
-  app_model::ScreenRectangle optimiseBoxOnView;
-  std::string optimiseProgram;  // the program whose lines and box the dialog holds
-  char savePath[1024] = "";
-  // The path suggested for the last result and its program: a path typed over the suggestion
-  // stays for the next result of the same program.
-  std::string suggestedSavePath, savePathProgram;
-  std::optional<PendingSave> overwriteQuestion;
-  // Where the named controls were drawn last (window pixels: x0, y0, x1, y1), for tests and
-  // scripts that drive the window.
-  std::map<std::string, std::array<float, 4>> controls;
-  std::string lastSaved;  // the file the window wrote last
-  std::string statusShown;  // the status as the bar shows it: cut with "..." when too wide
-  // Measuring: the next two picks on the surface are the ends of a distance (mm).
-  bool measuring = false;
-  std::optional<Vec3> measureA, measureB;
-  bool helpOpen = false;
-  bool escapeTaken = false;  // this frame's Esc was used (a window, measuring): it cancels no job
-  // The scale bar last drawn: its length in display units, the unit, its pixels.
-  struct ScaleBar {
-    double length = 0;
-    std::string unit;
-    float pixels = 0;
-  } scaleBar;
-  // The export dialog: what (0 view PNG, 1 map figures JSON, 2 samples of lines CSV, 3 report
-  // HTML), where.
-  bool exportDialog = false;
-  int exportKind = 0, exportWidth = 1920, exportHeight = 1080, exportFirst = 1, exportLast = 1;
-  int exportRegions = 5;
-  char exportPath[1024] = "";
-  // The sample under the resting pointer, and for how many frames the pointer has rested.
-  std::optional<std::size_t> hoverSample;
-  int hoverRestFrames = 0;
-  // The machine programs are simulated with, where it came from, and the machine window's copy
-  // being edited (applied by its "Simulate with this machine").
-  Machine machine = defaultMachine();
-  std::string machineSource = "built-in default";
-  Machine machineEdit = defaultMachine();
-  bool machineOpen = false, machineAppearing = false;
-  char machineLoadPath[1024] = "", machineSavePath[1024] = "";
-  std::string machineMessage;  // why the last request of the machine window failed
   std::vector<std::unique_ptr<Document>> documents;
-  std::deque<RunFiles> queuedRuns;  // files opened together, loaded one run after another
-  std::string joinNotice;           // why a dump was not joined, shown when its program opens
-  std::string noticeProgram;        // that program
   std::size_t active = 0;
+  RunQueue queue;
   app_model::SelectionModel selection;
-  std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
-  std::uint64_t glowDeferred = ~std::uint64_t(0);     // the selection whose glow comes next frame
   ViewSettings settings;
   app_model::Settings persistent;
   app_model::BackgroundJob job;
   std::shared_ptr<JobResult> pending;  // written by the job, taken on the UI thread
+  bool recolourWaiting = false;        // a colouring asked for while a report was being made
   std::string status = "Open a G-code program or a Biip dump (File > Open, or drop it on the window).";
-  bool quit = false;
-  bool openDialog = false, locateDialog = false;
-  char openPath[1024] = "";
-  app_model::FolderListing browse;  // the Open dialog's folder
-  int browseFilter = 0, browseFilterListed = -1;  // an app_model::FileFilter
-  std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
-  bool rectangleZoom = false;
-  bool boxSelect = false;  // the next drag in the view chooses the region to optimise
-  // Mouse in the 3D view: where the press began (screen pixels) and whether it began there.
-  float pressX = 0, pressY = 0;
-  bool pressedInView = false;
-  int extraCurve = 0;
-  int locateSample = 0, locateLine = 1;  // the locate window's fields
-  bool locateOpen = false;
-  bool warningsOpen = false;  // the warnings window (W)
-  bool menuOpen = false;      // a menu of the bar is open (last frame)
-  std::string locateMessage;  // why the last request went nowhere  // which extra channel the fourth curve shows
-  std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
+  Dialogs dialogs;
+  ViewPointer pointer;
+  WindowChrome chrome;
+  PaneFollow follow;
+
   // Opens a program or a dump: a dump joins the active program when that has none yet.
   void openFile(const std::string& path);
   // Opens files named together (a command line, a drop): a dump after its program joins it.
@@ -247,7 +273,7 @@ struct Inspector::State {
   // The index of the document holding these samples; documents.size() when none does.
   std::size_t documentOf(const std::shared_ptr<const Trajectory>& samples) const;
   // Shows the document a finished job was made for, if another is shown; false when it is gone.
-  bool showDocumentOf(const JobResult& result);
+  bool showDocumentOf(const std::shared_ptr<const Trajectory>& madeFor);
   // How lengths are shown: the user's choice, or as the active program is written.
   DisplayUnits units() const {
     if (persistent.units != "auto") return DisplayUnits{persistent.units == "inch"};
@@ -262,23 +288,22 @@ struct Inspector::State {
   // when there is nothing to load: the caller goes on at once.
   bool loadFeedbackFirst(std::function<void()> then);
   // The loaded feedback joins its document's samples (on the UI thread, no job running).
-  void attachLoadedFeedback(JobResult& result);
+  void attachLoadedFeedback(LoadedFeedback& result);
   // Simulates the active document's program again with `machine`: in its place, or, when it
   // holds a dump (a recording), as a new document beside it.
   void simulateAgain();
   // Opens the machine window with the machine in use; an open one keeps its edits.
-  void openMachineWindow() {
-    if (!machineOpen) machineOpen = machineAppearing = true;
-  }
+  void openMachineWindow() { dialogs.machine.show(); }
   // Esc pressed this frame and not yet used by anything else: it is now.
   bool takeEscape() {
-    if (escapeTaken || !ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
-    return escapeTaken = true;
+    if (chrome.escapeTaken || !ImGui::IsKeyPressed(ImGui::GetKeyIndex(ImGuiKey_Escape), false)) return false;
+    return chrome.escapeTaken = true;
   }
   // Closes the active document; the one after it (or before, at the end) becomes active.
   void closeActive();
   // Writes `content` to `path` (atomically), or asks first when the file exists.
-  void save(const std::string& path, std::string content, const std::string& what);
+  // `ifKept`: what to do when the user keeps the file (the dialog that asked opens again).
+  void save(const std::string& path, std::string content, const std::string& what, std::function<void()> ifKept = {});
   // `measuredBox`: where the region's figures are taken (XY, mm); else where the path was re-fitted.
   void startOptimise(std::uint32_t first, std::uint32_t last,
                      std::optional<std::pair<Vec3, Vec3>> measuredBox = std::nullopt);
@@ -295,10 +320,18 @@ struct Inspector::State {
     status = "wait for the report being made (or cancel it) to " + what;
     return true;
   }
-  bool recolourWaiting = false;  // a colouring asked for while a report was being made
   // The view beside the main one shows run B's map or the difference map.
   void showRunDifference(bool difference);
   void takeJobResult();
+  // The ended job's result, one handler for each kind (`notice`: why a dump was not joined).
+  void take(LoadedDocument& result, const std::string& notice);
+  void take(Recolouring& result, const std::string& notice);
+  void take(OptimisedRegion& result, const std::string& notice);
+  void take(ComparedRun& result, const std::string& notice);
+  void take(WrittenReport& result, const std::string& notice);
+  void take(LoadedFeedback& result, const std::string& notice);
+  // A job cancelled or failed: what its result leaves to say or to do.
+  void jobEndedWithout(JobResult* result);
   void activate(std::size_t index);
   void syncHighlight();
 };
@@ -311,20 +344,11 @@ void drawViewFrame(unsigned int texture, ImVec2 size);
 // first lets the field go, as ImGui does).
 inline bool escapeCloses(Inspector::State& s) { return !ImGui::GetIO().WantTextInput && s.takeEscape(); }
 
-// Why the Optimise dialog's lines cannot be optimised as typed, or nothing when they can.
-inline std::string optimiseRangeProblem(int first, int last) {
-  if (first < 1) return "the first line is line 1 or after";
-  if (last < first) return "the last line is before the first: no lines to optimise";
-  return {};
-}
 // What the Optimise dialog says when a new result would replace a kept one not saved, or nothing.
 std::string unsavedResultReplaced(const Inspector::State& s);
-// The Optimise dialog's lines and box belong to one program: another program active, they are
-// forgotten (a range of its own lines would mean other moves).
-void forgetTheRegionOfAnotherProgram(Inspector::State& s);
 // A scale bar at a view's lower right (see panel_view.cpp); what it shows.
-Inspector::State::ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width);  // its length and pixels
-Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
+ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width);  // its length and pixels
+ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size);
 // What the 3D view says where no map stands.
 std::string emptyViewText(const Inspector::State& s);
 
@@ -361,6 +385,8 @@ void drawCompareDialog(Inspector::State& s);
 void drawOverwriteQuestion(Inspector::State& s);
 void drawMachineWindow(Inspector::State& s);
 void drawExportDialog(Inspector::State& s);
+// What a file kept rather than replaced goes back to: the Export dialog, opened again.
+std::function<void()> backToTheDialog(Inspector::State& s);
 void drawOpenDialog(Inspector::State& s);
 void drawHelpWindow(Inspector::State& s);
 // The panel beside the 3D view: its figures on top (begin), then the view beside the main one

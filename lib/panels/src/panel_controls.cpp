@@ -51,10 +51,10 @@ bool toolButton(const char* label, const char* tip) {
 }
 
 void toggleMeasure(Inspector::State& s) {
-  s.measuring = !s.measuring;
-  s.measureA.reset();
-  s.measureB.reset();
-  s.status = s.measuring ? "measure: click the first point on the surface (Esc ends)" : "measuring ended";
+  s.pointer.measuring = !s.pointer.measuring;
+  s.pointer.measureA.reset();
+  s.pointer.measureB.reset();
+  s.status = s.pointer.measuring ? "measure: click the first point on the surface (Esc ends)" : "measuring ended";
 }
 
 // Theme, size of text and controls, and the units lengths are shown in; all remembered.
@@ -102,19 +102,19 @@ void beginPanel(const char* name, float x, float y, float w, float h, int extraF
 
 // Inside a menu of the bar: Esc closes it (Dear ImGui 1.86 does only with keyboard navigation on).
 void closeMenuOnEscape(Inspector::State& s) {
-  s.menuOpen = true;
+  s.chrome.menuOpen = true;
   if (s.takeEscape()) ImGui::CloseCurrentPopup();
 }
 
 void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   bool simulate = false, locate = false;
-  const bool boxSelectWasOn = s.boxSelect;
-  s.menuOpen = false;
+  const bool boxSelectWasOn = s.pointer.boxSelect;
+  s.chrome.menuOpen = false;
   if (ImGui::BeginMainMenuBar()) {
     const bool fileMenu = ImGui::BeginMenu("File");
     noteControl(s, "menu.file");
     if (fileMenu) {
-      if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.openDialog = true;
+      if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.dialogs.open.open();
       const bool recentMenu = ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty());
       noteControl(s, "menu.recent");
       if (recentMenu) {
@@ -127,10 +127,10 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
         ImGui::EndMenu();
       }
       if (ImGui::MenuItem("Compare with another run...", nullptr, false, s.activeDocument() != nullptr))
-        s.compareDialog = true;
-      if (ImGui::MenuItem("Export...", "Ctrl+E", false, s.activeDocument() != nullptr)) s.exportDialog = true;
+        s.dialogs.compare.opening = true;
+      if (ImGui::MenuItem("Export...", "Ctrl+E", false, s.activeDocument() != nullptr)) s.dialogs.exportTo.show(s.selection.current().line);
       if (ImGui::MenuItem("Close", "Ctrl+W", false, s.activeDocument() != nullptr)) s.closeActive();
-      if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.quit = true;
+      if (ImGui::MenuItem("Quit", "Ctrl+Q")) s.chrome.quit = true;
       closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
@@ -140,8 +140,8 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Front", "F")) setView(s, vis::ViewDirection::Front);
       if (ImGui::MenuItem("Left", "L")) setView(s, vis::ViewDirection::Left);
       if (ImGui::MenuItem("Reset", "R")) setView(s, s.settings.view);
-      ImGui::MenuItem("Rectangle zoom", "Z", &s.rectangleZoom);
-      ImGui::MenuItem("Warnings", "W", &s.warningsOpen);
+      ImGui::MenuItem("Rectangle zoom", "Z", &s.pointer.rectangleZoom);
+      ImGui::MenuItem("Warnings", "W", &s.dialogs.warningsOpen);
       ImGui::Separator();
       drawLookMenus(s);
       closeMenuOnEscape(s);
@@ -162,14 +162,14 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Simulate again", "S")) simulate = true;
       if (ImGui::MenuItem("Machine...", "M")) s.openMachineWindow();
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
-      if (ImGui::MenuItem("Optimise region...", "P")) s.optimiseDialog = true;
-      ImGui::MenuItem("Select region box", "B", &s.boxSelect);
-      if (ImGui::MenuItem("Measure distance", "D", s.measuring)) toggleMeasure(s);
+      if (ImGui::MenuItem("Optimise region...", "P")) s.dialogs.optimise.opening = true;
+      ImGui::MenuItem("Select region box", "B", &s.pointer.boxSelect);
+      if (ImGui::MenuItem("Measure distance", "D", s.pointer.measuring)) toggleMeasure(s);
       closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Help")) {
-      if (ImGui::MenuItem("Keys and version", "H", s.helpOpen)) s.helpOpen = !s.helpOpen;
+      if (ImGui::MenuItem("Keys and version", "H", s.dialogs.helpOpen)) s.dialogs.helpOpen = !s.dialogs.helpOpen;
       closeMenuOnEscape(s);
       ImGui::EndMenu();
     }
@@ -179,7 +179,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetFrameHeightWithSpacing() + 10));
   ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
   if (toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)") || shortcut('O') || shortcut('O', true))
-    s.openDialog = true;
+    s.dialogs.open.open();
   if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
   if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut('M'))
     s.openMachineWindow();
@@ -188,30 +188,31 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (toolButton("Front", "Front view (F)") || shortcut('F')) setView(s, vis::ViewDirection::Front);
   if (toolButton("Left", "Left view (L)") || shortcut('L')) setView(s, vis::ViewDirection::Left);
   if (toolButton("Reset", "Reset the camera (R)") || shortcut('R')) setView(s, s.settings.view);
-  if (toolButton(s.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
-    s.rectangleZoom = !s.rectangleZoom;
-  if (toolButton(s.boxSelect ? "[Select box]" : "Select box",
+  if (toolButton(s.pointer.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
+    s.pointer.rectangleZoom = !s.pointer.rectangleZoom;
+  if (toolButton(s.pointer.boxSelect ? "[Select box]" : "Select box",
                  "Drag a rectangle over the surface: its lines go to the Optimise dialog (B)") ||
       shortcut('B'))
-    s.boxSelect = !s.boxSelect;
-  if (toolButton(s.measuring ? "[Measure]" : "Measure", "Click two points of the surface: their distance (D)") ||
+    s.pointer.boxSelect = !s.pointer.boxSelect;
+  if (toolButton(s.pointer.measuring ? "[Measure]" : "Measure", "Click two points of the surface: their distance (D)") ||
       shortcut('D'))
     toggleMeasure(s);
   if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
-  if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.optimiseDialog = true;
+  if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.dialogs.optimise.opening = true;
   ImGui::End();
   // One rectangle tool at a time: the one switched on last.
-  if (s.boxSelect && s.rectangleZoom) {
-    if (boxSelectWasOn) s.boxSelect = false;
-    else s.rectangleZoom = false;
+  if (s.pointer.boxSelect && s.pointer.rectangleZoom) {
+    if (boxSelectWasOn) s.pointer.boxSelect = false;
+    else s.pointer.rectangleZoom = false;
   }
-  if (shortcut('Q', true)) s.quit = true;
-  if (shortcut('E', true) && s.activeDocument()) s.exportDialog = true;
+  if (shortcut('Q', true)) s.chrome.quit = true;
+  if (shortcut('E', true) && s.activeDocument()) s.dialogs.exportTo.show(s.selection.current().line);
   if (shortcut('W', true) && s.activeDocument()) s.closeActive();
-  if (shortcut('H')) s.helpOpen = !s.helpOpen;
-  if (shortcut('W')) s.warningsOpen = !s.warningsOpen;
-  if (s.measuring && s.takeEscape()) toggleMeasure(s);
-  if (locate) s.locateDialog = true;
+  if (shortcut('F', true) && s.activeDocument()) s.dialogs.gcodeSearch.focus = true;
+  if (shortcut('H')) s.dialogs.helpOpen = !s.dialogs.helpOpen;
+  if (shortcut('W')) s.dialogs.warningsOpen = !s.dialogs.warningsOpen;
+  if (s.pointer.measuring && s.takeEscape()) toggleMeasure(s);
+  if (locate) s.dialogs.locate.show(s.selection);
   if (simulate) s.simulateAgain();
 }
 
@@ -413,13 +414,13 @@ void drawStatusBar(Inspector::State& s, float y, float width) {
     const bool open = ImGui::SmallButton(label.c_str());
     ImGui::PopStyleColor();
     noteControl(s, "status.warnings");
-    if (open) s.warningsOpen = true;
+    if (open) s.dialogs.warningsOpen = true;
     ImGui::SameLine();
   }
   // A status wider than the bar is cut at its end, and shown whole under the pointer.
-  s.statusShown = fittedToWidth(s.status, ImGui::GetContentRegionAvail().x);
-  ImGui::TextUnformatted(s.statusShown.c_str());
-  if (s.statusShown != s.status && ImGui::IsItemHovered()) {
+  s.chrome.statusShown = fittedToWidth(s.status, ImGui::GetContentRegionAvail().x);
+  ImGui::TextUnformatted(s.chrome.statusShown.c_str());
+  if (s.chrome.statusShown != s.status && ImGui::IsItemHovered()) {
     ImGui::BeginTooltip();
     ImGui::PushTextWrapPos(std::min(width * 0.8f, ImGui::GetFontSize() * 50));
     ImGui::TextUnformatted(s.status.c_str());
@@ -433,55 +434,51 @@ namespace {
 
 // Not modal: the panes follow each request while it is open. It starts at the selection.
 void drawLocateWindow(Inspector::State& s) {
-  if (s.locateDialog) {
-    const app_model::Selection& sel = s.selection.current();
-    if (sel.sample) s.locateSample = static_cast<int>(*sel.sample);
-    if (sel.line) s.locateLine = static_cast<int>(*sel.line);
-    s.locateMessage.clear();
-    s.locateOpen = true;
-    ImGui::SetNextWindowFocus();
-  }
-  s.locateDialog = false;
-  if (!s.locateOpen) return;
+  app_model::LocateWindow& w = s.dialogs.locate;
+  if (w.opening) ImGui::SetNextWindowFocus();
+  w.opening = false;
+  if (!w.open) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.4f), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
-  if (ImGui::Begin("Locate", &s.locateOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+  if (ImGui::Begin("Locate", &w.open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
     const Document* doc = s.activeDocument();
-    const std::size_t samples = doc && doc->samples ? doc->samples->size() : 0;
     const std::size_t lines = doc && doc->text ? doc->text->count() : 0;
     // The fields take what is typed as it is typed (a click on Go then goes there); Enter goes too.
     const int enter = ImGui::GetKeyIndex(ImGuiKey_Enter);
+    const auto enterPressed = [enter] { return ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter); };
     if (doc && doc->samples && doc->samples->thinning > 1)
       ImGui::TextDisabled("1 sample in %zu of the dump: sample i is its record %zu x i", doc->samples->thinning,
                           doc->samples->thinning);
-    ImGui::InputInt("sample", &s.locateSample, 1, 100);
-    bool goSample = ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter);
+    ImGui::InputInt("sample", &w.sample, 1, 100);
+    bool goSample = enterPressed();
     noteControl(s, "locate.sample");
     ImGui::SameLine();
     goSample |= ImGui::Button("Go to sample");
     noteControl(s, "locate.goSample");
-    ImGui::InputInt("G-code line", &s.locateLine, 1, 100);
-    bool goLine = ImGui::IsItemDeactivatedAfterEdit() && ImGui::IsKeyPressed(enter);
+    ImGui::InputInt("G-code line", &w.line, 1, 100);
+    bool goLine = enterPressed();
     ImGui::SameLine();
     goLine |= ImGui::Button("Go to line");
-    if (goSample) {
-      s.locateMessage.clear();
-      if (samples == 0) s.locateMessage = "no samples: simulate or open a dump";
-      else if (s.locateSample < 0 || static_cast<std::size_t>(s.locateSample) >= samples)
-        s.locateMessage = "sample " + std::to_string(s.locateSample) + " is out of range: 0 .. " + std::to_string(samples - 1);
-      else s.selection.selectSample(static_cast<std::size_t>(s.locateSample));
-    }
-    if (goLine) {
-      s.locateMessage.clear();
-      if (lines == 0) s.locateMessage = "no program";
-      else if (s.locateLine < 1 || static_cast<std::size_t>(s.locateLine) > lines)
-        s.locateMessage = "line " + std::to_string(s.locateLine) + " is out of range: 1 .. " + std::to_string(lines);
-      else if (!s.selection.selectLine(static_cast<std::uint32_t>(s.locateLine)))
-        s.locateMessage = "line " + std::to_string(s.locateLine) + " produced no samples";
-    }
-    if (!s.locateMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", s.locateMessage.c_str());
-    if (ImGui::Button("Close")) s.locateOpen = false;
+    // The point in the window's length unit; the model keeps mm.
+    const DisplayUnits units = s.units();
+    double shown[3] = {units.length(w.point.x()), units.length(w.point.y()), units.length(w.point.z())};
+    ImGui::SetNextItemWidth(ImGui::GetFontSize() * 18);
+    const std::string pointLabel = std::string("X, Y, Z [") + units.lengthUnit() + "]";
+    const bool pointEdited = ImGui::InputScalarN(pointLabel.c_str(), ImGuiDataType_Double, shown, 3, nullptr, nullptr,
+                                                 units.inch ? "%.5f" : "%.4f");
+    bool goPoint = enterPressed();
+    noteControl(s, "locate.point");
+    if (pointEdited)
+      for (int a = 0; a < 3; ++a) w.point[a] = units.inch ? shown[a] * kMmPerInch : shown[a];
+    ImGui::SameLine();
+    goPoint |= ImGui::Button("Go to point");
+    noteControl(s, "locate.goPoint");
+    if (goSample) w.goToSample(s.selection);
+    if (goLine) w.goToLine(s.selection, lines);
+    if (goPoint) w.goToPoint(s.selection);
+    if (!w.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", w.message.c_str());
+    if (ImGui::Button("Close")) w.open = false;
   }
   ImGui::End();
 }

@@ -12,6 +12,7 @@
 #include <filesystem>
 
 #include "inspector_state.h"
+#include "text_input.h"
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/base/json_text.h"
@@ -103,107 +104,99 @@ std::string samplesCsv(const Document& doc, std::uint32_t first, std::uint32_t l
   return out;
 }
 
-// `path` (a buffer of `size` bytes) with the extension of export kind `kind` in place of a known
-// export's extension; a path with another extension, or none, is left to the user.
-void withExtensionOf(char* path, std::size_t size, int kind) {
-  static const char* const kExtensions[] = {".png", ".json", ".csv", ".html"};
-  std::string text(path);
-  for (const char* known : kExtensions) {
-    const std::size_t length = std::strlen(known);
-    if (text.size() <= length || text.compare(text.size() - length, length, known) != 0) continue;
-    text = text.substr(0, text.size() - length) + kExtensions[std::clamp(kind, 0, 3)];
-    if (text.size() < size) std::snprintf(path, size, "%s", text.c_str());
-    return;
-  }
+}  // namespace
+
+// A file kept rather than replaced: the Export dialog opens again, its path to be changed.
+std::function<void()> backToTheDialog(Inspector::State& s) {
+  return [&s] { s.dialogs.exportTo.opening = true; };
 }
 
-// The map's figures (kind 1) or the samples of lines first..last (kind 2), written to `path`.
-void exportNumbers(Inspector::State& s, int kind, const std::string& path, int first, int last) {
+namespace {
+
+// The map's figures or the samples of lines first..last, written to `path`.
+void exportNumbers(Inspector::State& s, app_model::ExportKind kind, const std::string& path, int first, int last) {
   const Document* doc = s.activeDocument();
   if (!doc || !doc->samples) return;
-  if (kind == 1) {
-    if (doc->scene) s.save(path, figuresJson(*doc), "map figures");
+  if (kind == app_model::ExportKind::MapFigures) {
+    if (doc->scene) s.save(path, figuresJson(*doc), "map figures", backToTheDialog(s));
     return;
   }
   std::size_t rows = 0;
   std::string csv = samplesCsv(*doc, static_cast<std::uint32_t>(first), static_cast<std::uint32_t>(last), rows);
   if (rows == 0) s.status = fmt::format("lines {}-{} produced no samples: nothing exported", first, last);
-  else s.save(path, std::move(csv), fmt::format("{} samples", rows));
+  else s.save(path, std::move(csv), fmt::format("{} samples", rows), backToTheDialog(s));
+}
+
+// A radio button for one kind of export.
+void kindButton(app_model::ExportDialog& dialog, const char* label, app_model::ExportKind kind) {
+  if (ImGui::RadioButton(label, dialog.kind == kind)) dialog.choose(kind);
 }
 
 }  // namespace
 
 void drawExportDialog(Inspector::State& s) {
-  if (s.exportDialog) {
-    ImGui::OpenPopup("Export");
-    if (const auto line = s.selection.current().line) s.exportFirst = s.exportLast = static_cast<int>(*line);
-  }
-  s.exportDialog = false;
-  if (!ImGui::BeginPopupModal("Export", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  app_model::ExportDialog& d = s.dialogs.exportTo;
+  if (d.opening) ImGui::OpenPopup("Export");
+  d.opening = false;
+  d.open = ImGui::BeginPopupModal("Export", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!d.open) return;
+  using app_model::ExportKind;
   Document* doc = s.activeDocument();
-  const int kindBefore = s.exportKind;
-  ImGui::RadioButton("the view as PNG", &s.exportKind, 0);
+  kindButton(d, "the view as PNG", ExportKind::ViewPng);
   noteControl(s, "export.png");
   ImGui::SameLine();
-  ImGui::RadioButton("the map's figures as JSON", &s.exportKind, 1);
+  kindButton(d, "the map's figures as JSON", ExportKind::MapFigures);
   noteControl(s, "export.json");
   ImGui::SameLine();
-  ImGui::RadioButton("the samples of lines as CSV", &s.exportKind, 2);
+  kindButton(d, "the samples of lines as CSV", ExportKind::LineSamples);
   noteControl(s, "export.csv");
   ImGui::SameLine();
-  ImGui::RadioButton("a report (HTML)", &s.exportKind, 3);
+  kindButton(d, "a report (HTML)", ExportKind::Report);
   noteControl(s, "export.report");
-  // Another kind of export gets its own file name's extension: a JSON is not offered "view.png".
-  if (s.exportKind != kindBefore) withExtensionOf(s.exportPath, sizeof s.exportPath, s.exportKind);
-  if (s.exportKind == 0) {
+  if (d.kind == ExportKind::ViewPng) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    ImGui::InputInt("width [px]", &s.exportWidth, 0);
+    ImGui::InputInt("width [px]", &d.width, 0);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    ImGui::InputInt("height [px]", &s.exportHeight, 0);
-  } else if (s.exportKind == 2) {
+    ImGui::InputInt("height [px]", &d.height, 0);
+  } else if (d.kind == ExportKind::LineSamples) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    ImGui::InputInt("first line", &s.exportFirst, 0);
+    ImGui::InputInt("first line", &d.first, 0);
     ImGui::SameLine();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    ImGui::InputInt("last line", &s.exportLast, 0);
-  } else if (s.exportKind == 3) {
+    ImGui::InputInt("last line", &d.last, 0);
+  } else if (d.kind == ExportKind::Report) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
-    ImGui::InputInt("worst regions shown", &s.exportRegions, 0);
+    ImGui::InputInt("worst regions shown", &d.regions, 0);
     ImGui::TextDisabled("maps, worst regions with their G-code and speed, axis limits: one file to open in a browser");
   }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
-  ImGui::InputTextWithHint("##path", "file to write", s.exportPath, sizeof s.exportPath);
+  inputTextWithHint("##path", "file to write", d.path);
   noteControl(s, "export.path");
-  std::string problem;
-  if (!doc || !doc->samples) problem = "nothing to export: open a program or a dump first";
-  else if (s.exportKind != 2 && !doc->scene) problem = "no map to export: " + doc->name + " has no surface";
-  else if ((s.exportKind == 1 || s.exportKind == 2) && doc->samples->thinning > 1)
-    problem = fmt::format("{} is shown thinned (1 sample in {}): its figures and samples need every sample",
-                          doc->name, doc->samples->thinning);
-  else if (s.exportKind == 0 && (s.exportWidth < 64 || s.exportHeight < 64 || s.exportWidth > 8192 || s.exportHeight > 8192))
-    problem = "the size must be 64 to 8192 pixels each way";
-  else if (s.exportKind == 2 && (s.exportFirst < 1 || s.exportLast < s.exportFirst))
-    problem = "the lines must be first <= last, from 1";
-  else if (s.exportKind == 3 && (s.exportRegions < 0 || s.exportRegions > 50))
-    problem = "the regions shown must be 0 to 50";
-  else if (s.exportKind == 3 && s.job.running())
-    problem = "wait for the work in progress (or cancel it) first";
-  else if (!s.exportPath[0]) problem = "give the file to write";
+  app_model::ExportSubject subject;
+  if (doc) {
+    subject.name = doc->name;
+    subject.hasSamples = doc->samples != nullptr;
+    subject.hasMap = doc->scene != nullptr;
+    subject.thinning = doc->samples ? doc->samples->thinning : 1;
+  }
+  subject.jobRunning = s.job.running();
+  const std::string problem = d.problem(subject);
   if (!problem.empty()) ImGui::TextDisabled("%s", problem.c_str());
   const bool write = ImGui::Button("Export");
   noteControl(s, "export.write");
   if (write && problem.empty()) {
-    if (s.exportKind == 0) {
-      const std::vector<unsigned char> rgb = s.view.snapshot(s.exportWidth, s.exportHeight);
+    if (d.kind == ExportKind::ViewPng) {
+      const std::vector<unsigned char> rgb = s.view.snapshot(d.width, d.height);
       if (rgb.empty()) s.status = "error: the view could not be drawn at that size";
-      else s.save(s.exportPath, vis::pngOfRgb(rgb.data(), s.exportWidth, s.exportHeight), "view image");
-    } else if (s.exportKind == 3) {
-      s.startReport(s.exportPath, s.exportRegions);
+      else s.save(d.path, vis::pngOfRgb(rgb.data(), d.width, d.height), "view image", backToTheDialog(s));
+    } else if (d.kind == ExportKind::Report) {
+      s.startReport(d.path, d.regions);
     } else {
       // The figures' predicted deviation and the samples' feedback columns need the feedback.
-      auto numbers = [&s, kind = s.exportKind, path = std::string(s.exportPath), first = s.exportFirst,
-                      last = s.exportLast] { exportNumbers(s, kind, path, first, last); };
+      auto numbers = [&s, kind = d.kind, path = d.path, first = d.first, last = d.last] {
+        exportNumbers(s, kind, path, first, last);
+      };
       if (!s.loadFeedbackFirst(numbers)) numbers();
     }
     ImGui::CloseCurrentPopup();

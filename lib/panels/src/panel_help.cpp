@@ -22,7 +22,8 @@ constexpr KeyHelp kKeys[] = {
     {"Z", "zoom to a rectangle dragged over the view"},
     {"B", "drag a box over the view to choose the region to optimise"},
     {"D", "measure: the next two clicks on the surface are the ends of a distance"},
-    {"Ctrl+L", "locate a sample or a G-code line"},
+    {"Ctrl+L", "locate a sample, a G-code line or the sample nearest a point"},
+    {"Ctrl+F", "find text in the G-code (Enter: next, Shift+Enter: previous)"},
     {"W", "every warning of the open files; a click goes to the line it names"},
     {"P", "re-optimise a region and compare the maps"},
     {"Ctrl+E", "export the view (PNG), the map's figures (JSON) or samples (CSV)"},
@@ -36,11 +37,11 @@ constexpr KeyHelp kKeys[] = {
 }  // namespace
 
 void drawHelpWindow(Inspector::State& s) {
-  if (!s.helpOpen) return;
+  if (!s.dialogs.helpOpen) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.45f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);
-  if (ImGui::Begin("Help", &s.helpOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+  if (ImGui::Begin("Help", &s.dialogs.helpOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
     ImGui::Text("iSurface %s", ISURFACE_VERSION);
     ImGui::TextDisabled("Quality maps of NC interpolation: speed, acceleration, jerk, inconsistency, deviation");
     ImGui::Separator();
@@ -55,7 +56,7 @@ void drawHelpWindow(Inspector::State& s) {
       ImGui::EndTable();
     }
     // Esc closes it as it closes the other windows, when it has the keyboard.
-    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && escapeCloses(s)) s.helpOpen = false;
+    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && escapeCloses(s)) s.dialogs.helpOpen = false;
   }
   ImGui::End();
 }

@@ -3,11 +3,10 @@
 // simulating the active program again.
 #include <imgui.h>
 
-#include <cstdio>
 #include <optional>
 
 #include "inspector_state.h"
-#include "isurface/app_model/machine_edits.h"
+#include "text_input.h"
 #include "isurface/base/units.h"
 
 namespace isurface::panels {
@@ -24,7 +23,7 @@ bool editScaled(const char* label, double& stored, double scale, const char* for
 }
 
 void drawAxisTable(Inspector::State& s) {
-  Machine& m = s.machineEdit;
+  Machine& m = s.dialogs.machine.edit;
   static const char* const kRows[] = {"max velocity [mm/min]", "max acceleration [mm/s^2]", "max jerk [mm/s^3] (0: none)",
                                       "position gain [1/s]",   "velocity feed-forward [0..1]",
                                       "velocity loop lag [ms]"};
@@ -57,45 +56,27 @@ void drawAxisTable(Inspector::State& s) {
   ImGui::EndTable();
 }
 
-// The edited machine as parseMachine() takes it: its checks are the ones a file gets.
-std::optional<Machine> checked(Inspector::State& s) {
-  try {
-    return parseMachine(machineDescriptionJson(s.machineEdit), "machine window");
-  } catch (const InputError& e) {
-    s.machineMessage = e.what();
-    return std::nullopt;
-  }
-}
-
 void drawLoadAndSave(Inspector::State& s) {
+  app_model::MachineWindow& w = s.dialogs.machine;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 24);
-  const bool enter = ImGui::InputTextWithHint("##load", "machine description to load (.json)", s.machineLoadPath,
-                                              sizeof s.machineLoadPath, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter =
+      inputTextWithHint("##load", "machine description to load (.json)", w.loadPath, ImGuiInputTextFlags_EnterReturnsTrue);
   noteControl(s, "machine.loadPath");
   ImGui::SameLine();
   const bool load = ImGui::Button("Load description");
   noteControl(s, "machine.load");
-  if ((load || enter) && s.machineLoadPath[0]) {
-    try {
-      s.machineEdit = loadMachine(s.machineLoadPath);
-      s.machineMessage = std::string("loaded ") + s.machineLoadPath + ": simulate to use it";
-    } catch (const InputError& e) {
-      s.machineMessage = e.what();
-    }
-  }
+  if (load || enter) w.load();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 24);
-  ImGui::InputTextWithHint("##save", "file to save the description to (.json)", s.machineSavePath,
-                           sizeof s.machineSavePath);
+  inputTextWithHint("##save", "file to save the description to (.json)", w.savePath);
   noteControl(s, "machine.savePath");
   ImGui::SameLine();
   const bool save = ImGui::Button("Save description");
   noteControl(s, "machine.save");
-  if (save && s.machineSavePath[0]) {
-    if (const std::optional<Machine> m = checked(s)) {
-      const Machine named = app_model::namedAfterEdits(*m, s.machine);
-      s.machineEdit.name = named.name;
-      s.save(s.machineSavePath, machineDescriptionJson(named), "machine description");
-      s.machineMessage.clear();
+  if (save && !w.savePath.empty()) {
+    if (const std::optional<Machine> named = w.checkedEdit()) {
+      w.edit.name = named->name;
+      s.save(w.savePath, machineDescriptionJson(*named), "machine description");
+      w.message.clear();
     }
   }
 }
@@ -103,63 +84,49 @@ void drawLoadAndSave(Inspector::State& s) {
 }  // namespace
 
 void drawMachineWindow(Inspector::State& s) {
-  if (!s.machineOpen) return;
-  if (s.machineAppearing) {
-    s.machineEdit = s.machine;
-    s.machineMessage.clear();
-    ImGui::SetNextWindowFocus();
-  }
-  s.machineAppearing = false;
+  app_model::MachineWindow& w = s.dialogs.machine;
+  if (!w.open) return;
+  if (w.appearing) ImGui::SetNextWindowFocus();
+  w.appearing = false;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.45f), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the figures hard to read
-  if (ImGui::Begin("Machine", &s.machineOpen, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
-    ImGui::Text("Simulations use: %s (%s)", s.machine.name.c_str(), s.machineSource.c_str());
+  if (ImGui::Begin("Machine", &w.open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+    ImGui::Text("Simulations use: %s (%s)", w.inUse.name.c_str(), w.source.c_str());
     if (const Document* doc = s.activeDocument(); doc && doc->samples)
       ImGui::TextDisabled("The map of %s was made with: %s", doc->name.c_str(),
                           doc->machineKnown ? doc->machine.name.c_str() : "a machine its dump does not name");
     ImGui::Separator();
-    char name[256];
-    std::snprintf(name, sizeof name, "%s", s.machineEdit.name.c_str());
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 40);
-    if (ImGui::InputText("name", name, sizeof name)) s.machineEdit.name = name;
-    editScaled("interpolation cycle [ms]", s.machineEdit.cycle, 1000.0, "%.3f");
+    inputText("name", w.edit.name);
+    editScaled("interpolation cycle [ms]", w.edit.cycle, 1000.0, "%.3f");
     ImGui::SameLine();
-    editScaled("rapid [mm/min]", s.machineEdit.rapidVelocity, kSecondsPerMinute, "%.0f");
+    editScaled("rapid [mm/min]", w.edit.rapidVelocity, kSecondsPerMinute, "%.0f");
     ImGui::SameLine();
-    editScaled("chord tolerance [mm]", s.machineEdit.chordTolerance, 1.0, "%.4f");
+    editScaled("chord tolerance [mm]", w.edit.chordTolerance, 1.0, "%.4f");
     drawAxisTable(s);
     const bool simulatable = s.activeDocument() && !s.activeDocument()->programPath.empty();
     const bool simulate = ImGui::Button("Simulate with this machine");
     noteControl(s, "machine.simulate");
-    if (simulate) {
-      if (const std::optional<Machine> m = checked(s)) {
-        s.machine = app_model::namedAfterEdits(*m, s.machine);
-        s.machineEdit.name = s.machine.name;
-        s.machineSource = "edited";
-        s.machineMessage.clear();
-        if (simulatable) s.simulateAgain();
-        else s.machineMessage = "used for the next program opened: no program is open";
-      }
+    if (simulate && w.apply()) {
+      if (simulatable) s.simulateAgain();
+      else w.message = "used for the next program opened: no program is open";
     }
     ImGui::SameLine();
-    if (ImGui::Button("Revert")) {
-      s.machineEdit = s.machine;
-      s.machineMessage.clear();
-    }
+    if (ImGui::Button("Revert")) w.revert();
     ImGui::SameLine();
-    if (ImGui::Button("Default machine")) s.machineEdit = defaultMachine();
+    if (ImGui::Button("Default machine")) w.edit = defaultMachine();
     ImGui::SameLine();
     const bool close = ImGui::Button("Close");
     noteControl(s, "machine.close");
     // Esc closes the window when it has the keyboard and no field is being edited.
     if (close || (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && !ImGui::GetIO().WantTextInput &&
                   s.takeEscape()))
-      s.machineOpen = false;
+      w.open = false;
     ImGui::Separator();
     drawLoadAndSave(s);
-    if (!s.machineMessage.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", s.machineMessage.c_str());
+    if (!w.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", w.message.c_str());
   }
   ImGui::End();
 }

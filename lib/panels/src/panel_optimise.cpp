@@ -13,6 +13,7 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
+#include "text_input.h"
 #include "isurface/optimise/optimized_run_comparison.h"
 #include "isurface/workflow/region_optimisation.h"
 #include "isurface/workflow/run_inputs.h"
@@ -64,11 +65,8 @@ namespace {
 
 // The dialog holds a region found for the user (not dragged on the view, so not drawn there).
 void holdRegion(Inspector::State& s, const ChosenRegion& region, const char* what) {
-  s.optimiseFirst = static_cast<int>(region.lines.first);
-  s.optimiseLast = static_cast<int>(region.lines.last);
-  s.optimiseBox = app_model::BoxSelection{region.lines, region.lower, region.upper, region.vertices};
-  s.optimiseBoxOnView = {};
-  s.optimiseNotice.clear();
+  s.dialogs.optimise.hold(region.lines, app_model::BoxSelection{region.lines, region.lower, region.upper, region.vertices});
+  s.dialogs.optimise.boxOnView = {};
   s.status = fmt::format("{}: lines {}-{}", what, region.lines.first, region.lines.last);
 }
 
@@ -82,7 +80,7 @@ void chooseWorstRegion(Inspector::State& s) {
     // Widened to the passes joined to it (a pass left as it was beside one re-planned leaves a seam).
     s.status += " (with every pass joined to it on the surface)";
   } catch (const InputError& e) {
-    s.status = s.optimiseNotice = e.what();
+    s.status = s.dialogs.optimise.notice = e.what();
   }
 }
 
@@ -102,9 +100,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
   request.caption = mapCaption(*doc);         // simulated with the document's machine, as the map beside
-  auto result = std::make_shared<JobResult>();
-  result->madeFor = doc->samples;
-  result->optimisation = true;
+  auto result = std::make_shared<JobResult>(OptimisedRegion{doc->samples, nullptr});
   pending = result;
   const std::string path = doc->programPath;
   std::shared_ptr<const Program> program = doc->program;
@@ -112,7 +108,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
   // both sides are judged alike (as `optimize` does).
   std::shared_ptr<const Trajectory> documentSamples = doc->machineKnown ? doc->samples : nullptr;
   const Machine machine = doc->machine;  // the document's own, as the CLI's --machine
-  const auto objective = static_cast<Objective>(std::clamp(optimiseObjective, 0, 2));
+  const auto objective = static_cast<Objective>(std::clamp(dialogs.optimise.objective, 0, 2));
   job.start(fmt::format("optimising lines {}-{}", first, last),
             [result, path, program, documentSamples, request, first, last, measuredBox, machine,
              objective](app_model::JobControl& control) {
@@ -156,7 +152,7 @@ void Inspector::State::startOptimise(std::uint32_t first, std::uint32_t last,
               c->summary = regionVerdict(r) + ". " + regionFigures(r) + passDifferenceText(c->difference, r.result) +
                            fmt::format(" (the difference map's colours span {:+.0f} .. {:+.0f} mm/min)", colours.lo,
                                        colours.hi);
-              result->comparison = c;
+              std::get<OptimisedRegion>(*result).comparison = c;
             });
 }
 
@@ -171,10 +167,10 @@ void Inspector::State::showOptimisedDifference(bool difference) {
 void startAtTheSelectedPass(Inspector::State& s) {
   const Document* doc = s.activeDocument();
   const auto& line = s.selection.current().line;
-  if (s.optimiseBox || s.optimiseFirst != 1 || s.optimiseLast != 1 || !line || !doc || !doc->samples) return;
+  if (s.dialogs.optimise.box || s.dialogs.optimise.first != 1 || s.dialogs.optimise.last != 1 || !line || !doc || !doc->samples) return;
   if (const auto pass = passOfLine(SurfaceRun{doc->samples, doc->map.passes, nullptr}, *line)) {
-    s.optimiseFirst = static_cast<int>(pass->first);
-    s.optimiseLast = static_cast<int>(pass->last);
+    s.dialogs.optimise.first = static_cast<int>(pass->first);
+    s.dialogs.optimise.last = static_cast<int>(pass->last);
   }
 }
 
@@ -183,15 +179,6 @@ std::string unsavedResultReplaced(const Inspector::State& s) {
   return fmt::format("The re-optimised program of lines {}-{} is kept but not saved: optimising again replaces it "
                      "(Save program, beside the map, keeps it).",
                      s.comparison->first, s.comparison->last);
-}
-
-void forgetTheRegionOfAnotherProgram(Inspector::State& s) {
-  const Document* doc = s.activeDocument();
-  const std::string program = doc ? doc->programPath : std::string();
-  if (program == s.optimiseProgram) return;
-  s.optimiseProgram = program;
-  s.optimiseBox.reset();
-  s.optimiseFirst = s.optimiseLast = 1;
 }
 
 // The regions the dialog offers besides typed lines: the worst one, the whole program, the
@@ -212,41 +199,40 @@ void drawRegionButtons(Inspector::State& s, Document* doc) {
       const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
       holdRegion(s, wholeProgramRegion(run, doc->name), "whole program");
     } catch (const InputError& e) {
-      s.status = s.optimiseNotice = e.what();
+      s.status = s.dialogs.optimise.notice = e.what();
     }
   }
   ImGui::SameLine();
   if (ImGui::Button("Selected line's pass") && s.selection.current().line && doc && doc->samples) {
     const SurfaceRun run{doc->samples, doc->map.passes, nullptr};
     if (const auto pass = passOfLine(run, *s.selection.current().line)) {
-      s.optimiseFirst = static_cast<int>(pass->first);
-      s.optimiseLast = static_cast<int>(pass->last);
-      s.optimiseNotice.clear();
+      s.dialogs.optimise.hold(*pass);
       s.status = fmt::format("the pass of line {}: lines {}-{}", *s.selection.current().line, pass->first, pass->last);
     } else {
-      s.status = s.optimiseNotice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
+      s.status = s.dialogs.optimise.notice = "line " + std::to_string(*s.selection.current().line) + " is on no cutting pass";
     }
   }
 }
 
 void drawOptimiseDialog(Inspector::State& s) {
-  if (s.optimiseDialog) {
-    forgetTheRegionOfAnotherProgram(s);
+  if (s.dialogs.optimise.opening) {
+    const Document* active = s.activeDocument();
+    s.dialogs.optimise.forgetTheRegionOfAnotherProgram(active ? active->programPath : std::string());
     startAtTheSelectedPass(s);
     ImGui::OpenPopup("Optimise region");
   }
-  s.optimiseDialog = false;
-  s.optimiseDialogOpen = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
-  if (!s.optimiseDialogOpen) {
+  s.dialogs.optimise.opening = false;
+  s.dialogs.optimise.open = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  if (!s.dialogs.optimise.open) {
     // The box stays with its lines for the next opening; where it was dragged on the screen
     // does not, as the camera may move meanwhile.
-    s.optimiseBoxOnView = {};
-    s.optimiseNotice.clear();
+    s.dialogs.optimise.boxOnView = {};
+    s.dialogs.optimise.notice.clear();
     return;
   }
   Document* doc = s.activeDocument();
   const std::string why = whyNotOptimisable(doc);
-  s.optimiseProblem = why;
+  s.dialogs.optimise.problem = why;
   if (!why.empty()) {
     // Nothing to optimise: say why here, where the user looks, and offer only Close.
     ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", why.c_str());
@@ -257,25 +243,24 @@ void drawOptimiseDialog(Inspector::State& s) {
   ImGui::TextWrapped("%s", "The paper's constant speed intervals and Akima fitting first, then other plans (corners rounded, "
                      "points drawn taut, feeds capped); each simulated, and kept only when no figure is worse by more "
                      "than 2 % and the time or a figure is better by 2 % or more. The G1 moves of the lines:");
-  ImGui::InputInt("first line", &s.optimiseFirst);
+  ImGui::InputInt("first line", &s.dialogs.optimise.first);
   noteControl(s, "optimise.first");
-  ImGui::InputInt("last line", &s.optimiseLast);
+  ImGui::InputInt("last line", &s.dialogs.optimise.last);
   noteControl(s, "optimise.last");
   // What the lines cost before the button does: every plan simulates them (the worst region of a
   // raster is widened to the passes joined to it, which on a relief can be all of them).
-  if (const std::optional<double> share = linesTimeShare(*doc, s.optimiseFirst, s.optimiseLast)) {
+  if (const std::optional<double> share = linesTimeShare(*doc, s.dialogs.optimise.first, s.dialogs.optimise.last)) {
     const Trajectory& t = *doc->samples;
     const double total = t.timeAt(t.size() - 1) - t.timeAt(0);
     ImGui::TextWrapped("Lines %d-%d run %.0f s of the program's %.0f s (%.1f %%): each plan simulates them%s",
-                       s.optimiseFirst, s.optimiseLast, *share * total, total, 100 * *share,
+                       s.dialogs.optimise.first, s.dialogs.optimise.last, *share * total, total, 100 * *share,
                        *share > 0.5 ? ", which takes a while" : "");
   }
   // The box only stands for the region while the lines are still its own.
-  const bool boxed = s.optimiseBox && s.optimiseBox->lines.first == static_cast<std::uint32_t>(s.optimiseFirst) &&
-                     s.optimiseBox->lines.last == static_cast<std::uint32_t>(s.optimiseLast);
+  const bool boxed = s.dialogs.optimise.boxed();
   // Always a line here, so that the buttons below stay where they were when a box is chosen.
   if (boxed) {
-    const app_model::BoxSelection& b = *s.optimiseBox;
+    const app_model::BoxSelection& b = *s.dialogs.optimise.box;
     ImGui::TextWrapped("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
   } else {
@@ -283,19 +268,19 @@ void drawOptimiseDialog(Inspector::State& s) {
   }
   drawRegionButtons(s, doc);
   // Said here too, where the user looks: the lines above are still those chosen before.
-  if (!s.optimiseNotice.empty())
-    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s (the lines above are unchanged)", s.optimiseNotice.c_str());
+  if (!s.dialogs.optimise.notice.empty())
+    ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s (the lines above are unchanged)", s.dialogs.optimise.notice.c_str());
   // As `optimize --objective`: what the closed loop chooses among candidates no figure of which is worse.
   static const char* const kObjectiveHelp[] = {"no figure worse, time not longer: the best figures and time together",
                                                 "no figure worse, time not longer: the fastest such candidate",
                                                 "no figure worse, up to 5 % longer: the best figures"};
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 8);
-  ImGui::Combo("objective", &s.optimiseObjective, "balanced\0time\0quality\0");
-  s.optimiseObjective = std::clamp(s.optimiseObjective, 0, 2);
+  ImGui::Combo("objective", &s.dialogs.optimise.objective, "balanced\0time\0quality\0");
+  s.dialogs.optimise.objective = std::clamp(s.dialogs.optimise.objective, 0, 2);
   ImGui::SameLine();
-  ImGui::TextDisabled("%s", kObjectiveHelp[s.optimiseObjective]);
+  ImGui::TextDisabled("%s", kObjectiveHelp[s.dialogs.optimise.objective]);
   // Said where the user looks, and the button greyed: a click that did nothing would say nothing.
-  const std::string rangeProblem = optimiseRangeProblem(s.optimiseFirst, s.optimiseLast);
+  const std::string rangeProblem = s.dialogs.optimise.rangeProblem();
   if (!rangeProblem.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", rangeProblem.c_str());
   // A kept program not saved lives only beside the map: said before a new result replaces it.
   if (const std::string replaced = unsavedResultReplaced(s); !replaced.empty())
@@ -306,8 +291,8 @@ void drawOptimiseDialog(Inspector::State& s) {
   ImGui::EndDisabled();
   if (run && rangeProblem.empty()) {
     std::optional<std::pair<Vec3, Vec3>> measured;
-    if (boxed) measured = std::make_pair(s.optimiseBox->lower, s.optimiseBox->upper);
-    s.startOptimise(static_cast<std::uint32_t>(s.optimiseFirst), static_cast<std::uint32_t>(s.optimiseLast), measured);
+    if (boxed) measured = std::make_pair(s.dialogs.optimise.box->lower, s.dialogs.optimise.box->upper);
+    s.startOptimise(static_cast<std::uint32_t>(s.dialogs.optimise.first), static_cast<std::uint32_t>(s.dialogs.optimise.last), measured);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
@@ -407,10 +392,11 @@ void drawComparisonView(Inspector::State& s, float x, float y, float w, float h)
     s.showOptimisedDifference(*difference);
   if (c.kept) {
     ImGui::SetNextItemWidth(w * 0.5f);
-    ImGui::InputText("##save", s.savePath, sizeof s.savePath);
+    inputText("##save", s.dialogs.optimise.savePath);
     noteControl(s, "optimised.path");
     ImGui::SameLine();
-    if (ImGui::Button("Save program") && s.savePath[0]) s.save(s.savePath, c.text, "re-optimised program");
+    if (ImGui::Button("Save program") && !s.dialogs.optimise.savePath.empty())
+      s.save(s.dialogs.optimise.savePath, c.text, "re-optimised program");
     noteControl(s, "optimised.save");
     ImGui::SameLine();
   }  // else nothing to save: the summary ends with why the program stays as it is

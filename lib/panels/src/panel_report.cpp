@@ -63,7 +63,7 @@ void Inspector::State::startReport(const std::string& path, int regions) {
   // A program simulated here was simulated with the document's machine, and a dump that names
   // none is judged against it: the report's machine is the same.
   const std::string machine = doc->dumpPath.empty() || !doc->machineKnown ? machineDescriptionJson(doc->machine) : "";
-  auto result = std::make_shared<JobResult>();
+  auto result = std::make_shared<JobResult>(WrittenReport{});
   pending = result;
   job.start(kReportJob + doc->name, [result, arguments, machine, path](app_model::JobControl& control) {
     const ScratchFolder scratch;
@@ -80,8 +80,9 @@ void Inspector::State::startReport(const std::string& path, int regions) {
         });
     // Exit code 1 is a threshold crossed, which this run does not set; anything else failed.
     if (outcome.exitCode != 0) throw std::runtime_error(failure(outcome));
-    result->report = readWholeFile(scratch.file("report.html"));
-    result->reportPath = path;
+    WrittenReport& written = std::get<WrittenReport>(*result);
+    written.html = readWholeFile(scratch.file("report.html"));
+    written.path = path;
   });
 }
 

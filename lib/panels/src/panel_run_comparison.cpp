@@ -8,6 +8,7 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
+#include "text_input.h"
 #include "isurface/io/biip.h"
 #include "isurface/vis/difference_map.h"
 #include "isurface/vis/quality_scene.h"
@@ -71,8 +72,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
   if (loadFeedbackFirst([this, dumpPath] { startRunComparison(dumpPath); })) return;
   vis::QualityMapRequest request = mapRequest();
   request.fixedRange = doc->map.style.range;  // the same colours on both sides
-  auto result = std::make_shared<JobResult>();
-  result->madeFor = doc->samples;
+  auto result = std::make_shared<JobResult>(ComparedRun{doc->samples, nullptr});
   pending = result;
   std::shared_ptr<const Trajectory> a = doc->samples;
   std::shared_ptr<const Program> program = doc->program;
@@ -92,7 +92,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
     buildDifferenceView(vis::differenceMapRequest(view->result, ComparisonQuantity::Speed), request, *a, program.get(),
                         view->differenceMap, view->differenceScene);
     view->summary = summaryOf(view->result, std::filesystem::path(dumpPath).filename().string());
-    result->runComparison = view;
+    std::get<ComparedRun>(*result).view = view;
   });
   status = "comparing with " + dumpPath;
 }
@@ -104,15 +104,15 @@ void Inspector::State::showRunDifference(bool difference) {
 }
 
 void drawCompareDialog(Inspector::State& s) {
-  if (s.compareDialog) ImGui::OpenPopup("Compare with another run");
-  s.compareDialog = false;
+  if (s.dialogs.compare.opening) ImGui::OpenPopup("Compare with another run");
+  s.dialogs.compare.opening = false;
   if (!ImGui::BeginPopupModal("Compare with another run", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::TextWrapped("A Biip dump of the same program (another simulation, or a machine's trace imported with its "
                      "lines), aligned to this run by G-code line and arc length:");
   ImGui::SetNextItemWidth(560);
-  const bool enter = ImGui::InputText("##run", s.comparePath, sizeof s.comparePath, ImGuiInputTextFlags_EnterReturnsTrue);
-  if ((ImGui::Button("Compare") || enter) && s.comparePath[0]) {
-    s.startRunComparison(s.comparePath);
+  const bool enter = inputText("##run", s.dialogs.compare.path, ImGuiInputTextFlags_EnterReturnsTrue);
+  if ((ImGui::Button("Compare") || enter) && !s.dialogs.compare.path.empty()) {
+    s.startRunComparison(s.dialogs.compare.path);
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();

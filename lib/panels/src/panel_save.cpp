@@ -14,7 +14,7 @@ void writeNow(Inspector::State& s, const PendingSave& save) {
   try {
     writeFileAtomically(save.path, save.content);
     s.status = "saved " + save.what + " to " + save.path;
-    s.lastSaved = save.path;
+    s.chrome.lastSaved = save.path;
     if (s.comparison && s.comparison->text == save.content) s.comparison->saved = true;
   } catch (const std::exception& e) {
     s.status = std::string("error: ") + e.what();
@@ -23,40 +23,43 @@ void writeNow(Inspector::State& s, const PendingSave& save) {
 
 }  // namespace
 
-void Inspector::State::save(const std::string& path, std::string content, const std::string& what) {
-  PendingSave pending{path, std::move(content), what};
+void Inspector::State::save(const std::string& path, std::string content, const std::string& what,
+                            std::function<void()> ifKept) {
+  PendingSave pending{path, std::move(content), what, std::move(ifKept)};
   std::error_code error;
   if (std::filesystem::exists(path, error)) {
-    overwriteQuestion = std::move(pending);
+    dialogs.overwriteQuestion = std::move(pending);
     return;
   }
   writeNow(*this, pending);
 }
 
 void drawOverwriteQuestion(Inspector::State& s) {
-  if (s.overwriteQuestion && !ImGui::IsPopupOpen("Replace file?")) ImGui::OpenPopup("Replace file?");
+  if (s.dialogs.overwriteQuestion && !ImGui::IsPopupOpen("Replace file?")) ImGui::OpenPopup("Replace file?");
   if (!ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
-  if (!s.overwriteQuestion) {
+  if (!s.dialogs.overwriteQuestion) {
     ImGui::CloseCurrentPopup();
     ImGui::EndPopup();
     return;
   }
-  ImGui::Text("%s already exists.", s.overwriteQuestion->path.c_str());
-  ImGui::Text("Replace it with the %s?", s.overwriteQuestion->what.c_str());
+  ImGui::Text("%s already exists.", s.dialogs.overwriteQuestion->path.c_str());
+  ImGui::Text("Replace it with the %s?", s.dialogs.overwriteQuestion->what.c_str());
   const bool replace = ImGui::Button("Replace");
   noteControl(s, "replace.yes");
   if (replace) {
-    writeNow(s, *s.overwriteQuestion);
-    s.overwriteQuestion.reset();
+    writeNow(s, *s.dialogs.overwriteQuestion);
+    s.dialogs.overwriteQuestion.reset();
     ImGui::CloseCurrentPopup();
   }
   ImGui::SameLine();
   const bool cancel = ImGui::Button("Cancel");
   noteControl(s, "replace.no");
-  if (s.overwriteQuestion && (cancel || s.takeEscape())) {
-    s.status = "not saved: " + s.overwriteQuestion->path + " kept";
-    s.overwriteQuestion.reset();
+  if (s.dialogs.overwriteQuestion && (cancel || s.takeEscape())) {
+    s.status = "not saved: " + s.dialogs.overwriteQuestion->path + " kept";
+    const std::function<void()> ifKept = std::move(s.dialogs.overwriteQuestion->ifKept);
+    s.dialogs.overwriteQuestion.reset();
     ImGui::CloseCurrentPopup();
+    if (ifKept) ifKept();
   }
   ImGui::EndPopup();
 }

@@ -78,7 +78,7 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
   const int columns = std::max(1, static_cast<int>(size.x));
-  const std::size_t first = s.curveFirst, last = std::max(s.curveLast, s.curveFirst + 1);
+  const std::size_t first = s.follow.curveFirst, last = std::max(s.follow.curveLast, s.follow.curveFirst + 1);
   const Curve::Shown& part = shownPart(curve, first, last, columns);
   const app_model::Envelope& envelope = part.envelope;
   const auto [storedLo, storedHi] = part.range;
@@ -140,7 +140,7 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
       double a = centre - (centre - first) * factor, b = centre + (last - centre) * factor;
       a = std::max(0.0, a);
       b = std::min(static_cast<double>(t.size()), b);
-      if (b - a >= 16) s.curveFirst = static_cast<std::size_t>(a), s.curveLast = static_cast<std::size_t>(b);
+      if (b - a >= 16) s.follow.curveFirst = static_cast<std::size_t>(a), s.follow.curveLast = static_cast<std::size_t>(b);
     }
   }
 }
@@ -155,23 +155,23 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
     ImGui::End();
     return;
   }
-  if (ImGui::Button("Whole time")) s.curveFirst = 0, s.curveLast = doc->samples->size();
+  if (ImGui::Button("Whole time")) s.follow.curveFirst = 0, s.follow.curveLast = doc->samples->size();
   ImGui::SameLine();
   const app_model::Selection& sel = s.selection.current();
   if (ImGui::Button("Around selection") && sel.sample) {
     const std::size_t half = 2000;
-    s.curveFirst = *sel.sample > half ? *sel.sample - half : 0;
-    s.curveLast = std::min(doc->samples->size(), *sel.sample + half);
+    s.follow.curveFirst = *sel.sample > half ? *sel.sample - half : 0;
+    s.follow.curveLast = std::min(doc->samples->size(), *sel.sample + half);
   }
   ImGui::SameLine();
-  ImGui::Text("samples %zu .. %zu", s.curveFirst, s.curveLast);
+  ImGui::Text("samples %zu .. %zu", s.follow.curveFirst, s.follow.curveLast);
   if (doc->curves.size() > 3) {
     ImGui::SameLine();
     ImGui::SetNextItemWidth(160);
     std::vector<const char*> names;
     for (std::size_t k = 3; k < doc->curves.size(); ++k) names.push_back(doc->curves[k].label.c_str());
-    s.extraCurve = std::clamp(s.extraCurve, 0, static_cast<int>(names.size()) - 1);
-    ImGui::Combo("channel", &s.extraCurve, names.data(), static_cast<int>(names.size()));
+    s.follow.extraCurve = std::clamp(s.follow.extraCurve, 0, static_cast<int>(names.size()) - 1);
+    ImGui::Combo("channel", &s.follow.extraCurve, names.data(), static_cast<int>(names.size()));
   }
   const ImVec2 area = ImGui::GetContentRegionAvail();
   const int shown = doc->curves.size() > 3 ? 4 : 3;
@@ -181,13 +181,13 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
   const DisplayUnits units = s.units();
   const char* unitOf[3] = {units.feedUnit(), units.accelerationUnit(), units.jerkUnit()};
   for (int k = 0; k < shown; ++k) {
-    Curve& curve = doc->curves[k < 3 ? k : 3 + s.extraCurve];
+    Curve& curve = doc->curves[k < 3 ? k : 3 + s.follow.extraCurve];
     // Speed, acceleration and jerk are lengths per time: shown in the display units.
     const double scale = k < 3 ? units.length(1.0) : 1.0;
     drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each));
     origin.y += each + 4;
   }
-  drawTimeAxis(*doc->samples, s.curveFirst, std::max(s.curveLast, s.curveFirst + 1), ImVec2(origin.x, origin.y - 4), area.x);
+  drawTimeAxis(*doc->samples, s.follow.curveFirst, std::max(s.follow.curveLast, s.follow.curveFirst + 1), ImVec2(origin.x, origin.y - 4), area.x);
   ImGui::SetCursorScreenPos(ImVec2(origin.x, origin.y + axis - 4));
   ImGui::Dummy(ImVec2(1, 1));
   ImGui::End();

@@ -3,10 +3,13 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <optional>
 
 #include "inspector_state.h"
+#include "isurface/base/time_format.h"
+#include "text_input.h"
 
 namespace isurface::panels {
 
@@ -46,27 +49,66 @@ std::optional<std::size_t> steppedRow(std::optional<std::size_t> current, std::s
   return static_cast<std::size_t>(std::clamp(next, 0L, static_cast<long>(count) - 1));
 }
 
+// The search field over the lines: Enter (or Next) goes to the next line holding the text,
+// Shift+Enter (or Previous) to the one before, from the selected line, round past the ends.
+void drawSearchField(Inspector::State& s, const app_model::TextLines& text) {
+  Dialogs::GcodeSearch& search = s.dialogs.gcodeSearch;
+  if (search.focus) ImGui::SetKeyboardFocusHere();
+  search.focus = false;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12);
+  const bool enter = inputTextWithHint("##find", "find (Ctrl+F)", search.text, ImGuiInputTextFlags_EnterReturnsTrue);
+  noteControl(s, "gcode.find");
+  const bool back = enter && ImGui::GetIO().KeyShift;
+  if (enter) ImGui::SetKeyboardFocusHere(-1);  // the field keeps the keyboard for the next Enter
+  ImGui::SameLine();
+  const bool next = ImGui::SmallButton("Next");
+  ImGui::SameLine();
+  const bool previous = ImGui::SmallButton("Previous");
+  if (!enter && !next && !previous) {
+    if (!search.message.empty()) ImGui::SameLine(), ImGui::TextDisabled("%s", search.message.c_str());
+    return;
+  }
+  const auto& line = s.selection.current().line;
+  const auto found = app_model::findLine(text, search.text, line ? *line : 0, back || previous);
+  search.message = found || search.text.empty() ? "" : "no line holds \"" + search.text + "\"";
+  if (found) s.selection.selectLine(static_cast<std::uint32_t>(*found));
+  if (!search.message.empty()) ImGui::SameLine(), ImGui::TextDisabled("%s", search.message.c_str());
+}
+
+// "  0.123" s on the line and "1:02.345" from the start, or blanks for a line without samples.
+std::string lineTimeColumns(const app_model::LineTimes& times, std::uint32_t line) {
+  const std::optional<app_model::LineTime> t = times.of(line);
+  if (!t) return std::string(19, ' ');
+  char out[48];
+  std::snprintf(out, sizeof out, "%8.3f %10s", t->seconds, formatDuration(t->start).c_str());
+  return out;
+}
+
 }  // namespace
 
 void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("G-code", x, y, w, h);
-  s.controls["gcode"] = {x, y, x + w, y + h};
+  s.chrome.controls["gcode"] = {x, y, x + w, y + h};
   Document* doc = s.activeDocument();
   if (!doc || !doc->text) {
     ImGui::TextDisabled("no program");
     ImGui::End();
     return;
   }
+  drawSearchField(s, *doc->text);
   const app_model::Selection& sel = s.selection.current();
+  // Each line's time and when it starts, from the samples (s; blank where a line made none).
+  const bool timed = doc->samples != nullptr;
+  if (timed) ImGui::TextDisabled("%9s %8s %10s", "line", "time [s]", "starts at");
   ImGui::BeginChild("lines", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
   const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
   const std::size_t lines = doc->text->count();
   const std::optional<std::size_t> lineRow = sel.line ? std::optional<std::size_t>(*sel.line - 1) : std::nullopt;
   if (const std::optional<std::size_t> row = steppedRow(lineRow, lines, rowHeight))
     s.selection.selectLine(static_cast<std::uint32_t>(*row + 1));
-  if (sel.line && sel.generation != s.gcodeScrolledFor) {
+  if (sel.line && sel.generation != s.follow.gcodeScrolledFor) {
     scrollToRow(*sel.line - 1, rowHeight);
-    s.gcodeScrolledFor = sel.generation;
+    s.follow.gcodeScrolledFor = sel.generation;
   }
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(lines), rowHeight);
@@ -76,9 +118,10 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
       const std::string_view text = doc->text->line(line);
       char number[16];
       std::snprintf(number, sizeof number, "%7u  ", line);
+      const std::string label = timed ? number + lineTimeColumns(doc->lineTimes, line) + "  " : std::string(number);
       const bool selected = sel.line && *sel.line == line;
       ImGui::PushID(row);
-      if (ImGui::Selectable(number, selected, ImGuiSelectableFlags_AllowDoubleClick)) {
+      if (ImGui::Selectable(label.c_str(), selected, ImGuiSelectableFlags_AllowDoubleClick)) {
         if (!s.selection.selectLine(line)) s.status = "line " + std::to_string(line) + " produced no samples";
       }
       ImGui::SameLine(0, 0);
@@ -92,7 +135,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
 
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("Data", x, y, w, h);
-  s.controls["data"] = {x, y, x + w, y + h};
+  s.chrome.controls["data"] = {x, y, x + w, y + h};
   Document* doc = s.activeDocument();
   if (!doc || !doc->samples || doc->curves.size() < 3) {
     ImGui::TextDisabled("no samples");
@@ -126,9 +169,9 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
     ImGui::TableHeadersRow();
     const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
     if (const std::optional<std::size_t> row = steppedRow(sel.sample, t.size(), rowHeight)) s.selection.selectSample(*row);
-    if (sel.sample && sel.generation != s.dataScrolledFor) {
+    if (sel.sample && sel.generation != s.follow.dataScrolledFor) {
       scrollToRow(*sel.sample, rowHeight, rowHeight);  // under the frozen header row
-      s.dataScrolledFor = sel.generation;
+      s.follow.dataScrolledFor = sel.generation;
     }
     ImGuiListClipper clipper;
     clipper.Begin(static_cast<int>(t.size()), rowHeight);

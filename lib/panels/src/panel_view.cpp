@@ -31,19 +31,17 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
     s.status = "no cutting sample of the surface inside the box";
     return;
   }
-  forgetTheRegionOfAnotherProgram(s);
-  s.optimiseBox = *chosen;
-  s.optimiseBoxOnView = rectangle;
-  s.optimiseFirst = static_cast<int>(chosen->lines.first);
-  s.optimiseLast = static_cast<int>(chosen->lines.last);
-  s.optimiseDialog = true;
+  s.dialogs.optimise.forgetTheRegionOfAnotherProgram(doc->programPath);
+  s.dialogs.optimise.hold(chosen->lines, *chosen);
+  s.dialogs.optimise.boxOnView = rectangle;
+  s.dialogs.optimise.opening = true;
 }
 
 // The picked sample's values, as the paper's window shows them (line, point, speed), right of
 // the orientation axes in the lower left corner: a line each for the sample, the point and the
 // feed where the view is wide enough, else more lines, never over the colour legend.
 void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  s.controls.erase("view.readout");
+  s.chrome.controls.erase("view.readout");
   const app_model::Selection& sel = s.selection.current();
   const Document* doc = s.activeDocument();
   if (!doc || !doc->samples || !sel.sample || *sel.sample >= doc->samples->size() || doc->curves.size() < 3) return;
@@ -93,19 +91,19 @@ void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, 
   draw->AddRectFilled(lower, upper, IM_COL32(0, 0, 0, 150), 3);
   draw->AddText(at, IM_COL32(255, 230, 120, 255), text.c_str());
   draw->PopClipRect();
-  s.controls["view.readout"] = {lower.x, lower.y, upper.x, upper.y};
+  s.chrome.controls["view.readout"] = {lower.x, lower.y, upper.x, upper.y};
 }
 
 // A pick while measuring: the first end, then the second; a third starts a new distance.
 void measurePick(Inspector::State& s, const Vec3& point) {
-  if (!s.measureA || s.measureB) {
-    s.measureA = point;
-    s.measureB.reset();
+  if (!s.pointer.measureA || s.pointer.measureB) {
+    s.pointer.measureA = point;
+    s.pointer.measureB.reset();
     s.status = "measure: pick the second point";
     return;
   }
-  s.measureB = point;
-  const Vec3 d = *s.measureB - *s.measureA;
+  s.pointer.measureB = point;
+  const Vec3 d = *s.pointer.measureB - *s.pointer.measureA;
   const DisplayUnits u = s.units();
   const int n = u.lengthDecimals();
   char text[200];
@@ -116,9 +114,9 @@ void measurePick(Inspector::State& s, const Vec3& point) {
 
 // The measured ends and the line between them, with the distance beside it.
 void drawMeasure(Inspector::State& s, ImDrawList* draw, ImVec2 origin) {
-  if (!s.measureA) return;
-  const auto a = s.view.project(*s.measureA);
-  const auto b = s.measureB ? s.view.project(*s.measureB) : std::nullopt;
+  if (!s.pointer.measureA) return;
+  const auto a = s.view.project(*s.pointer.measureA);
+  const auto b = s.pointer.measureB ? s.view.project(*s.pointer.measureB) : std::nullopt;
   const ImU32 colour = IM_COL32(80, 255, 255, 255);
   if (a) draw->AddCircleFilled(ImVec2(origin.x + float(a->first), origin.y + float(a->second)), 4, colour);
   if (!a || !b) return;
@@ -128,7 +126,7 @@ void drawMeasure(Inspector::State& s, ImDrawList* draw, ImVec2 origin) {
   draw->AddLine(pa, pb, colour, 2.0f);
   char text[64];
   const DisplayUnits u = s.units();
-  std::snprintf(text, sizeof text, "%.*f %s", u.lengthDecimals(), u.length((*s.measureB - *s.measureA).norm()), u.lengthUnit());
+  std::snprintf(text, sizeof text, "%.*f %s", u.lengthDecimals(), u.length((*s.pointer.measureB - *s.pointer.measureA).norm()), u.lengthUnit());
   const ImVec2 mid((pa.x + pb.x) * 0.5f + 6, (pa.y + pb.y) * 0.5f - 18);
   const ImVec2 extent = ImGui::CalcTextSize(text);
   draw->AddRectFilled(ImVec2(mid.x - 3, mid.y - 2), ImVec2(mid.x + extent.x + 3, mid.y + extent.y + 2), IM_COL32(0, 0, 0, 170), 3);
@@ -143,18 +141,18 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
   const ImGuiIO& io = ImGui::GetIO();
   const bool resting = io.MouseDelta.x == 0 && io.MouseDelta.y == 0;
   if (!resting) {
-    s.hoverRestFrames = 0;
-    s.hoverSample.reset();
+    s.pointer.hoverRestFrames = 0;
+    s.pointer.hoverSample.reset();
     return;
   }
   // Picked again every so many frames at rest: the map under a resting pointer can change (a
   // new map, the view split for one beside it).
-  if (++s.hoverRestFrames % kHoverRestFrames == 0) {
-    s.hoverSample.reset();
-    if (const auto hit = s.view.pick(mx, my)) s.hoverSample = sampleAtHit(*doc->samples, *doc->map.mesh, *hit);
+  if (++s.pointer.hoverRestFrames % kHoverRestFrames == 0) {
+    s.pointer.hoverSample.reset();
+    if (const auto hit = s.view.pick(mx, my)) s.pointer.hoverSample = sampleAtHit(*doc->samples, *doc->map.mesh, *hit);
   }
-  if (!s.hoverSample || *s.hoverSample >= doc->samples->size()) return;
-  const std::size_t k = *s.hoverSample;
+  if (!s.pointer.hoverSample || *s.pointer.hoverSample >= doc->samples->size()) return;
+  const std::size_t k = *s.pointer.hoverSample;
   ImGui::BeginTooltip();
   ImGui::Text("line %u   %s", doc->samples->line[k], sampleName(*doc->samples, k).c_str());
   const DisplayUnits u = s.units();
@@ -172,7 +170,7 @@ void drawHoverValue(Inspector::State& s, double mx, double my) {
 
 // A bar of a round length (1, 2 or 5 times a power of ten) about a sixth of the view wide, at
 // its lower right, for the scale at the focal point of a view `mmPerPixel` (mm) at it.
-Inspector::State::ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width) {
+ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel, float width) {
   if (!(mmPerPixel > 0) || !std::isfinite(mmPerPixel)) return {};
   const double wanted = u.length(mmPerPixel * width / 6);  // in display units
   const double power = std::pow(10.0, std::floor(std::log10(wanted)));
@@ -180,8 +178,8 @@ Inspector::State::ScaleBar scaleBarFor(const DisplayUnits& u, double mmPerPixel,
   return {length, u.lengthUnit(), static_cast<float>(length / u.length(mmPerPixel))};
 }
 
-Inspector::State::ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
-  const Inspector::State::ScaleBar bar = scaleBarFor(u, mmPerPixel, size.x);
+ScaleBar drawScaleBar(const DisplayUnits& u, double mmPerPixel, ImDrawList* draw, ImVec2 origin, ImVec2 size) {
+  const ScaleBar bar = scaleBarFor(u, mmPerPixel, size.x);
   if (bar.pixels <= 0) return {};
   const double length = bar.length;
   const float pixels = bar.pixels;
@@ -221,7 +219,7 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("3D view", x, y, w, h, ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
   const ImVec2 size = ImGui::GetContentRegionAvail();
-  s.controls["view"] = {origin.x, origin.y, origin.x + size.x, origin.y + size.y};
+  s.chrome.controls["view"] = {origin.x, origin.y, origin.x + size.x, origin.y + size.y};
   refineWhereTheCameraLooks(s, static_cast<int>(size.x), static_cast<int>(size.y));
   const unsigned int texture = s.view.render(static_cast<int>(size.x), static_cast<int>(size.y));
   if (texture) {
@@ -229,13 +227,13 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
     ImDrawList* draw = ImGui::GetWindowDrawList();
     drawSelectionReadout(s, draw, origin, size);
     drawMeasure(s, draw, origin);
-    s.scaleBar = drawScaleBar(s.units(), s.view.millimetresPerPixel(), draw, origin, size);
+    s.pointer.scaleBar = drawScaleBar(s.units(), s.view.millimetresPerPixel(), draw, origin, size);
     if (s.refinement.building.valid())
       draw->AddText(ImVec2(origin.x + size.x * 0.45f, origin.y + size.y - 2 * ImGui::GetTextLineHeightWithSpacing()),
                     IM_COL32(30, 30, 36, 255), "refining the surface in sight...");
     // The box that chose the region, while the dialog it filled is open.
-    const app_model::ScreenRectangle& r = s.optimiseBoxOnView;
-    if (s.optimiseBox && s.optimiseDialogOpen && r.x0 != r.x1 && r.y0 != r.y1) {
+    const app_model::ScreenRectangle& r = s.dialogs.optimise.boxOnView;
+    if (s.dialogs.optimise.box && s.dialogs.optimise.open && r.x0 != r.x1 && r.y0 != r.y1) {
       draw->AddRect(ImVec2(origin.x + float(r.x0), origin.y + float(r.y0)), ImVec2(origin.x + float(r.x1), origin.y + float(r.y1)),
                     IM_COL32(255, 200, 40, 255), 0, 0, 2.0f);
     }
@@ -249,58 +247,58 @@ void drawSceneView(Inspector::State& s, float x, float y, float w, float h) {
   }
   const ImGuiIO& io = ImGui::GetIO();
   const double mx = io.MousePos.x - origin.x, my = io.MousePos.y - origin.y;
-  const ImVec2 pressedAt(s.pressX, s.pressY);
+  const ImVec2 pressedAt(s.pointer.pressX, s.pointer.pressY);
   // A left drag draws a rectangle instead of turning the camera.
-  const bool rectangleTool = s.rectangleZoom || s.boxSelect;
+  const bool rectangleTool = s.pointer.rectangleZoom || s.pointer.boxSelect;
   if (ImGui::IsWindowHovered() && texture) {
     for (int button = 0; button < 3; ++button) {
       if (ImGui::IsMouseClicked(button)) {
-        s.pressX = io.MousePos.x;
-        s.pressY = io.MousePos.y;
-        s.pressedInView = true;
+        s.pointer.pressX = io.MousePos.x;
+        s.pointer.pressY = io.MousePos.y;
+        s.pointer.pressedInView = true;
         if (!(rectangleTool && button == 0)) s.view.mouseButton(button, true, mx, my);
       }
     }
     if (io.MouseWheel != 0) s.view.mouseWheel(io.MouseWheel, mx, my);
   }
-  if (s.pressedInView && !texture) {  // the view went away under the press
+  if (s.pointer.pressedInView && !texture) {  // the view went away under the press
     s.view.cancelDrag();
-    s.pressedInView = false;
+    s.pointer.pressedInView = false;
   }
-  if (s.pressedInView && texture) {
+  if (s.pointer.pressedInView && texture) {
     s.view.mouseMove(mx, my);
     if (rectangleTool && ImGui::IsMouseDown(0))
       ImGui::GetWindowDrawList()->AddRect(pressedAt, io.MousePos,
-                                          s.boxSelect ? IM_COL32(255, 200, 40, 255) : IM_COL32(255, 255, 255, 220), 0, 0, 1.5f);
+                                          s.pointer.boxSelect ? IM_COL32(255, 200, 40, 255) : IM_COL32(255, 255, 255, 220), 0, 0, 1.5f);
     for (int button = 0; button < 3; ++button) {
       if (!ImGui::IsMouseReleased(button)) continue;
       const double moved = std::hypot(io.MousePos.x - pressedAt.x, io.MousePos.y - pressedAt.y);
-      if (s.rectangleZoom && button == 0) {
+      if (s.pointer.rectangleZoom && button == 0) {
         s.view.zoomToRectangle(pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my);
-        s.rectangleZoom = false;
-      } else if (s.boxSelect && button == 0) {
+        s.pointer.rectangleZoom = false;
+      } else if (s.pointer.boxSelect && button == 0) {
         if (moved >= 3) chooseRegion(s, app_model::ScreenRectangle{pressedAt.x - origin.x, pressedAt.y - origin.y, mx, my});
-        s.boxSelect = false;
+        s.pointer.boxSelect = false;
       } else {
         s.view.mouseButton(button, false, mx, my);
       }
       // A click that did not drag picks the surface: the nearest sample becomes the selection,
       // or, while measuring, the point is an end of the distance.
-      if (button == 0 && moved < 3 && !s.rectangleZoom) {
+      if (button == 0 && moved < 3 && !s.pointer.rectangleZoom) {
         if (const auto hit = s.view.pick(mx, my)) {
           Document* doc = s.activeDocument();
-          if (s.measuring) measurePick(s, hit->point);
+          if (s.pointer.measuring) measurePick(s, hit->point);
           else if (doc && doc->samples && doc->map.mesh) s.selection.selectSample(sampleAtHit(*doc->samples, *doc->map.mesh, *hit));
         }
       }
-      s.pressedInView = false;
+      s.pointer.pressedInView = false;
     }
   } else if (ImGui::IsWindowHovered() && texture) {
     s.view.mouseMove(mx, my);
     drawHoverValue(s, mx, my);
   } else {
-    s.hoverSample.reset();  // the pointer left the view
-    s.hoverRestFrames = 0;
+    s.pointer.hoverSample.reset();  // the pointer left the view
+    s.pointer.hoverRestFrames = 0;
   }
   ImGui::End();
   ImGui::PopStyleVar();

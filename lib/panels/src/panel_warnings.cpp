@@ -25,12 +25,12 @@ std::optional<std::uint32_t> warningLine(const Document& doc, const std::string&
 }
 
 void drawWarningsWindow(Inspector::State& s) {
-  if (!s.warningsOpen) return;
+  if (!s.dialogs.warningsOpen) return;
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowSize(ImVec2(viewport->Size.x * 0.6f, viewport->Size.y * 0.4f), ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the text hard to read
-  if (ImGui::Begin("Warnings", &s.warningsOpen, ImGuiWindowFlags_NoCollapse)) {
+  if (ImGui::Begin("Warnings", &s.dialogs.warningsOpen, ImGuiWindowFlags_NoCollapse)) {
     bool any = false;
     for (std::size_t d = 0; d < s.documents.size(); ++d) {
       const Document& doc = *s.documents[d];
@@ -59,7 +59,7 @@ void drawWarningsWindow(Inspector::State& s) {
       }
     }
     if (!any) ImGui::TextDisabled("no warnings in the open documents");
-    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && s.takeEscape()) s.warningsOpen = false;
+    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && s.takeEscape()) s.dialogs.warningsOpen = false;
   }
   ImGui::End();
 }

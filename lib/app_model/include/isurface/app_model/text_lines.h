@@ -3,6 +3,7 @@
 // line at once without copying the file.
 #include <cstddef>
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -24,5 +25,11 @@ class TextLines {
   struct Impl;
   std::unique_ptr<Impl> impl_;
 };
+
+// The first line after `from` (1-based; 0: from the top), going round past the end, whose text
+// holds `needle`, letter case aside; backwards, the first before it. Nothing when no line does
+// (or the needle is empty).
+std::optional<std::size_t> findLine(const TextLines& text, std::string_view needle, std::size_t from,
+                                    bool backwards = false);
 
 }  // namespace isurface::app_model

@@ -32,6 +32,7 @@ class HeadlessUi {
   // A letter key ('A'..'Z', as the window's shortcuts read them) held or not for the next frame.
   void letter(char upperCase, bool down);
   void ctrl(bool down);
+  void shift(bool down);
   // Text typed into the field that has the keyboard, in the next frame.
   void type(const std::string& text);
   // Draws one frame of the whole window and finishes it.

@@ -1,0 +1,54 @@
+#include "isurface/app_model/machine_window.h"
+
+#include "isurface/app_model/machine_edits.h"
+#include "isurface/base/diagnostic.h"
+
+namespace isurface::app_model {
+
+void MachineWindow::show() {
+  if (open) return;
+  open = appearing = true;
+  edit = inUse;
+  message.clear();
+}
+
+void MachineWindow::use(const Machine& machine, const std::string& from) {
+  inUse = edit = machine;
+  source = from;
+}
+
+void MachineWindow::revert() {
+  edit = inUse;
+  message.clear();
+}
+
+void MachineWindow::load() {
+  if (loadPath.empty()) return;
+  try {
+    edit = loadMachine(loadPath);
+    message = "loaded " + loadPath + ": simulate to use it";
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+}
+
+std::optional<Machine> MachineWindow::checkedEdit() {
+  try {
+    return namedAfterEdits(parseMachine(machineDescriptionJson(edit), "machine window"), inUse);
+  } catch (const InputError& e) {
+    message = e.what();
+    return std::nullopt;
+  }
+}
+
+bool MachineWindow::apply() {
+  const std::optional<Machine> m = checkedEdit();
+  if (!m) return false;
+  inUse = *m;
+  edit.name = inUse.name;
+  source = "edited";
+  message.clear();
+  return true;
+}
+
+}  // namespace isurface::app_model
