@@ -13,6 +13,7 @@
 #include "cam_style_transition.h"
 #include "image_compare.h"
 #include "workflow_fixtures.h"
+#include "isurface/io/biip.h"
 #include "isurface/machine/machine.h"
 #include "isurface/panels/headless_ui.h"
 #include "scratch_files.h"
@@ -188,6 +189,28 @@ TEST(workingDay, KeepingTheFileAnExportWouldReplaceReturnsToTheDialog) {
   EXPECT_TRUE(described(*ui)["windows"]["export"].get<bool>());
   EXPECT_EQ(described(*ui)["export_path"], png.string());
   EXPECT_EQ(test::readFile(png.string()), "kept");
+}
+
+// A simulation is saved from the window as a dump with its machine: opened again, it is the same
+// run, made with the same machine, and needs no simulating.
+TEST(workingDay, ASimulationIsSavedAsADumpWithItsMachine) {
+  auto ui = openedSample();
+  const std::filesystem::path dump = test::scratchDir() / "window-run.biip";
+  std::filesystem::remove(dump);
+  tapLetter(*ui, 'E', true);
+  clickControl(*ui, "export.dump");
+  typeInto(*ui, "export.path", dump.string());
+  clickControl(*ui, "export.write");
+  waitForJobs(*ui);  // the feedback positions are loaded first
+  ASSERT_EQ(described(*ui)["last_saved"], dump.string()) << ui->inspector().statusText();
+  const BiipReader reader(dump.string());
+  EXPECT_EQ(reader.recordCount(), described(*ui)["documents"][0]["samples"].get<std::size_t>());
+  const nlohmann::json meta = nlohmann::json::parse(reader.header().metadataJson);
+  EXPECT_EQ(meta["machine"]["name"], defaultMachine().name);
+  ui->inspector().open(dump.string());
+  waitForJobs(*ui);
+  const nlohmann::json reopened = described(*ui)["documents"].back();
+  EXPECT_EQ(reopened["machine"], defaultMachine().name) << reopened.dump();
 }
 
 TEST(workingDay, CloseAndHelp) {
@@ -437,6 +460,26 @@ TEST(workingDay, CtrlFFindsTextInTheGcode) {
   tap(*ui, ImGuiKey_Enter);
   EXPECT_EQ(ui->inspector().selection().line, 6u);
   EXPECT_EQ(described(*ui)["gcode_search"], "no line holds \"G65 P9999\"");
+}
+
+// The pass pattern is chosen in the window, as `compare --pattern` takes it: the map is made
+// again with it, and another program's passes are found anew.
+TEST(workingDay, ThePassPatternIsChosenInTheWindow) {
+  auto ui = openedSample();
+  nlohmann::json map = described(*ui)["map"];
+  EXPECT_EQ(map["pattern_asked"], "auto");
+  EXPECT_EQ(map["pattern"], "direction-parallel");
+  const std::size_t found = map["passes"].get<std::size_t>();
+  clickControl(*ui, "surface.pattern");
+  clickControl(*ui, "surface.pattern:no-boundary");
+  waitForJobs(*ui);
+  map = described(*ui)["map"];
+  EXPECT_EQ(map["pattern_asked"], "no-boundary");
+  EXPECT_EQ(map["pattern"], "no-boundary");
+  EXPECT_NE(map["passes"].get<std::size_t>(), found);
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
+  waitForJobs(*ui);
+  EXPECT_EQ(described(*ui)["map"]["pattern_asked"], "auto");
 }
 
 TEST(workingDay, ARecentFileClickedOpensThatFile) {

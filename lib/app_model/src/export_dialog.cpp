@@ -8,7 +8,7 @@ namespace isurface::app_model {
 
 namespace {
 
-constexpr std::array<const char*, 4> kExtensions = {".png", ".json", ".csv", ".html"};
+constexpr std::array<const char*, 5> kExtensions = {".png", ".json", ".csv", ".html", ".biip"};
 constexpr int kSmallestImage = 64, kLargestImage = 8192;
 constexpr int kMostRegions = 50;
 
@@ -35,8 +35,10 @@ void ExportDialog::choose(ExportKind next) {
 
 std::string ExportDialog::problem(const ExportSubject& subject) const {
   if (!subject.hasSamples) return "nothing to export: open a program or a dump first";
-  if (kind != ExportKind::LineSamples && !subject.hasMap) return "no map to export: " + subject.name + " has no surface";
-  if ((kind == ExportKind::MapFigures || kind == ExportKind::LineSamples) && subject.thinning > 1)
+  const bool needsMap = kind != ExportKind::LineSamples && kind != ExportKind::RunDump;
+  if (needsMap && !subject.hasMap) return "no map to export: " + subject.name + " has no surface";
+  if ((kind == ExportKind::MapFigures || kind == ExportKind::LineSamples || kind == ExportKind::RunDump) &&
+      subject.thinning > 1)
     return fmt::format("{} is shown thinned (1 sample in {}): its figures and samples need every sample", subject.name,
                        subject.thinning);
   if (kind == ExportKind::ViewPng &&

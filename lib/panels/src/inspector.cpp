@@ -31,6 +31,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   r.view = settings.view;
   r.feedbackSurface = settings.feedbackSurface;
   r.gapLimit = settings.gapLimit;
+  r.pattern = settings.pattern;
   r.inch = units().inch;
   if (settings.rangeMode == 1) r.lowPercent = 0, r.highPercent = 100;
   if (settings.rangeMode == 2) r.fixedRange = ValueRange{settings.fixedLow, std::max(settings.fixedHigh, settings.fixedLow)};
@@ -46,6 +47,9 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
 void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces) {
   vis::QualityMapRequest request = mapRequest();
   request.pickable = true;
+  // The pass pattern chosen is the active program's: another program's passes are found anew.
+  if (const Document* doc = activeDocument(); !doc || programPath.empty() || doc->programPath != programPath)
+    request.pattern = PathPattern::Auto;
   // A new document's own units: as it is written, unless the user chose.
   request.inch = persistent.units == "inch";
   const bool unitsOfProgram = persistent.units == "auto";
@@ -276,6 +280,7 @@ void Inspector::State::activate(std::size_t index) {
     settings.channel = doc->map.request.channel;
     settings.feedbackSurface = doc->map.request.feedbackSurface;
     settings.gapLimit = doc->map.request.gapLimit;
+    settings.pattern = doc->map.request.pattern;
     // And its range: fixed, full or 1-99 %, as that map was made.
     if (const auto& fixed = doc->map.request.fixedRange) {
       settings.rangeMode = 2;

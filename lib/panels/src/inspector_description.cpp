@@ -105,6 +105,9 @@ std::string Inspector::describe() const {
            {"caption", doc->map.style.caption},
            {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"},
            {"vertices", doc->map.mesh ? doc->map.mesh->vertexSample.size() : 0},
+           {"passes", doc->map.passes.passes.size()},
+           {"pattern", pathPatternName(doc->map.passes.pattern)},
+           {"pattern_asked", pathPatternName(doc->map.request.pattern)},
            {"close_up", closeUpJson(s.refinement)}};
   nlohmann::json optimised;  // the re-optimisation shown beside the map
   if (s.comparison)

@@ -86,6 +86,7 @@ struct ViewSettings {
   // mm: passes further apart get no triangles between them (a roughing program's step-over of
   // 4 mm needs more than the 2 mm a finishing program's holes are told by).
   double gapLimit = vis::QualityMapRequest{}.gapLimit;
+  PathPattern pattern = PathPattern::Auto;  // how the samples split into passes
 };
 
 // A region re-optimised: the new program, its simulation and map, and the comparison.
@@ -164,6 +165,7 @@ inline constexpr const char* kReportJob = "report on ";
 // A file the user asked to save, waiting for "replace?" when it exists.
 struct PendingSave {
   std::string path, content, what;
+  std::function<void(const std::string& path)> write;  // writes the file itself, in place of `content`
   std::function<void()> ifKept;  // the file is not replaced: back to what asked (a dialog opens again)
 };
 
@@ -304,6 +306,9 @@ struct Inspector::State {
   // Writes `content` to `path` (atomically), or asks first when the file exists.
   // `ifKept`: what to do when the user keeps the file (the dialog that asked opens again).
   void save(const std::string& path, std::string content, const std::string& what, std::function<void()> ifKept = {});
+  // As save(), for a file written by `write` (atomically, as a dump writer does) and not held whole.
+  void saveWith(const std::string& path, std::function<void(const std::string&)> write, const std::string& what,
+                std::function<void()> ifKept = {});
   // `measuredBox`: where the region's figures are taken (XY, mm); else where the path was re-fitted.
   void startOptimise(std::uint32_t first, std::uint32_t last,
                      std::optional<std::pair<Vec3, Vec3>> measuredBox = std::nullopt);

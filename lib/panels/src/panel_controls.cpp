@@ -261,6 +261,9 @@ namespace {
 // when it changed (the map is then made again). A roughing program's step-over (4 mm, say) is
 // more than the default, which is set for finishing programs: without this, such a program
 // opened in the window had curves but no map, and nothing to be done about it.
+// A map of this few passes or fewer is mostly empty, and the panel says what may fill it.
+constexpr std::size_t kFewPasses = 3;
+
 bool drawGapControl(Inspector::State& s) {
   const DisplayUnits u = s.units();
   float shown = static_cast<float>(u.length(s.settings.gapLimit));
@@ -280,6 +283,30 @@ bool drawGapControl(Inspector::State& s) {
   if (std::fabs(mm - s.settings.gapLimit) < (u.inch ? 0.00005 * kMmPerInch : 0.0005)) return false;
   s.settings.gapLimit = mm;
   return true;
+}
+
+// How the samples split into passes: found from the path (auto), or as the user knows the
+// program was written (as `compare --pattern` takes it). True when it changed.
+bool drawPatternControl(Inspector::State& s) {
+  ImGui::TextUnformatted("passes:");
+  ImGui::SameLine();
+  ImGui::SetNextItemWidth(-1);
+  bool changed = false;
+  if (ImGui::BeginCombo("##pattern", pathPatternName(s.settings.pattern))) {
+    for (PathPattern p : {PathPattern::Auto, PathPattern::DirectionParallel, PathPattern::ContourParallel, PathPattern::NoBoundary})
+    {
+      const bool chosen = ImGui::Selectable(pathPatternName(p), p == s.settings.pattern);
+      noteControl(s, std::string("surface.pattern:") + pathPatternName(p));
+      if (chosen && p != s.settings.pattern) {
+        s.settings.pattern = p;
+        changed = true;
+      }
+    }
+    ImGui::EndCombo();
+  }
+  noteControl(s, "surface.pattern");
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("how the samples split into passes: found from the path, or as the program was written");
+  return changed;
 }
 
 }  // namespace
@@ -330,6 +357,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     s.settings.feedbackSurface = surface == 1;
   }
   recolour |= drawGapControl(s);
+  recolour |= drawPatternControl(s);
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##cmap", s.settings.colorMap.c_str())) {
     std::vector<std::string> names = vis::colorMapNames();
@@ -374,7 +402,18 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   if (Document* doc = s.activeDocument(); doc && doc->scene) {
     ImGui::Separator();
     ImGui::Text("range %s .. %s", readableValue(doc->map.style.range.lo).c_str(), readableValue(doc->map.style.range.hi).c_str());
-    ImGui::Text("%zu passes, %s", doc->map.passes.passes.size(), pathPatternName(doc->map.passes.pattern));
+    const std::size_t passes = doc->map.passes.passes.size();
+    ImGui::Text("%zu passes, %s%s", passes, pathPatternName(doc->map.passes.pattern),
+                doc->map.request.pattern == PathPattern::Auto ? " (found)" : "");
+    // A surface of a few passes is mostly empty: said, with what may fill it.
+    if (passes <= kFewPasses) {
+      ImGui::PushTextWrapPos(0);
+      ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
+                         "only %zu passes: the surface has little between them; if the program is a raster or "
+                         "waterlines, choose its pass pattern above, or raise the gap",
+                         passes);
+      ImGui::PopTextWrapPos();
+    }
     bool visibility = ImGui::Checkbox("surface", &doc->showSurface);
     ImGui::SameLine();
     visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);

@@ -14,6 +14,7 @@
 #include "inspector_state.h"
 #include "text_input.h"
 #include "isurface/analysis/quality_figures.h"
+#include "isurface/io/trajectory_writing.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/base/json_text.h"
 
@@ -127,6 +128,16 @@ void exportNumbers(Inspector::State& s, app_model::ExportKind kind, const std::s
   else s.save(path, std::move(csv), fmt::format("{} samples", rows), backToTheDialog(s));
 }
 
+// The active document's samples as a Biip dump, with its machine when it is known.
+void exportRunDump(Inspector::State& s, const std::string& path) {
+  const Document* doc = s.activeDocument();
+  if (!doc || !doc->samples) return;
+  const std::shared_ptr<const Trajectory> samples = doc->samples;
+  const std::string machine = doc->machineKnown ? machineDescriptionJson(doc->machine) : std::string();
+  s.saveWith(path, [samples, machine](const std::string& to) { writeTrajectoryBiip(*samples, to, machine); },
+             fmt::format("run ({} samples)", samples->size()), backToTheDialog(s));
+}
+
 // A radio button for one kind of export.
 void kindButton(app_model::ExportDialog& dialog, const char* label, app_model::ExportKind kind) {
   if (ImGui::RadioButton(label, dialog.kind == kind)) dialog.choose(kind);
@@ -153,6 +164,9 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::SameLine();
   kindButton(d, "a report (HTML)", ExportKind::Report);
   noteControl(s, "export.report");
+  ImGui::SameLine();
+  kindButton(d, "the run as a Biip dump", ExportKind::RunDump);
+  noteControl(s, "export.dump");
   if (d.kind == ExportKind::ViewPng) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("width [px]", &d.width, 0);
@@ -169,6 +183,9 @@ void drawExportDialog(Inspector::State& s) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("worst regions shown", &d.regions, 0);
     ImGui::TextDisabled("maps, worst regions with their G-code and speed, axis limits: one file to open in a browser");
+  } else if (d.kind == ExportKind::RunDump) {
+    ImGui::TextDisabled("every sample (lines, positions, feedback, feed) and the machine that made them, to open "
+                        "again or give to isurface-cli");
   }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
   inputTextWithHint("##path", "file to write", d.path);
@@ -192,6 +209,9 @@ void drawExportDialog(Inspector::State& s) {
       else s.save(d.path, vis::pngOfRgb(rgb.data(), d.width, d.height), "view image", backToTheDialog(s));
     } else if (d.kind == ExportKind::Report) {
       s.startReport(d.path, d.regions);
+    } else if (d.kind == ExportKind::RunDump) {
+      auto dump = [&s, path = d.path] { exportRunDump(s, path); };
+      if (!s.loadFeedbackFirst(dump)) dump();
     } else {
       // The figures' predicted deviation and the samples' feedback columns need the feedback.
       auto numbers = [&s, kind = d.kind, path = d.path, first = d.first, last = d.last] {

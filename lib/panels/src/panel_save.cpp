@@ -12,7 +12,8 @@ namespace {
 
 void writeNow(Inspector::State& s, const PendingSave& save) {
   try {
-    writeFileAtomically(save.path, save.content);
+    if (save.write) save.write(save.path);
+    else writeFileAtomically(save.path, save.content);
     s.status = "saved " + save.what + " to " + save.path;
     s.chrome.lastSaved = save.path;
     if (s.comparison && s.comparison->text == save.content) s.comparison->saved = true;
@@ -23,15 +24,25 @@ void writeNow(Inspector::State& s, const PendingSave& save) {
 
 }  // namespace
 
+namespace {
+
+// Writes it now, or asks first when the file exists.
+void writeOrAsk(Inspector::State& s, PendingSave pending) {
+  std::error_code error;
+  if (std::filesystem::exists(pending.path, error)) s.dialogs.overwriteQuestion = std::move(pending);
+  else writeNow(s, pending);
+}
+
+}  // namespace
+
 void Inspector::State::save(const std::string& path, std::string content, const std::string& what,
                             std::function<void()> ifKept) {
-  PendingSave pending{path, std::move(content), what, std::move(ifKept)};
-  std::error_code error;
-  if (std::filesystem::exists(path, error)) {
-    dialogs.overwriteQuestion = std::move(pending);
-    return;
-  }
-  writeNow(*this, pending);
+  writeOrAsk(*this, PendingSave{path, std::move(content), what, {}, std::move(ifKept)});
+}
+
+void Inspector::State::saveWith(const std::string& path, std::function<void(const std::string&)> write,
+                                const std::string& what, std::function<void()> ifKept) {
+  writeOrAsk(*this, PendingSave{path, {}, what, std::move(write), std::move(ifKept)});
 }
 
 void drawOverwriteQuestion(Inspector::State& s) {

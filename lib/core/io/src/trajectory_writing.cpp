@@ -9,7 +9,7 @@
 
 namespace isurface {
 
-void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
+void writeTrajectoryBiip(const Trajectory& samples, const std::string& path, const std::string& machineJson) {
   using Value = std::function<double(std::size_t)>;
   std::vector<std::pair<std::string, Value>> written;
   const auto channel = [&](const std::string& name, Value value) { written.emplace_back(name, std::move(value)); };
@@ -29,8 +29,9 @@ void writeTrajectoryBiip(const Trajectory& samples, const std::string& path) {
   std::vector<std::pair<std::string, BiipType>> names = {{"line", BiipType::U32}};
   for (const auto& [name, value] : written) names.emplace_back(name, BiipType::F64);
   const std::vector<BiipChannel> channels = BiipWriter::layout(names);
-  const nlohmann::json meta = {{"source", samples.source}, {"units", "mm"}, {"writer", "isurface-cli"},
-                               {"coordinates", "workpiece"}};
+  nlohmann::json meta = {{"source", samples.source}, {"units", "mm"}, {"writer", "isurface-cli"},
+                         {"coordinates", "workpiece"}};
+  if (!machineJson.empty()) meta["machine"] = nlohmann::json::parse(machineJson);
   BiipWriter writer(path, channels, samples.cycle > 0 ? samples.cycle : 0.001, jsonText(meta), samples.startTime);
   std::vector<unsigned char> record(writer.recordBytes());
   RunChannel<std::uint32_t>::Cursor lineOf = samples.line.cursor();

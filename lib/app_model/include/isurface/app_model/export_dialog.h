@@ -6,7 +6,7 @@
 
 namespace isurface::app_model {
 
-enum class ExportKind { ViewPng, MapFigures, LineSamples, Report };
+enum class ExportKind { ViewPng, MapFigures, LineSamples, Report, RunDump };
 
 // What the dialog needs to know of the document it would export.
 struct ExportSubject {

@@ -7,6 +7,8 @@
 namespace isurface {
 
 // Channels: line, x y z, t, feedback and feed when present, and every extra channel (f64).
-void writeTrajectoryBiip(const Trajectory& samples, const std::string& path);
+// `machineJson`: the description of the machine that made the samples, kept in the metadata (a
+// dump that names its machine is judged with it when read again); empty when none is known.
+void writeTrajectoryBiip(const Trajectory& samples, const std::string& path, const std::string& machineJson = "");
 
 }  // namespace isurface
