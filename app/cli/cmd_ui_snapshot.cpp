@@ -25,7 +25,7 @@ struct SnapshotOptions {
   long pickLine = -1, pickSample = -1;
   std::string optimizeLines, optimizeView = "side-by-side";
   std::string machine;
-  bool showMachine = false, showWarnings = false;
+  bool showMachine = false, showWarnings = false, showRegions = false;
 };
 
 // The window's RGBA rows, top row first, as a PNG file.
@@ -91,6 +91,7 @@ int runSnapshot(const SnapshotOptions& o) {
   }
   if (o.showMachine) inspector.showMachineWindow();
   if (o.showWarnings) inspector.showWarningsWindow();
+  if (o.showRegions) inspector.showRegionsWindow();
   // ImGui settles its layout over a few frames (window sizes, scrolling to the selection).
   for (int frame = 0; frame < 4; ++frame) ui.frame();
   if (status == kExitOk) writePng(ui.pixels(), width, height, o.output);
@@ -121,6 +122,7 @@ Command uiSnapshotCommand() {
       sub.add_option("--machine", o->machine, "machine description (JSON) programs are simulated with");
       sub.add_flag("--show-machine", o->showMachine, "draw the machine window open");
       sub.add_flag("--show-warnings", o->showWarnings, "draw the warnings window open");
+      sub.add_flag("--show-regions", o->showRegions, "draw the worst regions window open");
       return [o] { return runSnapshot(*o); };
     }};
 }

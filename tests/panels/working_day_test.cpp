@@ -482,6 +482,27 @@ TEST(workingDay, ThePassPatternIsChosenInTheWindow) {
   EXPECT_EQ(described(*ui)["map"]["pattern_asked"], "auto");
 }
 
+// The worst regions as the report ranks them: listed in the window (Ctrl+R), a click goes to
+// a region's worst sample, its Optimise button holds its lines and box in the dialog.
+TEST(workingDay, TheWorstRegionsAreListedAndAClickGoesThere) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'R', true);
+  waitForJobs(*ui);
+  settle(*ui);
+  const nlohmann::json map = described(*ui)["map"];
+  ASSERT_TRUE(map["regions_found"].is_number()) << map.dump();
+  ASSERT_GT(map["regions_found"].get<std::size_t>(), 0u);
+  clickControl(*ui, "regions.item:1");
+  ASSERT_TRUE(ui->inspector().selection().sample);
+  const std::uint32_t line = *ui->inspector().selection().line;
+  clickControl(*ui, "regions.optimise:1");
+  settle(*ui);
+  const nlohmann::json lines = described(*ui)["optimise_lines"];
+  EXPECT_LE(lines[0].get<std::uint32_t>(), line);
+  EXPECT_GE(lines[1].get<std::uint32_t>(), line);
+  EXPECT_TRUE(described(*ui)["optimise_box"].is_object());
+}
+
 TEST(workingDay, ARecentFileClickedOpensThatFile) {
   app_model::Settings settings;
   settings.addRecent(test::sourcePath("samples/transition-surface.nc"));

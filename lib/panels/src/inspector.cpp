@@ -471,6 +471,10 @@ const Machine* Inspector::activeMachine() const {
 }
 void Inspector::showMachineWindow() { state_->openMachineWindow(); }
 void Inspector::showWarningsWindow() { state_->dialogs.warningsOpen = true; }
+void Inspector::showRegionsWindow() {
+  state_->dialogs.regionsOpen = true;
+  state_->startFindingRegions();
+}
 void Inspector::simulateAgain() { state_->simulateAgain(); }
 
 const app_model::Selection& Inspector::selection() const { return state_->selection.current(); }

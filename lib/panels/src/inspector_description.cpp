@@ -95,6 +95,7 @@ std::string Inspector::describe() const {
                             {"replace_question", s.dialogs.overwriteQuestion.has_value()},
                             {"help", s.dialogs.helpOpen},
                             {"warnings", s.dialogs.warningsOpen},
+                            {"regions", s.dialogs.regionsOpen},
                             {"menu", s.chrome.menuOpen}};
   nlohmann::json map = nlohmann::json::object();
   if (const Document* doc = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr; doc && doc->scene)
@@ -106,6 +107,8 @@ std::string Inspector::describe() const {
            {"surface", s.settings.feedbackSurface ? "feedback" : "commanded"},
            {"vertices", doc->map.mesh ? doc->map.mesh->vertexSample.size() : 0},
            {"passes", doc->map.passes.passes.size()},
+           {"regions_found", doc->regions && doc->regionsOfMap == doc->map.mesh ? nlohmann::json(doc->regions->regions.size())
+                                                                                : nlohmann::json()},
            {"pattern", pathPatternName(doc->map.passes.pattern)},
            {"pattern_asked", pathPatternName(doc->map.request.pattern)},
            {"close_up", closeUpJson(s.refinement)}};

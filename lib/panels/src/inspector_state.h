@@ -16,6 +16,7 @@
 
 #include "isurface/gcode/program.h"
 #include "isurface/machine/machine.h"
+#include "isurface/analysis/quality_regions.h"
 #include "isurface/analysis/quantities.h"
 #include "isurface/analysis/run_comparison.h"
 #include "isurface/base/trajectory.h"
@@ -72,6 +73,10 @@ struct Document {
   FeedbackSupply feedbackSupply;
   std::shared_ptr<const BiipReader> thinnedDump;  // a thinned run's dump, for its close-ups
   app_model::LineTimes lineTimes;                  // each line's time, for the G-code pane
+  // The worst regions of its map (found when first asked for), and the map's mesh they belong to:
+  // a map made again (another gap, another pass pattern) finds them again.
+  std::shared_ptr<const QualityReport> regions;
+  std::shared_ptr<const SurfaceMesh> regionsOfMap;
   bool feedbackAvailable() const { return samples && (samples->hasFeedback() || feedbackSupply.available()); }
 };
 
@@ -157,7 +162,14 @@ struct LoadedFeedback {
   std::optional<FeedbackOffsets> feedback;
   std::function<void()> then;
 };
-using JobResult = std::variant<LoadedDocument, Recolouring, OptimisedRegion, ComparedRun, WrittenReport, LoadedFeedback>;
+// The worst regions of a document's map, as the report ranks them.
+struct FoundRegions {
+  std::shared_ptr<const Trajectory> madeFor;
+  std::shared_ptr<const SurfaceMesh> ofMap;  // the map's mesh they were found on
+  std::shared_ptr<const QualityReport> report;
+};
+using JobResult =
+    std::variant<LoadedDocument, Recolouring, OptimisedRegion, ComparedRun, WrittenReport, LoadedFeedback, FoundRegions>;
 
 // The label of the report's job begins so.
 inline constexpr const char* kReportJob = "report on ";
@@ -205,6 +217,7 @@ struct Dialogs {
   std::optional<PendingSave> overwriteQuestion;
   bool helpOpen = false;
   bool warningsOpen = false;  // the warnings window (W)
+  bool regionsOpen = false;   // the worst regions window (Ctrl+R)
   // The G-code pane's search field (Ctrl+F): what is looked for, and why nothing was found.
   struct GcodeSearch {
     std::string text, message;
@@ -335,6 +348,9 @@ struct Inspector::State {
   void take(ComparedRun& result, const std::string& notice);
   void take(WrittenReport& result, const std::string& notice);
   void take(LoadedFeedback& result, const std::string& notice);
+  void take(FoundRegions& result, const std::string& notice);
+  // Finds the active document's worst regions in the background, unless they are known for its map.
+  void startFindingRegions();
   // A job cancelled or failed: what its result leaves to say or to do.
   void jobEndedWithout(JobResult* result);
   void activate(std::size_t index);
@@ -380,6 +396,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
 void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
 void drawWarningsWindow(Inspector::State& s);
+void drawRegionsWindow(Inspector::State& s);
 // The share of the document's samples (its run's time) on the lines first..last; none without samples.
 std::optional<double> linesTimeShare(const Document& doc, int first, int last);
 // The line of the document's program a warning names ("PROGRAM:LINE:..."), if any.

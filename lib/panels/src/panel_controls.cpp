@@ -163,6 +163,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       if (ImGui::MenuItem("Machine...", "M")) s.openMachineWindow();
       if (ImGui::MenuItem("Locate...", "Ctrl+L")) locate = true;
       if (ImGui::MenuItem("Optimise region...", "P")) s.dialogs.optimise.opening = true;
+      ImGui::MenuItem("Worst regions", "Ctrl+R", &s.dialogs.regionsOpen);
       ImGui::MenuItem("Select region box", "B", &s.pointer.boxSelect);
       if (ImGui::MenuItem("Measure distance", "D", s.pointer.measuring)) toggleMeasure(s);
       closeMenuOnEscape(s);
@@ -209,6 +210,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   if (shortcut('E', true) && s.activeDocument()) s.dialogs.exportTo.show(s.selection.current().line);
   if (shortcut('W', true) && s.activeDocument()) s.closeActive();
   if (shortcut('F', true) && s.activeDocument()) s.dialogs.gcodeSearch.focus = true;
+  if (shortcut('R', true)) s.dialogs.regionsOpen = !s.dialogs.regionsOpen;
   if (shortcut('H')) s.dialogs.helpOpen = !s.dialogs.helpOpen;
   if (shortcut('W')) s.dialogs.warningsOpen = !s.dialogs.warningsOpen;
   if (s.pointer.measuring && s.takeEscape()) toggleMeasure(s);
@@ -528,6 +530,7 @@ void drawDialogs(Inspector::State& s) {
   drawOpenDialog(s);
   drawLocateWindow(s);
   drawWarningsWindow(s);
+  drawRegionsWindow(s);
 }
 
 }  // namespace isurface::panels

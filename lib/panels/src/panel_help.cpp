@@ -24,6 +24,7 @@ constexpr KeyHelp kKeys[] = {
     {"D", "measure: the next two clicks on the surface are the ends of a distance"},
     {"Ctrl+L", "locate a sample, a G-code line or the sample nearest a point"},
     {"Ctrl+F", "find text in the G-code (Enter: next, Shift+Enter: previous)"},
+    {"Ctrl+R", "the worst regions of the map, most severe first: a click goes to one"},
     {"W", "every warning of the open files; a click goes to the line it names"},
     {"P", "re-optimise a region and compare the maps"},
     {"Ctrl+E", "export the view (PNG), the map's figures (JSON) or samples (CSV)"},

@@ -73,6 +73,8 @@ class Inspector {
   void showMachineWindow();
   // Opens the warnings window (every warning of the open documents).
   void showWarningsWindow();
+  // Opens the worst regions window; they are found in the background (waitUntilIdle).
+  void showRegionsWindow();
   // Simulates the active document's program again with machine().
   void simulateAgain();
 
