@@ -395,6 +395,9 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h);
 void drawDataBar(Inspector::State& s, float x, float y, float w, float h);
 void drawStatusBar(Inspector::State& s, float y, float width);
 void drawDialogs(Inspector::State& s);
+// A window of a list over the layout, centred, opaque (the map behind would make it hard to
+// read); ImGui::End() closes it.
+bool beginListWindow(const char* name, bool* open, float heightShare);
 void drawWarningsWindow(Inspector::State& s);
 void drawRegionsWindow(Inspector::State& s);
 // The share of the document's samples (its run's time) on the lines first..last; none without samples.

@@ -98,11 +98,7 @@ void Inspector::State::take(FoundRegions& result, const std::string&) {
 
 void drawRegionsWindow(Inspector::State& s) {
   if (!s.dialogs.regionsOpen) return;
-  const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(viewport->Size.x * 0.6f, viewport->Size.y * 0.45f), ImGuiCond_Appearing);
-  ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the figures hard to read
-  if (ImGui::Begin("Worst regions", &s.dialogs.regionsOpen, ImGuiWindowFlags_NoCollapse)) {
+  if (beginListWindow("Worst regions", &s.dialogs.regionsOpen, 0.45f)) {
     Document* doc = s.activeDocument();
     if (!doc || !doc->samples) ImGui::TextDisabled("no samples: open a program or a dump");
     else if (!doc->map.mesh) ImGui::TextDisabled("%s has no surface: no regions to rank", doc->name.c_str());

@@ -24,13 +24,17 @@ std::optional<std::uint32_t> warningLine(const Document& doc, const std::string&
   return static_cast<std::uint32_t>(line);
 }
 
-void drawWarningsWindow(Inspector::State& s) {
-  if (!s.dialogs.warningsOpen) return;
+bool beginListWindow(const char* name, bool* open, float heightShare) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.5f), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(viewport->Size.x * 0.6f, viewport->Size.y * 0.4f), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(viewport->Size.x * 0.6f, viewport->Size.y * heightShare), ImGuiCond_Appearing);
   ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the text hard to read
-  if (ImGui::Begin("Warnings", &s.dialogs.warningsOpen, ImGuiWindowFlags_NoCollapse)) {
+  return ImGui::Begin(name, open, ImGuiWindowFlags_NoCollapse);
+}
+
+void drawWarningsWindow(Inspector::State& s) {
+  if (!s.dialogs.warningsOpen) return;
+  if (beginListWindow("Warnings", &s.dialogs.warningsOpen, 0.4f)) {
     bool any = false;
     for (std::size_t d = 0; d < s.documents.size(); ++d) {
       const Document& doc = *s.documents[d];
