@@ -503,6 +503,26 @@ TEST(workingDay, TheWorstRegionsAreListedAndAClickGoesThere) {
   EXPECT_TRUE(described(*ui)["optimise_box"].is_object());
 }
 
+// Play moves the selection along the run with the clock and Pause holds it; a click on the
+// time slider goes to that time of the run.
+TEST(workingDay, TheRunIsPlayedAndScrubbed) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectSample(100));
+  settle(*ui);
+  clickControl(*ui, "curves.play");
+  settle(*ui, 10);
+  const std::size_t played = *ui->inspector().selection().sample;
+  EXPECT_GT(played, 100u);
+  clickControl(*ui, "curves.play");  // Pause
+  const std::size_t paused = *ui->inspector().selection().sample;
+  settle(*ui, 10);
+  EXPECT_EQ(*ui->inspector().selection().sample, paused);
+  clickControl(*ui, "curves.time");  // the middle of the slider: about half the run
+  const std::size_t middle = *ui->inspector().selection().sample;
+  const std::size_t samples = described(*ui)["documents"][0]["samples"].get<std::size_t>();
+  EXPECT_NEAR(double(middle) / double(samples), 0.5, 0.05);
+}
+
 TEST(workingDay, ARecentFileClickedOpensThatFile) {
   app_model::Settings settings;
   settings.addRecent(test::sourcePath("samples/transition-surface.nc"));

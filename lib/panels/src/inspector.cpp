@@ -414,7 +414,8 @@ void Inspector::frame() {
 
 // A job's result is taken, and queued files start loading, by the next frame: until then too.
 bool Inspector::busy() const {
-  return state_->job.running() || state_->job.finishedPending() || !state_->queue.runs.empty();
+  return state_->job.running() || state_->job.finishedPending() || !state_->queue.runs.empty() ||
+         state_->follow.playback.playing;
 }
 bool Inspector::refining() const { return state_->refinement.pending(); }
 std::size_t Inspector::documentCount() const { return state_->documents.size(); }

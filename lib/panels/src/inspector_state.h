@@ -28,6 +28,7 @@
 #include "isurface/app_model/line_times.h"
 #include "isurface/app_model/open_dialog.h"
 #include "isurface/app_model/optimise_dialog.h"
+#include "isurface/app_model/playback.h"
 #include "isurface/app_model/locate_window.h"
 #include "isurface/app_model/machine_window.h"
 #include "isurface/app_model/signal_pyramid.h"
@@ -245,6 +246,7 @@ struct PaneFollow {
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
   std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
   int extraCurve = 0;                         // which extra channel the fourth curve shows
+  app_model::Playback playback;               // the selection played along the run
 };
 
 // Files opened together, loaded one run after another, and why a dump was not joined to its

@@ -145,6 +145,35 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   }
 }
 
+// Play / pause, the speed, and a slider over the run's time: the selection follows (the view's
+// marker, the G-code line, the row, the curves' cursor), as a preview plays the tool along its path.
+void drawPlayback(Inspector::State& s, const Trajectory& t) {
+  app_model::Playback& play = s.follow.playback;
+  play.advance(s.selection, ImGui::GetIO().DeltaTime);
+  const bool toggled = ImGui::Button(play.playing ? "Pause" : "Play");
+  noteControl(s, "curves.play");
+  if (toggled) play.toggle(s.selection);
+  ImGui::SameLine();
+  static const double kSpeeds[] = {0.1, 1, 10, 100};
+  static const char* const kSpeedNames[] = {"x0.1", "x1", "x10", "x100"};
+  int speed = 1;
+  for (int k = 0; k < 4; ++k)
+    if (play.speed == kSpeeds[k]) speed = k;
+  ImGui::SetNextItemWidth(ImGui::GetFontSize() * 4.5f);
+  if (ImGui::Combo("##speed", &speed, kSpeedNames, 4)) play.speed = kSpeeds[speed];
+  ImGui::SameLine();
+  const double total = t.timeAt(t.size() - 1) - t.timeAt(0);
+  const auto& sel = s.selection.current();
+  double at = sel.sample && *sel.sample < t.size() ? t.timeAt(*sel.sample) - t.timeAt(0) : 0.0;
+  const double lowest = 0;
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::SliderScalar("##time", ImGuiDataType_Double, &at, &lowest, &total, "%.3f s")) {
+    play.playing = false;
+    s.selection.selectSample(app_model::sampleAtTime(t, at));
+  }
+  noteControl(s, "curves.time");
+}
+
 }  // namespace
 
 void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
@@ -173,6 +202,7 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
     s.follow.extraCurve = std::clamp(s.follow.extraCurve, 0, static_cast<int>(names.size()) - 1);
     ImGui::Combo("channel", &s.follow.extraCurve, names.data(), static_cast<int>(names.size()));
   }
+  drawPlayback(s, *doc->samples);
   const ImVec2 area = ImGui::GetContentRegionAvail();
   const int shown = doc->curves.size() > 3 ? 4 : 3;
   const float axis = ImGui::GetTextLineHeight() + 6;  // the time axis under the curves
