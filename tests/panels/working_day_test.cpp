@@ -523,6 +523,26 @@ TEST(workingDay, TheRunIsPlayedAndScrubbed) {
   EXPECT_NEAR(double(middle) / double(samples), 0.5, 0.05);
 }
 
+// A new document starts at its own top and from the default view, not where the one before it
+// was scrolled and turned; going back to the first finds it as it was left.
+TEST(workingDay, ANewDocumentStartsAtItsTopAndFromTheDefaultView) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  settle(*ui);
+  tapLetter(*ui, 'T');  // top view
+  settle(*ui);
+  EXPECT_GT(described(*ui)["gcode_top_line"].get<std::size_t>(), 1000u);
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
+  waitForJobs(*ui);
+  settle(*ui);
+  EXPECT_EQ(described(*ui)["gcode_top_line"], 1u);
+  EXPECT_EQ(described(*ui)["colour"]["view"], "iso");
+  ui->inspector().showDocument(0);
+  settle(*ui);
+  EXPECT_GT(described(*ui)["gcode_top_line"].get<std::size_t>(), 1000u);
+  EXPECT_EQ(described(*ui)["colour"]["view"], "top");
+}
+
 TEST(workingDay, ARecentFileClickedOpensThatFile) {
   app_model::Settings settings;
   settings.addRecent(test::sourcePath("samples/transition-surface.nc"));

@@ -1,5 +1,6 @@
 // Loading a document on a background thread: program text, the program and its samples (one
 // workflow call: read and joined, or simulated), the quality map and its scene, the curves.
+#include <atomic>
 #include <algorithm>
 #include <filesystem>
 #include <future>
@@ -47,6 +48,11 @@ vis::QualityMapRequest fitRequest(vis::QualityMapRequest request, const Trajecto
 
 }  // namespace
 
+Document::Document() {
+  static std::atomic<std::uint64_t> made{0};  // documents are made on the jobs' threads
+  serial = ++made;
+}
+
 std::string machineCaption(const Machine& machine, bool known) {
   return known ? "machine: " + machine.name : std::string("machine: not named by the dump");
 }
@@ -71,6 +77,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   auto doc = std::make_unique<Document>();
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
+  doc->viewDirection = request.view;
   doc->name = std::filesystem::path(programPath.empty() ? dumpPath : programPath).filename().string();
   if (!programPath.empty()) doc->text = std::make_unique<app_model::TextLines>(programPath);
   OpenRunRequest open;

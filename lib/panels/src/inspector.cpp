@@ -47,9 +47,12 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
 void Inspector::State::startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces) {
   vis::QualityMapRequest request = mapRequest();
   request.pickable = true;
-  // The pass pattern chosen is the active program's: another program's passes are found anew.
-  if (const Document* doc = activeDocument(); !doc || programPath.empty() || doc->programPath != programPath)
+  // The pass pattern and the view chosen are the active program's: another program's passes are
+  // found anew, and it is first seen from the default direction.
+  if (const Document* doc = activeDocument(); !doc || programPath.empty() || doc->programPath != programPath) {
     request.pattern = PathPattern::Auto;
+    request.view = vis::QualityMapRequest{}.view;
+  }
   // A new document's own units: as it is written, unless the user chose.
   request.inch = persistent.units == "inch";
   const bool unitsOfProgram = persistent.units == "auto";
@@ -269,6 +272,7 @@ void Inspector::State::activate(std::size_t index) {
   runComparison.reset();
   afterView.setScene(nullptr);
   Document* doc = activeDocument();
+  if (doc) settings.view = doc->viewDirection;  // Reset (R) and its maps made again look from there
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();
   view.setScene(doc ? doc->scene : nullptr, doc ? doc->map.rayIndex : nullptr);

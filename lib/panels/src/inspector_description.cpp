@@ -21,6 +21,16 @@ std::optional<std::array<float, 4>> Inspector::controlRect(const std::string& na
 
 namespace {
 
+const char* viewDirectionName(vis::ViewDirection view) {
+  switch (view) {
+    case vis::ViewDirection::Top: return "top";
+    case vis::ViewDirection::Front: return "front";
+    case vis::ViewDirection::Left: return "left";
+    case vis::ViewDirection::Iso: break;
+  }
+  return "iso";
+}
+
 nlohmann::json pointJson(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 // The region the Optimise dialog holds: its lines, its box (mm) and the surface samples inside.
@@ -131,6 +141,7 @@ std::string Inspector::describe() const {
                                                        ? s.units().unitOf(quantityInfo(s.settings.quantity).unit)
                                                        : ""},
                                           {"range_mode", s.settings.rangeMode},
+                                          {"view", viewDirectionName(s.settings.view)},
                                           {"gap_limit_mm", s.settings.gapLimit},
                                           {"fixed", {s.settings.fixedLow, s.settings.fixedHigh}}}},
                               {"locate", {{"sample", s.dialogs.locate.sample}, {"line", s.dialogs.locate.line}, {"message", s.dialogs.locate.message}}},
@@ -148,6 +159,7 @@ std::string Inspector::describe() const {
                                                       : nlohmann::json()},
                               {"selection", selection},
                               {"gcode_search", s.dialogs.gcodeSearch.message},
+                              {"gcode_top_line", s.follow.gcodeTopLine},
                               {"machine", machineJson(s.dialogs.machine.inUse)},
                               {"machine_source", s.dialogs.machine.source},
                               {"machine_edited", s.dialogs.machine.open ? machineJson(s.dialogs.machine.edit) : nlohmann::json()},

@@ -58,6 +58,8 @@ struct Curve {
 
 // One program and its interpolation samples (simulated or read from a dump).
 struct Document {
+  Document();
+  std::uint64_t serial;  // unique in the process: what its panes' scroll is kept under
   std::string name;
   std::string programPath, dumpPath;
   std::unique_ptr<app_model::TextLines> text;
@@ -70,6 +72,7 @@ struct Document {
   bool machineKnown = true;   // false: a dump that names no machine (the default stands in)
   std::vector<std::string> warnings;
   bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
+  vis::ViewDirection viewDirection = vis::ViewDirection::Iso;  // the direction it was last seen from
   // The servo's positions are loaded when first needed (12 bytes a sample): from here.
   FeedbackSupply feedbackSupply;
   std::shared_ptr<const BiipReader> thinnedDump;  // a thinned run's dump, for its close-ups
@@ -244,6 +247,7 @@ struct PaneFollow {
   std::uint64_t shownGeneration = ~std::uint64_t(0);  // the selection the scene's glow shows
   std::uint64_t glowDeferred = ~std::uint64_t(0);     // the selection whose glow comes next frame
   std::uint64_t gcodeScrolledFor = ~std::uint64_t(0), dataScrolledFor = ~std::uint64_t(0);
+  std::size_t gcodeTopLine = 1;  // the first line the G-code pane showed last
   std::size_t curveFirst = 0, curveLast = 0;  // the samples the curves span
   int extraCurve = 0;                         // which extra channel the fourth curve shows
   app_model::Playback playback;               // the selection played along the run

@@ -89,6 +89,7 @@ void drawLookMenus(Inspector::State& s) {
 
 void setView(Inspector::State& s, vis::ViewDirection view) {
   s.settings.view = view;
+  if (Document* doc = s.activeDocument()) doc->viewDirection = view;
   s.view.setView(view);
 }
 

@@ -100,6 +100,8 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
   // Each line's time and when it starts, from the samples (s; blank where a line made none).
   const bool timed = doc->samples != nullptr;
   if (timed) ImGui::TextDisabled("%9s %8s %10s", "line", "time [s]", "starts at");
+  // A pane of its own for each document: a new one starts at its top, and each keeps its scroll.
+  ImGui::PushID(static_cast<int>(doc->serial));
   ImGui::BeginChild("lines", ImVec2(0, 0), false, ImGuiWindowFlags_HorizontalScrollbar);
   const float rowHeight = ImGui::GetTextLineHeightWithSpacing();
   const std::size_t lines = doc->text->count();
@@ -112,6 +114,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
   }
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(lines), rowHeight);
+  s.follow.gcodeTopLine = static_cast<std::size_t>(ImGui::GetScrollY() / rowHeight) + 1;
   while (clipper.Step()) {
     for (int row = clipper.DisplayStart; row < clipper.DisplayEnd; ++row) {
       const std::uint32_t line = static_cast<std::uint32_t>(row + 1);
@@ -130,6 +133,7 @@ void drawGcodePane(Inspector::State& s, float x, float y, float w, float h) {
     }
   }
   ImGui::EndChild();
+  ImGui::PopID();
   ImGui::End();
 }
 
@@ -156,6 +160,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_ScrollX | ImGuiTableFlags_RowBg |
                                 ImGuiTableFlags_BordersV | ImGuiTableFlags_SizingFixedFit;
   const DisplayUnits units = s.units();
+  ImGui::PushID(static_cast<int>(doc->serial));  // each document's rows scroll on their own, a new one from its top
   if (ImGui::BeginTable("samples", columns, flags)) {
     ImGui::TableSetupScrollFreeze(1, 1);
     for (const char* name : {"sample", "t [s]", "line"}) ImGui::TableSetupColumn(name);
@@ -205,6 +210,7 @@ void drawDataBar(Inspector::State& s, float x, float y, float w, float h) {
     }
     ImGui::EndTable();
   }
+  ImGui::PopID();
   ImGui::End();
 }
 
