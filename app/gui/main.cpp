@@ -247,6 +247,18 @@ int run(int argc, char** argv) {
     glfwTerminate();
     return 1;
   }
+  // Text as large on a dense screen as on a usual one, unless the user chose its size.
+  if (!settings.uiScaleChosen) {
+    float contentScale = 1, ignored = 1;
+    glfwGetWindowContentScale(window, &contentScale, &ignored);
+    int millimetres = 0, unusedHeight = 0;
+    int pixels = 0;
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+      glfwGetMonitorPhysicalSize(monitor, &millimetres, &unusedHeight);
+      if (const GLFWvidmode* mode = glfwGetVideoMode(monitor)) pixels = mode->width;
+    }
+    settings.uiScale = isurface::app_model::uiScaleForScreen(pixels, millimetres, contentScale);
+  }
   glfwMakeContextCurrent(window);
   glfwSwapInterval(1);
   glfwSetDropCallback(window, onDrop);

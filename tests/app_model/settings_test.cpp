@@ -103,6 +103,7 @@ TEST(settings, RoundTripThroughTheDefaultPath) {
   saved.windowHeight = 1440;
   saved.theme = "light";
   saved.uiScale = 1.25f;
+  saved.uiScaleChosen = true;
   saved.units = "inch";
   ASSERT_TRUE(saveSettings(saved));  // creates isurface/ under the config folder
   EXPECT_TRUE(fileExists(config + "/isurface/settings.json"));
@@ -115,6 +116,7 @@ TEST(settings, RoundTripThroughTheDefaultPath) {
   EXPECT_EQ(loaded.windowHeight, 1440);
   EXPECT_EQ(loaded.theme, "light");
   EXPECT_FLOAT_EQ(loaded.uiScale, 1.25f);
+  EXPECT_TRUE(loaded.uiScaleChosen);
   EXPECT_EQ(loaded.units, "inch");
 
   // The keys the file promises.
@@ -238,4 +240,23 @@ TEST(settings, ADeviceOrAFifoInItsPlaceGivesTheDefaultsAtOnce) {
   ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
   expectDefaults(loadSettings(zero));
   expectDefaults(loadSettings(fifo));  // no writer: read without waiting for one
+}
+
+// The text size follows the screen's density until the user chooses one: a 24-inch screen of
+// 1920 pixels (531 mm) is usual, a 27-inch one of 2560 (597 mm, 109 dpi) a quarter denser, a
+// 14-inch one of 2560 (302 mm) twice as dense; the desktop's own scale counts too. A size the
+// screen set is not written as the user's.
+TEST(settings, TheTextSizeFollowsTheScreenUntilChosen) {
+  EXPECT_FLOAT_EQ(uiScaleForScreen(1920, 531, 1.0f), 1.0f);
+  EXPECT_FLOAT_EQ(uiScaleForScreen(2560, 597, 1.0f), 1.25f);
+  EXPECT_FLOAT_EQ(uiScaleForScreen(2560, 302, 1.0f), 2.0f);
+  EXPECT_FLOAT_EQ(uiScaleForScreen(1920, 344, 1.0f), 1.5f);  // 15.6-inch laptop, 142 dpi
+  EXPECT_FLOAT_EQ(uiScaleForScreen(2560, 0, 1.25f), 1.25f);  // no size reported: the desktop's scale
+  EXPECT_FLOAT_EQ(uiScaleForScreen(0, 0, 3.0f), 2.0f);
+  EXPECT_FLOAT_EQ(uiScaleForScreen(0, 0, 0.5f), 1.0f);
+  Settings screen;
+  screen.uiScale = 1.5f;  // set from the screen
+  EXPECT_EQ(settingsText(screen).find("ui_scale"), std::string::npos);
+  screen.uiScaleChosen = true;
+  EXPECT_NE(settingsText(screen).find("ui_scale"), std::string::npos);
 }

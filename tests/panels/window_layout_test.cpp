@@ -98,3 +98,19 @@ TEST(windowLayout, EscClosesAnOpenMenu) {
   EXPECT_FALSE(described(ui)["windows"]["menu"].get<bool>());
 }
 
+
+// At 1000 x 700 the Colour panel's choices are whole inside it: the column widens for them, and
+// a choice that does not fit beside another goes below it.
+TEST(windowLayout, TheColourPanelsChoicesAreWholeOnASmallWindow) {
+  panels::HeadlessUi ui(1000, 700, app_model::Settings{});
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  settle(ui);
+  const auto panel = ui.inspector().controlRect("colour");
+  ASSERT_TRUE(panel.has_value());
+  for (const char* control : {"surface.feedback", "surface.gap", "surface.pattern", "range.fixed"}) {
+    const auto rect = ui.inspector().controlRect(control);
+    ASSERT_TRUE(rect.has_value()) << control;
+    EXPECT_LE((*rect)[2], (*panel)[2]) << control << " reaches past the panel's right edge";
+  }
+}

@@ -3,6 +3,7 @@
 // never leaves a truncated settings file.
 #include "isurface/app_model/settings.h"
 
+#include <cmath>
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
@@ -99,22 +100,33 @@ Settings settingsFromText(const std::string& text) {
   readString(json, "units", units);
   if (units == "auto" || units == "mm" || units == "inch") settings.units = units;
   const auto scale = json.find("ui_scale");
-  if (scale != json.end() && scale->is_number() && scale->get<double>() >= 1.0 && scale->get<double>() <= 2.0)
+  if (scale != json.end() && scale->is_number() && scale->get<double>() >= 1.0 && scale->get<double>() <= 2.0) {
     settings.uiScale = scale->get<float>();
+    settings.uiScaleChosen = true;
+  }
   return settings;
 }
 
+float uiScaleForScreen(int pixelsWide, int millimetresWide, float contentScale) {
+  constexpr double kMillimetresPerInch = 25.4, kUsualDensity = 96;  // pixels an inch
+  double scale = std::isfinite(contentScale) && contentScale > 0 ? contentScale : 1.0;
+  if (pixelsWide > 0 && millimetresWide > 0)
+    scale = std::max(scale, pixelsWide / (millimetresWide / kMillimetresPerInch) / kUsualDensity);
+  return static_cast<float>(std::clamp(std::round(scale * 4) / 4, 1.0, 2.0));
+}
+
 std::string settingsText(const Settings& settings) {
-  const nlohmann::json json = {
+  nlohmann::json json = {
       {"recent_files", settings.recentFiles},
       {"quantity", settings.quantity},
       {"color_map", settings.colorMap},
       {"window_width", settings.windowWidth},
       {"window_height", settings.windowHeight},
       {"theme", settings.theme},
-      {"ui_scale", settings.uiScale},
       {"units", settings.units},
   };
+  // A size the screen set is not remembered as the user's: another screen sets its own.
+  if (settings.uiScaleChosen) json["ui_scale"] = settings.uiScale;
   // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
   return jsonText(json, 2) + "\n";
 }

@@ -387,7 +387,9 @@ void Inspector::frame() {
   const float toolbarHeight = ImGui::GetFrameHeightWithSpacing() + 10;
   const float statusHeight = ImGui::GetFrameHeightWithSpacing() + 8;
   const float top = menuHeight + toolbarHeight, bottom = height - statusHeight;
-  const float left = width * 0.18f, right = width * 0.70f;
+  // The left column holds the Colour panel's controls whole (about 17 characters wide) on a
+  // small window too, within a third of it.
+  const float left = std::clamp(ImGui::GetFontSize() * 17.0f, width * 0.18f, width * 0.3f), right = width * 0.70f;
   const float middle = top + (bottom - top) * 0.64f;
 
   drawMenuAndToolbar(s, menuHeight, width);

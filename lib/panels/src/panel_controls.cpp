@@ -69,7 +69,7 @@ void drawLookMenus(Inspector::State& s) {
   if (ImGui::BeginMenu("Text and controls size")) {
     for (float scale : {1.0f, 1.25f, 1.5f, 2.0f}) {
       const std::string label = std::to_string(static_cast<int>(scale * 100)) + " %";
-      if (ImGui::MenuItem(label.c_str(), nullptr, p.uiScale == scale)) p.uiScale = scale, look = true;
+      if (ImGui::MenuItem(label.c_str(), nullptr, p.uiScale == scale)) p.uiScale = scale, p.uiScaleChosen = look = true;
     }
     ImGui::EndMenu();
   }
@@ -264,6 +264,15 @@ namespace {
 // when it changed (the map is then made again). A roughing program's step-over (4 mm, say) is
 // more than the default, which is set for finishing programs: without this, such a program
 // opened in the window had curves but no map, and nothing to be done about it.
+// The next radio button or checkbox labelled `label` on the same line when it fits there whole,
+// else on the next: a narrow panel wraps its choices rather than cutting them off.
+void sameLineIfRoomFor(const char* label) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float needed = ImGui::GetFrameHeight() + style.ItemInnerSpacing.x + ImGui::CalcTextSize(label).x;
+  const float right = ImGui::GetWindowPos().x + ImGui::GetWindowContentRegionMax().x;
+  if (ImGui::GetItemRectMax().x + style.ItemSpacing.x + needed <= right) ImGui::SameLine();
+}
+
 // A map of this few passes or fewer is mostly empty, and the panel says what may fill it.
 constexpr std::size_t kFewPasses = 3;
 
@@ -316,6 +325,7 @@ bool drawPatternControl(Inspector::State& s) {
 
 void drawColourControls(Inspector::State& s, float x, float y, float w, float h) {
   beginPanel("Colour", x, y, w, h);
+  s.chrome.controls["colour"] = {x, y, x + w, y + h};
   bool recolour = false;
   const QuantityInfo& current = quantityInfo(s.settings.quantity);
   const bool byChannel = !s.settings.channel.empty();
@@ -350,7 +360,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     ImGui::TextUnformatted("surface:");
     ImGui::SameLine();
     recolour |= ImGui::RadioButton("commanded", &surface, 0);
-    ImGui::SameLine();
+    sameLineIfRoomFor("feedback");
     ImGui::BeginDisabled(!feedback);
     recolour |= ImGui::RadioButton("feedback", &surface, 1);
     noteControl(s, "surface.feedback");
@@ -406,8 +416,8 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     ImGui::Separator();
     ImGui::Text("range %s .. %s", readableValue(doc->map.style.range.lo).c_str(), readableValue(doc->map.style.range.hi).c_str());
     const std::size_t passes = doc->map.passes.passes.size();
-    ImGui::Text("%zu passes, %s%s", passes, pathPatternName(doc->map.passes.pattern),
-                doc->map.request.pattern == PathPattern::Auto ? " (found)" : "");
+    ImGui::TextWrapped("%zu passes, %s%s", passes, pathPatternName(doc->map.passes.pattern),
+                       doc->map.request.pattern == PathPattern::Auto ? " (found)" : "");
     // A surface of a few passes is mostly empty: said, with what may fill it.
     if (passes <= kFewPasses) {
       ImGui::PushTextWrapPos(0);
@@ -420,7 +430,7 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     bool visibility = ImGui::Checkbox("surface", &doc->showSurface);
     ImGui::SameLine();
     visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);
-    ImGui::SameLine();
+    sameLineIfRoomFor("points");
     visibility |= ImGui::Checkbox("points", &doc->showPoints);
     if (visibility) {
       doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);

@@ -13,10 +13,16 @@ struct Settings {
   int windowWidth = 1600, windowHeight = 1000;
   std::string theme = "dark";    // or "light"
   float uiScale = 1.0f;          // 1 to 2: text and controls larger on large screens
+  bool uiScaleChosen = false;    // by the user (View > Text size): else the screen's density sets it
   std::string units = "auto";    // lengths shown in "mm", "inch", or as the program is written
 
   void addRecent(const std::string& path);
 };
+
+// The text size for a screen `pixelsWide` pixels and `millimetresWide` mm wide (0: not known),
+// whose desktop asks for `contentScale` (1 when it says nothing): its density against 96 pixels
+// an inch, in quarters, from 1 to 2.
+float uiScaleForScreen(int pixelsWide, int millimetresWide, float contentScale);
 
 // "" when neither XDG_CONFIG_HOME nor HOME is set: then nothing is loaded or saved.
 std::string settingsPath();
