@@ -10,6 +10,7 @@
 #include <sys/stat.h>
 
 #include "isurface/app_model/settings.h"
+#include "isurface/machine/machine.h"
 #include "test_support.h"
 
 using namespace isurface::app_model;
@@ -259,4 +260,27 @@ TEST(settings, TheTextSizeFollowsTheScreenUntilChosen) {
   EXPECT_EQ(settingsText(screen).find("ui_scale"), std::string::npos);
   screen.uiScaleChosen = true;
   EXPECT_NE(settingsText(screen).find("ui_scale"), std::string::npos);
+}
+
+// The machine of a program is remembered by its absolute path, newest first, at most 20; the
+// default machine, or a description that no longer reads as a machine, is not.
+TEST(settings, AProgramsMachineIsRememberedAndReadBack) {
+  using isurface::Machine, isurface::defaultMachine, isurface::machineDescriptionJson;
+  Machine slow = defaultMachine();
+  slow.name = "slow";
+  slow.axes[0].maxAcceleration = 500;
+  Settings s;
+  s.rememberMachine("part.nc", machineDescriptionJson(slow));
+  EXPECT_EQ(s.machineOf(std::filesystem::absolute("part.nc").string()), machineDescriptionJson(slow));
+  const Settings back = settingsFromText(settingsText(s));
+  EXPECT_EQ(back.machineOf("part.nc"), machineDescriptionJson(slow));
+  EXPECT_EQ(settingsText(back), settingsText(s));
+  s.rememberMachine("part.nc", machineDescriptionJson(defaultMachine()));
+  EXPECT_EQ(s.machineOf("part.nc"), "");
+  for (int k = 0; k < 25; ++k) s.rememberMachine("p" + std::to_string(k) + ".nc", machineDescriptionJson(slow));
+  EXPECT_EQ(s.programMachines.size(), 20u);
+  EXPECT_EQ(s.machineOf("p0.nc"), "");  // the oldest went first
+  const Settings broken =
+      settingsFromText(R"({"program_machines": [{"program": "/a.nc", "machine": {"cycle_s": -1}}, {"program": 3}]})");
+  EXPECT_TRUE(broken.programMachines.empty());
 }

@@ -39,7 +39,8 @@ bool withinRanges(const Settings& s) {
 bool same(const Settings& a, const Settings& b) {
   return a.recentFiles == b.recentFiles && a.quantity == b.quantity && a.colorMap == b.colorMap &&
          a.windowWidth == b.windowWidth && a.windowHeight == b.windowHeight && a.theme == b.theme &&
-         a.uiScale == b.uiScale && a.units == b.units;
+         a.uiScale == b.uiScale && a.uiScaleChosen == b.uiScaleChosen && a.units == b.units &&
+         a.programMachines == b.programMachines;
 }
 
 }  // namespace

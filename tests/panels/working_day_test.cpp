@@ -543,6 +543,36 @@ TEST(workingDay, ANewDocumentStartsAtItsTopAndFromTheDefaultView) {
   EXPECT_EQ(described(*ui)["colour"]["view"], "top");
 }
 
+// The machine a program was simulated with is remembered for it: opened again, it is simulated
+// with that machine, whatever another program was simulated with meanwhile; a program with no
+// machine of its own then opens with the default, not another program's.
+TEST(workingDay, TheMachineIsRememberedForItsProgram) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'M');
+  typeInto(*ui, "machine.velocity.x", "1500");
+  clickControl(*ui, "machine.simulate");
+  waitForJobs(*ui);
+  const std::string edited = described(*ui)["machine"]["name"];
+  ASSERT_NE(edited, defaultMachine().name);
+  EXPECT_FALSE(ui->inspector().settings().machineOf(test::sourcePath("samples/transition-surface.nc")).empty());
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));  // with the machine in use
+  waitForJobs(*ui);
+  clickControl(*ui, "machine.default");
+  clickControl(*ui, "machine.simulate");
+  waitForJobs(*ui);
+  EXPECT_EQ(described(*ui)["documents"].back()["machine"], defaultMachine().name);
+  ui->inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(*ui);
+  nlohmann::json state = described(*ui);
+  EXPECT_EQ(state["documents"].back()["machine"], edited);
+  EXPECT_EQ(state["machine_source"], "remembered for transition-surface.nc");
+  ui->inspector().open(test::sourcePath("samples/cola-bottle-bottom.nc"));
+  waitForJobs(*ui);
+  state = described(*ui);
+  EXPECT_EQ(state["documents"].back()["machine"], defaultMachine().name);
+  EXPECT_EQ(state["machine_source"], "built-in default");
+}
+
 TEST(workingDay, ARecentFileClickedOpensThatFile) {
   app_model::Settings settings;
   settings.addRecent(test::sourcePath("samples/transition-surface.nc"));

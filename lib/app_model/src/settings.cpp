@@ -2,6 +2,7 @@
 // means defaults, value by value); writing goes through a temporary file so a crash mid-write
 // never leaves a truncated settings file.
 #include "isurface/app_model/settings.h"
+#include "isurface/machine/machine.h"
 
 #include <cmath>
 #include <algorithm>
@@ -40,15 +41,43 @@ void readWindowSide(const nlohmann::json& json, const char* key, int& target) {
 
 }  // namespace
 
+namespace {
+
+constexpr std::size_t kMaxProgramMachines = 20;
+
+std::string absoluteOf(const std::string& given) {
+  std::error_code error;
+  const std::filesystem::path absolute = std::filesystem::absolute(given, error);
+  return error ? given : absolute.lexically_normal().string();
+}
+
+}  // namespace
+
 void Settings::addRecent(const std::string& given) {
   if (given.empty()) return;
   // Absolute: the application may be started from another folder next time.
-  std::error_code error;
-  const std::filesystem::path absolute = std::filesystem::absolute(given, error);
-  const std::string path = error ? given : absolute.lexically_normal().string();
+  const std::string path = absoluteOf(given);
   recentFiles.erase(std::remove(recentFiles.begin(), recentFiles.end(), path), recentFiles.end());
   recentFiles.insert(recentFiles.begin(), path);
   if (recentFiles.size() > kMaxRecentFiles) recentFiles.resize(kMaxRecentFiles);
+}
+
+void Settings::rememberMachine(const std::string& given, const std::string& machineJson) {
+  if (given.empty()) return;
+  const std::string path = absoluteOf(given);
+  programMachines.erase(std::remove_if(programMachines.begin(), programMachines.end(),
+                                       [&](const auto& entry) { return entry.first == path; }),
+                        programMachines.end());
+  if (machineJson.empty() || machineJson == machineDescriptionJson(defaultMachine())) return;
+  programMachines.insert(programMachines.begin(), {path, machineJson});
+  if (programMachines.size() > kMaxProgramMachines) programMachines.resize(kMaxProgramMachines);
+}
+
+std::string Settings::machineOf(const std::string& given) const {
+  const std::string path = absoluteOf(given);
+  for (const auto& [program, machine] : programMachines)
+    if (program == path) return machine;
+  return {};
 }
 
 std::string settingsPath() {
@@ -99,6 +128,19 @@ Settings settingsFromText(const std::string& text) {
   if (theme == "dark" || theme == "light") settings.theme = theme;
   readString(json, "units", units);
   if (units == "auto" || units == "mm" || units == "inch") settings.units = units;
+  // A machine that no longer reads as one (edited by hand, an older version's) is left out.
+  const auto machines = json.find("program_machines");
+  if (machines != json.end() && machines->is_array())
+    for (auto it = machines->rbegin(); it != machines->rend(); ++it) {
+      if (!it->is_object() || !it->contains("program") || !(*it)["program"].is_string() || !it->contains("machine") ||
+          !(*it)["machine"].is_object())
+        continue;
+      try {
+        const Machine m = parseMachine(jsonText((*it)["machine"]), "settings");
+        settings.rememberMachine((*it)["program"].get<std::string>(), machineDescriptionJson(m));
+      } catch (const InputError&) {
+      }
+    }
   const auto scale = json.find("ui_scale");
   if (scale != json.end() && scale->is_number() && scale->get<double>() >= 1.0 && scale->get<double>() <= 2.0) {
     settings.uiScale = scale->get<float>();
@@ -127,6 +169,12 @@ std::string settingsText(const Settings& settings) {
   };
   // A size the screen set is not remembered as the user's: another screen sets its own.
   if (settings.uiScaleChosen) json["ui_scale"] = settings.uiScale;
+  if (!settings.programMachines.empty()) {
+    nlohmann::json machines = nlohmann::json::array();
+    for (const auto& [program, machine] : settings.programMachines)
+      machines.push_back({{"program", program}, {"machine", nlohmann::json::parse(machine, nullptr, false)}});
+    json["program_machines"] = machines;
+  }
   // Invalid UTF-8 in a path is replaced rather than thrown: the rest still gets saved.
   return jsonText(json, 2) + "\n";
 }

@@ -56,6 +56,7 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
   // A new document's own units: as it is written, unless the user chose.
   request.inch = persistent.units == "inch";
   const bool unitsOfProgram = persistent.units == "auto";
+  useTheMachineRememberedFor(programPath, dumpPath);
   auto result = std::make_shared<JobResult>(LoadedDocument{nullptr, replaces, {}});
   pending = result;
   const std::string label = "loading " + (programPath.empty() ? dumpPath : programPath);
@@ -80,6 +81,22 @@ void Inspector::State::startLoad(const std::string& programPath, const std::stri
     }
   });
   status = label;
+}
+
+void Inspector::State::useTheMachineRememberedFor(const std::string& programPath, const std::string& dumpPath) {
+  if (programPath.empty() || !dumpPath.empty()) return;  // a dump has its own machine
+  const std::string name = std::filesystem::path(programPath).filename().string();
+  if (const std::string remembered = persistent.machineOf(programPath); !remembered.empty()) {
+    if (remembered == machineDescriptionJson(dialogs.machine.inUse)) return;  // in use already ("edited")
+    try {
+      dialogs.machine.use(parseMachine(remembered, "settings"), kRememberedFor + name);
+      return;
+    } catch (const InputError&) {
+      persistent.rememberMachine(programPath, "");  // no longer a machine: forgotten
+    }
+  }
+  // Another program's remembered machine is that program's.
+  if (dialogs.machine.source.rfind(kRememberedFor, 0) == 0) dialogs.machine.use(defaultMachine(), "built-in default");
 }
 
 void Inspector::State::startRecolour() {

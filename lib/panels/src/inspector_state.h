@@ -175,6 +175,9 @@ struct FoundRegions {
 using JobResult =
     std::variant<LoadedDocument, Recolouring, OptimisedRegion, ComparedRun, WrittenReport, LoadedFeedback, FoundRegions>;
 
+// The machine in use came from the settings, remembered for the program named after this.
+inline constexpr const char* kRememberedFor = "remembered for ";
+
 // The label of the report's job begins so.
 inline constexpr const char* kReportJob = "report on ";
 
@@ -303,6 +306,9 @@ struct Inspector::State {
   }
   vis::QualityMapRequest mapRequest() const;
   void startLoad(const std::string& programPath, const std::string& dumpPath, std::size_t replaces = ~std::size_t(0));
+  // A program to be simulated is simulated with the machine remembered for it, if any; a machine
+  // remembered for another program gives way to the default.
+  void useTheMachineRememberedFor(const std::string& programPath, const std::string& dumpPath);
   void startRecolour();
   // When the active document's feedback is not loaded but can be: starts loading it, runs
   // `then` once it is in (if that document is still the active one) and returns true. False

@@ -110,6 +110,8 @@ void drawMachineWindow(Inspector::State& s) {
     const bool simulate = ImGui::Button("Simulate with this machine");
     noteControl(s, "machine.simulate");
     if (simulate && w.apply()) {
+      // The program reopens with it next time (the default machine: nothing to remember).
+      if (simulatable) s.persistent.rememberMachine(s.activeDocument()->programPath, machineDescriptionJson(w.inUse));
       if (simulatable) s.simulateAgain();
       else w.message = "used for the next program opened: no program is open";
     }
@@ -117,6 +119,7 @@ void drawMachineWindow(Inspector::State& s) {
     if (ImGui::Button("Revert")) w.revert();
     ImGui::SameLine();
     if (ImGui::Button("Default machine")) w.edit = defaultMachine();
+    noteControl(s, "machine.default");
     ImGui::SameLine();
     const bool close = ImGui::Button("Close");
     noteControl(s, "machine.close");

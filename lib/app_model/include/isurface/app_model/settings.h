@@ -2,6 +2,7 @@
 // What the application remembers between runs: recent files, the last colour settings and the
 // window size, as JSON in $XDG_CONFIG_HOME/isurface/settings.json (~/.config/... by default).
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace isurface::app_model {
@@ -15,8 +16,15 @@ struct Settings {
   float uiScale = 1.0f;          // 1 to 2: text and controls larger on large screens
   bool uiScaleChosen = false;    // by the user (View > Text size): else the screen's density sets it
   std::string units = "auto";    // lengths shown in "mm", "inch", or as the program is written
+  // The machine each program was last simulated with when it was not the default, newest first
+  // (at most 20): the program's absolute path, and the machine's description (JSON).
+  std::vector<std::pair<std::string, std::string>> programMachines;
 
   void addRecent(const std::string& path);
+  // Remembers `machineJson` for the program at `path`; the default machine is forgotten there.
+  void rememberMachine(const std::string& path, const std::string& machineJson);
+  // The description remembered for the program at `path`, or "".
+  std::string machineOf(const std::string& path) const;
 };
 
 // The text size for a screen `pixelsWide` pixels and `millimetresWide` mm wide (0: not known),
