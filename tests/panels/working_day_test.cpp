@@ -213,6 +213,39 @@ TEST(workingDay, ASimulationIsSavedAsADumpWithItsMachine) {
   EXPECT_EQ(reopened["machine"], defaultMachine().name) << reopened.dump();
 }
 
+// A second run compared (a machine's recording, a simulation saved before) has its path speed
+// drawn over this run's, in orange, on one time axis.
+TEST(workingDay, TheSecondRunsSpeedIsDrawnOverThisRunsOnOneTimeAxis) {
+  auto ui = openedSample();
+  const auto orangeInSpeedPlot = [&ui] {
+    settle(*ui);
+    const auto plot = ui->inspector().controlRect("curves.speed");
+    EXPECT_TRUE(plot.has_value());
+    if (!plot) return std::size_t{0};
+    const std::vector<unsigned char> rgba = ui->pixels();
+    std::size_t orange = 0;
+    for (int y = int((*plot)[1]); y < int((*plot)[3]); ++y)
+      for (int x = int((*plot)[0]); x < int((*plot)[2]); ++x) {
+        const unsigned char* p = &rgba[(std::size_t(y) * kWidth + std::size_t(x)) * 4];
+        orange += p[0] > 150 && p[1] > 60 && p[1] < 175 && p[0] - p[2] > 60;
+      }
+    return orange;
+  };
+  const std::size_t before = orangeInSpeedPlot();
+  const std::filesystem::path dump = test::scratchDir() / "second-run.biip";
+  std::filesystem::remove(dump);
+  tapLetter(*ui, 'E', true);
+  clickControl(*ui, "export.dump");
+  typeInto(*ui, "export.path", dump.string());
+  clickControl(*ui, "export.write");
+  waitForJobs(*ui);
+  ui->inspector().compareWith(dump.string());
+  waitForJobs(*ui);
+  ASSERT_NE(ui->inspector().runComparison(), nullptr) << ui->inspector().statusText();
+  const std::size_t after = orangeInSpeedPlot();
+  EXPECT_GT(after, before + 300) << before << " orange pixels before, " << after << " after";
+}
+
 TEST(workingDay, CloseAndHelp) {
   auto ui = openedSample();
   tapLetter(*ui, 'H');

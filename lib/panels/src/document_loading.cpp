@@ -11,8 +11,6 @@
 
 namespace isurface::panels {
 
-namespace {
-
 // The curves read their values from the samples as a view needs them (nothing copied per
 // curve but its coarse pyramid).
 Curve curveOf(Quantity q, std::shared_ptr<const Trajectory> samples) {
@@ -23,6 +21,8 @@ Curve curveOf(Quantity q, std::shared_ptr<const Trajectory> samples) {
                  sampleQuantityRange(q, *samples, first, last, out);
                })};
 }
+
+namespace {
 
 Curve channelCurve(const std::string& name, std::shared_ptr<const Trajectory> samples) {
   const std::vector<double>* values = samples->extraChannel(name);

@@ -128,6 +128,7 @@ struct Comparison {
 struct RunComparisonView {
   std::string path;                         // run B's dump
   std::shared_ptr<const Trajectory> samples;
+  std::optional<Curve> speed;               // run B's path speed, over A's on one time axis
   RunComparison result;                     // B against the document's samples (A)
   vis::QualityMap map, differenceMap;
   std::shared_ptr<vis::QualityScene> scene, differenceScene;
@@ -439,6 +440,8 @@ void buildDifferenceView(vis::QualityMapRequest request, const vis::QualityMapRe
                          const Program* program, vis::QualityMap& map, std::shared_ptr<vis::QualityScene>& scene);
 void drawRunComparisonView(Inspector::State& s, float x, float y, float w, float h);
 
+// A curve of a quantity of the samples, read from them as a view needs it.
+Curve curveOf(Quantity q, std::shared_ptr<const Trajectory> samples);
 // Loads a document on the job's thread.
 // `machine`: what a program without a dump is simulated with. `unitsOfProgram`: the map's
 // values in inches when the program is written in inches (else as `request` says).

@@ -83,6 +83,7 @@ void Inspector::State::startRunComparison(const std::string& dumpPath) {
     view->showDifference = difference;
     const BiipReader reader(dumpPath);
     view->samples = std::make_shared<const Trajectory>(loadTrajectory(reader));
+    view->speed = curveOf(Quantity::Speed, view->samples);
     control.progress(0.3);
     view->result = compareRuns(*a, *view->samples);
     control.progress(0.5);

@@ -5,6 +5,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
+#include <functional>
 
 #include "inspector_state.h"
 
@@ -72,8 +74,31 @@ void textOnBacking(ImDrawList* draw, ImVec2 at, ImU32 colour, const char* text) 
   draw->AddText(at, colour, text);
 }
 
+// The second run's curve over the first's, on the first's time axis (each from its own start):
+// per pixel column, the second run's samples in the column's time, their lowest to highest.
+void drawOverlay(const Curve& overlay, const Trajectory& b, const Trajectory& a, std::size_t first, std::size_t last,
+                 double scale, const std::function<float(float)>& toY, ImVec2 origin, ImVec2 end) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const int columns = std::max(1, static_cast<int>(end.x - origin.x));
+  const double a0 = a.timeAt(0), bEnd = b.timeAt(b.size() - 1) - b.timeAt(0);
+  const auto timeOfColumn = [&](int c) {
+    const std::size_t i = first + static_cast<std::size_t>(double(c) / columns * double(last - first));
+    return a.timeAt(std::min(i, a.size() - 1)) - a0;
+  };
+  for (int c = 0; c < columns; ++c) {
+    const double from = timeOfColumn(c), to = timeOfColumn(c + 1);
+    if (from > bEnd) break;
+    const std::size_t i = app_model::sampleAtTime(b, from), j = app_model::sampleAtTime(b, to) + 1;
+    const auto [low, high] = overlay.values.range(i, std::min(j, b.size()));
+    if (!std::isfinite(low) || !std::isfinite(high)) continue;
+    const float px = origin.x + c + 0.5f;
+    draw->AddLine(ImVec2(px, std::max(toY(float(high * scale)), origin.y)),
+                  ImVec2(px, std::min(toY(float(low * scale)) + 1, end.y)), IM_COL32(255, 140, 60, 170));
+  }
+}
+
 void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit, const Trajectory& t,
-               ImVec2 origin, ImVec2 size) {
+               ImVec2 origin, ImVec2 size, const RunComparisonView* second = nullptr) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
@@ -99,6 +124,8 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
     draw->AddLine(ImVec2(px, std::max(toY(b), origin.y)), ImVec2(px, std::min(toY(a) + 1, end.y)),
                   IM_COL32(110, 200, 255, 255));
   }
+  if (second && second->speed && second->samples && second->samples->size() > 0)
+    drawOverlay(*second->speed, *second->samples, t, first, last, scale, toY, origin, end);
   char label[160];
   const float lineHeight = ImGui::GetTextLineHeight();
   std::vector<float> labelTops;  // of the tick labels drawn: one that would cover another is left out
@@ -119,6 +146,11 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   std::snprintf(label, sizeof label, "%s [%s]  %s .. %s", curve.label.c_str(), unit, readableValue(lo, resolution).c_str(),
                 readableValue(hi, resolution).c_str());
   textOnBacking(draw, ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
+  if (second && second->speed) {
+    const std::string name = "and " + std::filesystem::path(second->path).filename().string() + " (orange)";
+    textOnBacking(draw, ImVec2(origin.x + 8 + ImGui::CalcTextSize(label).x, origin.y + 2), IM_COL32(255, 140, 60, 255),
+                  name.c_str());
+  }
   const app_model::Selection& sel = s.selection.current();
   if (sel.sample && *sel.sample >= first && *sel.sample < last) {
     const float px = origin.x + static_cast<float>(*sel.sample - first) / (last - first) * size.x;
@@ -214,7 +246,11 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
     Curve& curve = doc->curves[k < 3 ? k : 3 + s.follow.extraCurve];
     // Speed, acceleration and jerk are lengths per time: shown in the display units.
     const double scale = k < 3 ? units.length(1.0) : 1.0;
-    drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each));
+    // The path speed of a second run compared (a machine's recording, another simulation) over
+    // this one's.
+    const RunComparisonView* second = k == 0 && s.runComparison ? s.runComparison.get() : nullptr;
+    drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each), second);
+    if (k == 0) s.chrome.controls["curves.speed"] = {origin.x, origin.y, origin.x + area.x, origin.y + each};
     origin.y += each + 4;
   }
   drawTimeAxis(*doc->samples, s.follow.curveFirst, std::max(s.follow.curveLast, s.follow.curveFirst + 1), ImVec2(origin.x, origin.y - 4), area.x);
