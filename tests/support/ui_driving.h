@@ -1,6 +1,7 @@
 #pragma once
 // Driving the headless window as a user would: clicks, key taps and typing, each followed by
 // the frames the window needs to act on them.
+#include <memory>
 #include <gtest/gtest.h>
 #include <imgui.h>
 
@@ -59,6 +60,14 @@ inline void typeInto(panels::HeadlessUi& ui, const std::string& control, const s
   tap(ui, ImGuiKey_A, true);
   ui.type(text);
   settle(ui, 2);
+}
+
+// A window of `width` x `height` with the transition sample open, simulated and mapped.
+inline std::unique_ptr<panels::HeadlessUi> openedSample(int width, int height) {
+  auto ui = std::make_unique<panels::HeadlessUi>(width, height, app_model::Settings{});
+  ui->inspector().open(sourcePath("samples/transition-surface.nc"));
+  waitForJobs(*ui);
+  return ui;
 }
 
 }  // namespace isurface::test
