@@ -7,6 +7,8 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <tuple>
+#include <limits>
 
 #include "inspector_state.h"
 
@@ -75,11 +77,16 @@ void textOnBacking(ImDrawList* draw, ImVec2 at, ImU32 colour, const char* text) 
 }
 
 // The second run's curve over the first's, on the first's time axis (each from its own start):
-// per pixel column, the second run's samples in the column's time, their lowest to highest.
-void drawOverlay(const Curve& overlay, const Trajectory& b, const Trajectory& a, std::size_t first, std::size_t last,
-                 double scale, const std::function<float(float)>& toY, ImVec2 origin, ImVec2 end) {
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  const int columns = std::max(1, static_cast<int>(end.x - origin.x));
+// per pixel column, the second run's samples in the column's time, their lowest to highest. Kept
+// in the overlay's `shown` for the first run's span and width: reading a derived quantity at
+// every column's ends costs milliseconds, too much for every frame of a camera drag.
+const app_model::Envelope& overlayEnvelope(Curve& overlay, const Trajectory& b, const Trajectory& a, std::size_t first,
+                                           std::size_t last, int columns) {
+  if (overlay.shown && overlay.shown->first == first && overlay.shown->last == last && overlay.shown->columns == columns)
+    return overlay.shown->envelope;
+  app_model::Envelope envelope;
+  envelope.low.assign(static_cast<std::size_t>(columns), std::numeric_limits<float>::quiet_NaN());
+  envelope.high = envelope.low;
   const double a0 = a.timeAt(0), bEnd = b.timeAt(b.size() - 1) - b.timeAt(0);
   const auto timeOfColumn = [&](int c) {
     const std::size_t i = first + static_cast<std::size_t>(double(c) / columns * double(last - first));
@@ -89,7 +96,19 @@ void drawOverlay(const Curve& overlay, const Trajectory& b, const Trajectory& a,
     const double from = timeOfColumn(c), to = timeOfColumn(c + 1);
     if (from > bEnd) break;
     const std::size_t i = app_model::sampleAtTime(b, from), j = app_model::sampleAtTime(b, to) + 1;
-    const auto [low, high] = overlay.values.range(i, std::min(j, b.size()));
+    std::tie(envelope.low[std::size_t(c)], envelope.high[std::size_t(c)]) = overlay.values.range(i, std::min(j, b.size()));
+  }
+  overlay.shown = Curve::Shown{first, last, columns, std::move(envelope), {}};
+  return overlay.shown->envelope;
+}
+
+void drawOverlay(Curve& overlay, const Trajectory& b, const Trajectory& a, std::size_t first, std::size_t last,
+                 double scale, const std::function<float(float)>& toY, ImVec2 origin, ImVec2 end) {
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  const int columns = std::max(1, static_cast<int>(end.x - origin.x));
+  const app_model::Envelope& envelope = overlayEnvelope(overlay, b, a, first, last, columns);
+  for (int c = 0; c < columns; ++c) {
+    const float low = envelope.low[std::size_t(c)], high = envelope.high[std::size_t(c)];
     if (!std::isfinite(low) || !std::isfinite(high)) continue;
     const float px = origin.x + c + 0.5f;
     draw->AddLine(ImVec2(px, std::max(toY(float(high * scale)), origin.y)),
@@ -98,7 +117,7 @@ void drawOverlay(const Curve& overlay, const Trajectory& b, const Trajectory& a,
 }
 
 void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit, const Trajectory& t,
-               ImVec2 origin, ImVec2 size, const RunComparisonView* second = nullptr) {
+               ImVec2 origin, ImVec2 size, RunComparisonView* second = nullptr) {
   ImDrawList* draw = ImGui::GetWindowDrawList();
   const ImVec2 end(origin.x + size.x, origin.y + size.y);
   draw->AddRectFilled(origin, end, IM_COL32(24, 26, 30, 255));
@@ -248,7 +267,7 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
     const double scale = k < 3 ? units.length(1.0) : 1.0;
     // The path speed of a second run compared (a machine's recording, another simulation) over
     // this one's.
-    const RunComparisonView* second = k == 0 && s.runComparison ? s.runComparison.get() : nullptr;
+    RunComparisonView* second = k == 0 && s.runComparison ? s.runComparison.get() : nullptr;
     drawCurve(s, curve, scale, k < 3 ? unitOf[k] : curve.unit.c_str(), *doc->samples, origin, ImVec2(area.x, each), second);
     if (k == 0) s.chrome.controls["curves.speed"] = {origin.x, origin.y, origin.x + area.x, origin.y + each};
     origin.y += each + 4;
