@@ -8,6 +8,7 @@
 #include "isurface/panels/headless_ui.h"
 #include "test_support.h"
 #include "ui_driving.h"
+#include "control_machines.h"
 
 using namespace isurface;
 using test::clickControl, test::tap, test::tapLetter, test::typeInto, test::described, test::waitForJobs;
@@ -22,6 +23,16 @@ std::unique_ptr<panels::HeadlessUi> opened(const std::string& sample) {
 }
 
 std::unique_ptr<panels::HeadlessUi> openedSample() { return opened("transition-surface.nc"); }
+
+// The transition sample simulated on a control that brakes at its chords, where its transition
+// is the worst region (control_machines.h).
+std::unique_ptr<panels::HeadlessUi> openedOnABrakingControl() {
+  auto ui = std::make_unique<panels::HeadlessUi>(1280, 800, app_model::Settings{});
+  ui->inspector().useMachine(test::machineWithoutChordSmoothing(), test::kMachineWithoutChordSmoothing);
+  ui->inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(*ui);
+  return ui;
+}
 
 }  // namespace
 
@@ -99,7 +110,7 @@ TEST(optimiseDialog, TheRegionChosenStaysForTheNextOpeningOfTheSameProgram) {
 // "Worst predicted region" holds what `optimize --auto` would take: whole passes, the figures'
 // box around the defects, said in the status.
 TEST(optimiseDialog, TheWorstPredictedRegionIsHeldWithItsBox) {
-  auto ui = openedSample();
+  auto ui = openedOnABrakingControl();
   tapLetter(*ui, 'P');
   clickControl(*ui, "optimise.worst");
   waitForJobs(*ui);  // the predicted deviation needs the feedback first

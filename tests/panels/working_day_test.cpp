@@ -15,6 +15,7 @@
 #include "workflow_fixtures.h"
 #include "isurface/io/biip.h"
 #include "isurface/machine/machine.h"
+#include "control_machines.h"
 #include "isurface/panels/headless_ui.h"
 #include "scratch_files.h"
 #include "test_support.h"
@@ -457,8 +458,10 @@ TEST(workingDay, EscapeClosesHelp) {
 // A kept program that was not saved lives only in the window: Close asks before letting it go,
 // and once it is saved Close closes.
 TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
-  // The CAM-style program's fillet (its worst region's lines), which the closed loop keeps.
+  // The CAM-style program's fillet (its worst region's lines), which the closed loop keeps on a
+  // control that brakes at its chords.
   auto ui = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
+  ui->inspector().useMachine(test::machineWithoutChordSmoothing(), test::kMachineWithoutChordSmoothing);
   ui->inspector().open(test::writeScratch("cam-style-kept.nc", isurface::testing::camStyleTransitionProgram()));
   waitForJobs(*ui);
   ui->inspector().optimise(10, 617);

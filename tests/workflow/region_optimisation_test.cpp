@@ -13,11 +13,14 @@
 #include "isurface/optimise/polyline_distance.h"
 #include "isurface/workflow/region_optimisation.h"
 #include "cam_style_transition.h"
+#include "control_machines.h"
 #include "workflow_fixtures.h"
 
 using namespace isurface;
 using namespace isurface::test;
 
+// The optimiser's flow is shown on a control that brakes at chord junctions, as the paper's NC
+// system does: the default machine's control runs these chords smoothly and leaves it little to do.
 namespace {
 
 struct Transition {
@@ -32,7 +35,7 @@ const Transition& transition() {
     const std::string path = sourcePath("samples/transition-surface.nc");
     made.text = readFile(path);
     made.program = readProgram(path);
-    made.before = surfaceRun(std::make_shared<const Trajectory>(simulateRun(made.program, defaultMachine())),
+    made.before = surfaceRun(std::make_shared<const Trajectory>(simulateRun(made.program, machineWithoutChordSmoothing())),
                              &made.program);
     return made;
   }();
@@ -42,7 +45,7 @@ const Transition& transition() {
 RegionOptimisation optimise(LineRange lines) {
   RegionRequest request;
   request.lines = lines;
-  return optimiseRegion(transition().text, transition().program, transition().before, defaultMachine(), request);
+  return optimiseRegion(transition().text, transition().program, transition().before, machineWithoutChordSmoothing(), request);
 }
 
 }  // namespace
@@ -100,12 +103,12 @@ TEST(regionOptimisationLong, ACandidateNoWorseOnAnyFigureIsKept) {
   // The worst region of another sample, as --auto takes it: better on every figure, not slower.
   const std::string path = sourcePath("samples/wuzhishan.nc");
   const Program program = readProgram(path);
-  const SurfaceRun before = surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+  const SurfaceRun before = surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, machineWithoutChordSmoothing())), &program);
   const ChosenRegion worst = worstRegion(before, path);
   RegionRequest request;
   request.lines = worst.lines;
   request.box = std::make_pair(worst.lower, worst.upper);
-  const RegionOptimisation r = optimiseRegion(readFile(path), program, before, defaultMachine(), request);
+  const RegionOptimisation r = optimiseRegion(readFile(path), program, before, machineWithoutChordSmoothing(), request);
   EXPECT_TRUE(r.kept) << r.reason;
   EXPECT_FALSE(whyNotKept(r).has_value());
   EXPECT_LE(r.timeAfter, r.timeBefore);
@@ -171,7 +174,7 @@ TEST(regionOptimisationLong, ACandidateThatWritesAnEarlierOnesProgramIsNotSimula
   std::vector<std::string> told;  // what a progress display is told, candidate by candidate
   request.onCandidate = [&told](const std::string& which) { told.push_back(which); };
   const RegionOptimisation r =
-      optimiseRegion(transition().text, transition().program, transition().before, defaultMachine(), request);
+      optimiseRegion(transition().text, transition().program, transition().before, machineWithoutChordSmoothing(), request);
   ASSERT_FALSE(r.candidates.empty());
   for (const RegionOptimisation::Outcome& c : r.candidates)
     EXPECT_EQ(c.plan.find("planned across passes"), std::string::npos) << c.plan;
@@ -210,10 +213,10 @@ std::string noisyRelief(bool zigZag) {
 
 RegionOptimisation optimiseWhole(const std::string& text, const Program& program) {
   const SurfaceRun before =
-      surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+      surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, machineWithoutChordSmoothing())), &program);
   RegionRequest request;
   request.lines = wholeProgramRegion(before, "relief.nc").lines;
-  return optimiseRegion(text, program, before, defaultMachine(), request);
+  return optimiseRegion(text, program, before, machineWithoutChordSmoothing(), request);
 }
 
 }  // namespace
@@ -236,7 +239,7 @@ TEST(regionOptimisation, PointsDrawnTautRunFasterWithinTheirTube) {
   OptimizeOptions options;
   options.shape = PathShape::DrawnTaut;
   options.programmedFeed = true;
-  const OptimizeResult drawn = optimizeRegion(text, program, r.lines, defaultMachine(), options);
+  const OptimizeResult drawn = optimizeRegion(text, program, r.lines, machineWithoutChordSmoothing(), options);
   const Program after = interpretGcode(drawn.text, "zig-zag-relief.nc").program;
   auto cuttingPoints = [](const Program& p) {
     std::vector<Vec3> points;
@@ -280,7 +283,7 @@ TEST(regionOptimisation, WithoutABoxEveryCandidateIsMeasuredInTheFirstOnesBox) {
   const RegionOptimisation r = optimiseWhole(text, program);
   ASSERT_TRUE(r.kept) << r.reason;
   ASSERT_NE(r.plan, r.candidates.front().plan);  // a later candidate is the one chosen
-  const OptimizeResult paper = optimizeRegion(text, program, r.lines, defaultMachine(), OptimizeOptions{});
+  const OptimizeResult paper = optimizeRegion(text, program, r.lines, machineWithoutChordSmoothing(), OptimizeOptions{});
   EXPECT_EQ(r.lower, paper.fittedLower);
   EXPECT_EQ(r.upper, paper.fittedUpper);
   EXPECT_TRUE(r.result.fittedLower != r.lower || r.result.fittedUpper != r.upper)
@@ -304,10 +307,10 @@ TEST(regionOptimisation, EasedRampsAreTriedAsGentleAsTheTimeAllows) {
   const std::string text = isurface::testing::camStyleTransitionProgram();
   const Program program = interpretGcode(text, "cam-style-transition.nc").program;
   const SurfaceRun before =
-      surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, defaultMachine())), &program);
+      surfaceRun(std::make_shared<const Trajectory>(simulateRun(program, machineWithoutChordSmoothing())), &program);
   RegionRequest request;
   request.lines = worstRegion(before, "cam-style-transition.nc").lines;
-  const RegionOptimisation r = optimiseRegion(text, program, before, defaultMachine(), request);
+  const RegionOptimisation r = optimiseRegion(text, program, before, machineWithoutChordSmoothing(), request);
   ASSERT_TRUE(r.kept) << r.reason;
   EXPECT_LE(r.timeAfter, r.timeBefore);
   const std::vector<double> listed = {750, 500, 350, 250, 200, 150, 100};
@@ -368,7 +371,7 @@ TEST(regionOptimisation, TheWorstRegionTakesEveryPassJoinedToItAndNoOther) {
   const InterpretResult read = interpretGcode(text, "two-rasters.nc");
   ASSERT_TRUE(read.ok()) << read.errors.front().str();
   const SurfaceRun before =
-      surfaceRun(std::make_shared<const Trajectory>(simulateRun(read.program, defaultMachine())), &read.program);
+      surfaceRun(std::make_shared<const Trajectory>(simulateRun(read.program, machineWithoutChordSmoothing())), &read.program);
   const ChosenRegion worst = worstRegion(before, "two-rasters.nc");
   // Its box is the defect's, a part of the first raster's passes.
   const bool inFar = worst.lower.y() >= 39;

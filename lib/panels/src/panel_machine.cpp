@@ -105,6 +105,10 @@ void drawMachineWindow(Inspector::State& s) {
     editScaled("rapid [mm/min]", w.edit.rapidVelocity, kSecondsPerMinute, "%.0f");
     ImGui::SameLine();
     editScaled("chord tolerance [mm]", w.edit.chordTolerance, 1.0, "%.4f");
+    if (w.edit.control.planner == TrajectoryPlanner::Generic) {
+      ImGui::Checkbox("smooth chords within the tolerance (the control's compressor)", &w.edit.control.chordSmoothing);
+      noteControl(s, "machine.chordSmoothing");
+    }
     drawAxisTable(s);
     const bool simulatable = s.activeDocument() && !s.activeDocument()->programPath.empty();
     const bool simulate = ImGui::Button("Simulate with this machine");

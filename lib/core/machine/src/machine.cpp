@@ -229,8 +229,8 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
     const json& c = root["control"];
     if (!c.is_object()) fail(source, "control must be an object");
     rejectUnknownKeys(c,
-                      {"dialect", "planner", "acceleration_rise_time_s", "units_at_power_on", "plane_at_power_on",
-                       "distance_at_power_on", "subroutine_path"},
+                      {"dialect", "planner", "acceleration_rise_time_s", "chord_smoothing", "units_at_power_on",
+                       "plane_at_power_on", "distance_at_power_on", "subroutine_path"},
                       "control.", source);
     if (c.contains("planner")) {
       const std::string p = c["planner"].is_string() ? c["planner"].get<std::string>() : "";
@@ -242,6 +242,10 @@ Machine parseOnto(const Machine& base, const std::string& text, const std::strin
       m.control.accelerationRiseTime = number(c, "acceleration_rise_time_s", 0.0, source, "control.");
       if (m.control.accelerationRiseTime < 0 || m.control.accelerationRiseTime > 1.0)
         fail(source, "control.acceleration_rise_time_s must be from 0 to 1 s");
+    }
+    if (c.contains("chord_smoothing")) {
+      if (!c["chord_smoothing"].is_boolean()) fail(source, "control.chord_smoothing must be true or false");
+      m.control.chordSmoothing = c["chord_smoothing"].get<bool>();
     }
     if (c.contains("dialect")) {
       const std::string d = c["dialect"].is_string() ? c["dialect"].get<std::string>() : "";

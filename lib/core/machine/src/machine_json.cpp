@@ -31,7 +31,8 @@ json limitsJson(const Machine& m) {
           {"chord_tolerance_mm", m.chordTolerance},
           {"axes", axes},
           {"control", {{"planner", plannerName(m.control.planner)},
-                       {"acceleration_rise_time_s", m.control.accelerationRiseTime}}}};
+                       {"acceleration_rise_time_s", m.control.accelerationRiseTime},
+                       {"chord_smoothing", m.control.chordSmoothing}}}};
 }
 
 const char* planeName(Plane p) { return p == Plane::XY ? "G17" : p == Plane::ZX ? "G18" : "G19"; }
@@ -47,6 +48,7 @@ std::string machineDescriptionJson(const Machine& m) {
                                     {"g30", {m.g30Position.x(), m.g30Position.y(), m.g30Position.z()}}};
   json control = {{"planner", plannerName(m.control.planner)},
                   {"acceleration_rise_time_s", m.control.accelerationRiseTime},
+                  {"chord_smoothing", m.control.chordSmoothing},
                   {"dialect", m.control.fanuc ? "fanuc" : "linuxcnc"},
                   {"units_at_power_on", m.control.inch ? "inch" : "mm"}};
   if (m.control.modesNamed) {

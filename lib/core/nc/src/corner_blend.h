@@ -10,6 +10,8 @@
 #include "isurface/base/geometry.h"
 #include "isurface/gcode/path_segment.h"
 
+#include "chord_spline.h"
+
 namespace isurface {
 
 class CornerBlend {
@@ -44,19 +46,23 @@ class CornerBlend {
 PathSegment shortenedLine(const PathSegment& move, double trimStart, double trimEnd);
 
 // A piece of the generic control's path: a program move (a line possibly shortened at its ends
-// by the blends next to it) or a corner blend.
+// by the blends next to it), a corner blend, or a chord run as a curve.
 class PathPiece {
  public:
   PathPiece() = default;
   explicit PathPiece(const PathSegment& move) : segment_(move) {}
   explicit PathPiece(const CornerBlend& blend) : blend_(blend) {}
-  Vec3 at(double s) const { return blend_ ? blend_->at(s) : segment_.at(s); }
-  Vec3 end() const { return blend_ ? blend_->end() : segment_.end; }
-  Vec3 endTangent() const { return blend_ ? blend_->tangentAt(blend_->length()) : segment_.endTangent(); }
+  explicit PathPiece(const ChordSpline& curve) : curve_(curve) {}
+  Vec3 at(double s) const { return blend_ ? blend_->at(s) : curve_ ? curve_->at(s) : segment_.at(s); }
+  Vec3 end() const { return blend_ ? blend_->end() : curve_ ? curve_->end() : segment_.end; }
+  Vec3 endTangent() const {
+    return blend_ ? blend_->tangentAt(blend_->length()) : curve_ ? curve_->endTangent() : segment_.endTangent();
+  }
 
  private:
   PathSegment segment_;
   std::optional<CornerBlend> blend_;
+  std::optional<ChordSpline> curve_;
 };
 
 }  // namespace isurface

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 
 #include "isurface/base/diagnostic.h"
@@ -11,6 +12,7 @@
 #include "isurface/base/units.h"
 #include "isurface/gcode/path_segment.h"
 
+#include "chord_run.h"
 #include "corner_blend.h"
 #include "generic_limits.h"
 
@@ -24,6 +26,12 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 // A single move or dwell longer than this (s) is a mistake in the program, not machining: it
 // would make billions of samples.
 constexpr double kLongestMove = 24 * 3600.0;
+// A G1 move is a chord of a curve the control may smooth when it is at most this long (mm), and
+// two chords join in a curve when they turn by at most this much (rad): CAM chords of a finishing
+// pass are 0.01-2 mm and turn by a few degrees; a longer move or a sharper turn is the
+// program's own corner.
+constexpr double kLongestChord = 5.0;
+constexpr double kLargestChordTurn = 0.35;
 
 std::string speedName(float feedMmMin) {
   return feedMmMin < 0 ? std::string("at the machine's rapid speed") : fmt::format("at F{:g}", feedMmMin);
@@ -48,7 +56,8 @@ class Planner {
   std::uint64_t closedSegments() const { return closedSegments_; }
   bool finished() const { return finished_; }
 
-  // Move `index`, which starts at `start`.
+  // Move `index`, which starts at `start`. A chord the control may run as a curve waits for the
+  // move after it, which sets the curve's direction at its end.
   void add(std::uint32_t index, const Move& move, const Vec3& start) {
     if (move.kind == MoveKind::Dwell) {
       const double seconds = std::max(0.0, move.dwellSeconds());
@@ -56,6 +65,7 @@ class Planner {
         throw InputError(Diagnostic{source_, move.line, move.column,
                                     fmt::format("a dwell of {:.4g} s is longer than {:.0f} h: not a real program",
                                                 seconds, kLongestMove / 3600)});
+      endRun();
       if (segments_ == 0) holdBefore_ += seconds;
       else window_.back().planned.holdAfter += seconds;
       stopAtJunction();
@@ -63,33 +73,25 @@ class Planner {
     }
     const PathSegment seg = PathSegment::from(start, move);
     if (seg.length > 0) {
-      double reach = 0;
-      if (segments_ > 0) {
-        double hold = 0;
-        const double limit = limits_.cornerLimit(previous_, seg, window_.back().planned.accel, hold, junctionRadius_);
-        // A blend where it passes the corner faster than the filters' rounding of it does; none
-        // at a rapid or where a stop is planned.
-        const bool blendable = !stopped_ && junctionLimit_ > 0 && !previousRapid_ && move.kind != MoveKind::Rapid;
-        const BlendChoice blend = blendable ? limits_.blendAt(previous_, seg, move) : BlendChoice{};
-        if (blend.reach > 0 && blend.speed > limit) {
-          reach = blend.reach;
-          junctionRadius_ = kInfinity;
-          addBlend(index, move, seg, blend);
-        } else if (limit > 0) {
-          junctionLimit_ = std::min(junctionLimit_, limit);
-        } else {
-          stopAtJunction(hold);
-        }
+      if (smoothsChords_ && isChord(move, seg)) {
+        if (!run_.empty() && !chordsJoinSmoothly(lastChord_, seg)) endRun();
+        run_.push(index, move, seg);
+        lastChord_ = seg;
+        planSettledChords();
+      } else {
+        endRun();
+        addPiece(index, move, seg, nullptr);
       }
-      addSegment(index, move, reach > 0 ? shortenedLine(seg, reach, 0.0) : seg, reach);
-      previous_ = seg;
-      previousRapid_ = move.kind == MoveKind::Rapid;
     }
-    if (move.flags & (kExactStop | kStopAfter)) stopAtJunction();
+    if (move.flags & (kExactStop | kStopAfter)) {
+      endRun();
+      stopAtJunction();
+    }
   }
 
   // The program has ended: the machine comes to rest after the last segment.
   void finish() {
+    endRun();
     finished_ = true;
     if (segments_ == 0) return;
     close(window_.back(), 0.0, junctionRadius_);  // v[n] = 0
@@ -168,6 +170,89 @@ class Planner {
     float feedMmMin = 0;      // mm/min, its move's F word as programmed (for messages); < 0: a rapid
     std::uint16_t column = 0; // of its move, for messages
   };
+
+  // A G1 chord that may join its neighbours in a curve (chord_spline.h), and whether two may.
+  static bool isChord(const Move& move, const PathSegment& seg) {
+    return move.kind == MoveKind::Linear && seg.length <= kLongestChord;
+  }
+  static bool chordsJoinSmoothly(const PathSegment& in, const PathSegment& out) {
+    return in.direction.dot(out.direction) >= std::cos(kLargestChordTurn);
+  }
+
+  // The run of chords ends at the last one pushed.
+  void endRun() {
+    if (run_.empty()) return;
+    run_.end();
+    planSettledChords();
+  }
+
+  // Plans the chords of the run whose curve is settled. Each is run as the curve through its
+  // fitted ends where that stays within the machine's tolerance of the chord; else as the
+  // straight line between the same ends, turning at them as at any corner.
+  void planSettledChords() {
+    run_.take(fitted_);
+    for (const FittedChord& c : fitted_) {
+      if (!c.start || !c.end) {
+        addPiece(c.index, c.move, c.seg, nullptr);
+        continue;
+      }
+      std::array<float, 18> packed = packCurve(*c.start, *c.end);
+      ChordSpline curve = curveOf(c.seg, packed);
+      if (!curve.wellFormed() || !(curve.farthestFrom(c.seg.start, c.seg.end) <= limits_.smoothingTolerance())) {
+        CurveEnd start = *c.start, end = *c.end;
+        start.knot = end.knot = ChordKnot::straight(c.seg.start + start.offset, c.seg.end + end.offset);
+        packed = packCurve(start, end);
+        curve = curveOf(c.seg, packed);
+      }
+      addPiece(c.index, c.move, c.seg, &curve);
+      window_.back().planned.smooth = true;
+      window_.back().planned.chordCurve = packed;
+    }
+    fitted_.clear();
+  }
+
+  // A move's segment, after its start junction: run as `curve` where it is not null.
+  void addPiece(std::uint32_t index, const Move& move, const PathSegment& seg, const ChordSpline* curve) {
+    const Vec3 startTangent = curve ? curve->startTangent() : seg.startTangent();
+    double reach = 0;
+    if (segments_ > 0) {
+      double hold = 0;
+      const GenericLimits::Junction junction{previousEndTangent_, startTangent,
+                                             !previousCurve_ && !curve && !previous_.arc && !seg.arc};
+      const double limit =
+          limits_.cornerLimit(previous_, seg, junction, window_.back().planned.accel, hold, junctionRadius_);
+      // A blend where it passes the corner faster than the filters' rounding of it does; none
+      // at a rapid or where a stop is planned.
+      const bool blendable = machine_.control.chordSmoothing && !stopped_ && junctionLimit_ > 0 && !previousRapid_ &&
+                             move.kind != MoveKind::Rapid && !previousCurve_ && !curve;
+      const BlendChoice blend = blendable ? limits_.blendAt(previous_, seg, move) : BlendChoice{};
+      if (blend.reach > 0 && blend.speed > limit) {
+        reach = blend.reach;
+        junctionRadius_ = kInfinity;
+        addBlend(index, move, seg, blend);
+      } else if (limit > 0) {
+        junctionLimit_ = std::min(junctionLimit_, limit);
+      } else {
+        stopAtJunction(hold);
+      }
+    }
+    if (curve) addCurve(index, move, *curve);
+    else addSegment(index, move, reach > 0 ? shortenedLine(seg, reach, 0.0) : seg, reach);
+    previous_ = seg;
+    previousEndTangent_ = curve ? curve->endTangent() : seg.endTangent();
+    previousCurve_ = curve != nullptr;
+    previousRapid_ = move.kind == MoveKind::Rapid;
+  }
+
+  void addCurve(std::uint32_t index, const Move& move, const ChordSpline& curve) {
+    Entry e;
+    PlannedSegment& ps = e.planned;
+    ps.move = index;
+    ps.length = curve.length();
+    ps.accel = limits_.chordCurveAccel(curve);
+    const double radius = curve.largestCurvature() > 0 ? 1.0 / curve.largestCurvature() : kInfinity;
+    append(e, move, limits_.chordCurveSpeed(curve, move), limits_.curveAccelLimit(radius, limits_.smoothingTolerance()));
+  }
 
   // The machine comes to rest at the current junction and waits `hold` seconds; by default
   // until the filters have drained, so that the corner is reached exactly (an exact stop, as
@@ -288,7 +373,15 @@ class Planner {
   std::uint64_t closedSegments_ = 0;  // segments closed
   std::size_t forcedCommits_ = 0;
   PathSegment previous_;              // the last segment added (whole, before blends shortened it)
+  Vec3 previousEndTangent_ = Vec3::Zero();  // the path's direction where it ends
+  bool previousCurve_ = false;        // it is run as a chord curve
   bool previousRapid_ = false;
+  // The generic control runs chords as curves where the machine's jerk is limited (without a
+  // jerk limit, corner blends hold the feed on chords: corner_blend.h).
+  const bool smoothsChords_ = machine_.control.chordSmoothing && machine_.jerkLimited();
+  ChordRun run_{0.5 * limits_.smoothingTolerance()};
+  PathSegment lastChord_;              // the last chord pushed into the run
+  std::vector<FittedChord> fitted_;    // planSettledChords()'s, kept for its room
   // The junction after the last segment added (before the first: the start), until the next
   // segment is added: its speed limit and, between lines, its three-point radius (mm).
   double junctionLimit_ = 0.0;        // the machine starts at rest

@@ -107,6 +107,19 @@ double GenericLimits::segmentSpeed(const PathSegment& seg, const Move& move) con
                                         true, smoothingTolerance_));
 }
 
+double GenericLimits::chordCurveSpeed(const ChordSpline& curve, const Move& move) const {
+  const auto& ax = machine_.axes;
+  const double speed = std::min(mmPerMinToMmPerS(static_cast<double>(move.feed)),
+                                projectedLimit(curve.largestDirection(), [&](int a) { return ax[a].maxVelocity; }));
+  const double radius = curve.largestCurvature() > 0 ? 1.0 / curve.largestCurvature() : kInfinity;
+  return std::min(speed, curvatureLimit(radius, minAcceleration(machine_), filterAccel_.minCoeff(), true,
+                                        smoothingTolerance_));
+}
+
+double GenericLimits::chordCurveAccel(const ChordSpline& curve) const {
+  return projectedLimit(curve.largestDirection(), [&](int a) { return rampAccel_[a]; });
+}
+
 double GenericLimits::blendAccel(const CornerBlend& blend) const {
   return inPlaneLimit(blend.normal(), [&](int a) { return rampAccel_[a]; });
 }
@@ -153,9 +166,9 @@ double GenericLimits::curveAccelLimit(double radius, double tolerance) const {
   return s4 > 0 && radius > 0 ? 2.0 * std::sqrt(radius * tolerance / s4) : kInfinity;
 }
 
-double GenericLimits::cornerLimit(const PathSegment& in, const PathSegment& out, double accelIn, double& hold,
-                                  double& radius) const {
-  const Vec3 turn = out.startTangent() - in.endTangent();
+double GenericLimits::cornerLimit(const PathSegment& in, const PathSegment& out, const Junction& junction,
+                                  double accelIn, double& hold, double& radius) const {
+  const Vec3 turn = junction.outTangent - junction.inTangent;
   const double turnNorm = turn.norm();
   double v = kInfinity;
   if (turnNorm > kRoundingSlack) {
@@ -174,8 +187,8 @@ double GenericLimits::cornerLimit(const PathSegment& in, const PathSegment& out,
     //   |turn| / 2 * (v (T1 + T2) / 4 + a (T1^2 + T2^2) / 24).
     const double accel =
         machine_.jerkLimited()
-            ? std::max(projectedLimit(in.endTangent(), [&](int a) { return filterAccel_[a]; }),
-                       projectedLimit(out.startTangent(), [&](int a) { return filterAccel_[a]; }))
+            ? std::max(projectedLimit(junction.inTangent, [&](int a) { return filterAccel_[a]; }),
+                       projectedLimit(junction.outTangent, [&](int a) { return filterAccel_[a]; }))
             : std::max(accelIn, tangentialAccel(out));
     const double budget = 2.0 * smoothingTolerance_ / turnNorm - accel * (t1_ * t1_ + t2_ * t2_) / 24.0;
     if (budget <= 0) {
@@ -190,7 +203,7 @@ double GenericLimits::cornerLimit(const PathSegment& in, const PathSegment& out,
     }
     v = std::min(v, 4.0 * budget / (t1_ + t2_));
   }
-  if (!in.arc && !out.arc) {
+  if (junction.betweenLines) {
     // Short G1 moves approximate a curve: its radius from three points limits the speed.
     radius = threePointRadius(in.start, in.end, out.end);
     v = std::min(v, curvatureLimit(radius, minAcceleration(machine_), filterAccel_.minCoeff(), false,

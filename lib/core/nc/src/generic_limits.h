@@ -7,6 +7,7 @@
 #include "isurface/machine/machine.h"
 #include "isurface/nc/feed_plan.h"
 
+#include "chord_spline.h"
 #include "corner_blend.h"
 
 namespace isurface {
@@ -37,9 +38,20 @@ class GenericLimits {
 
   // The speed (mm/s) at which the corner where `in` ends and `out` starts may be passed; 0 where
   // it is too sharp to pass in motion: then stop there for `hold` seconds. `accelIn`: the ramps'
-  // acceleration on `in`. Between lines, `radius` is the circle's through three points (mm).
-  double cornerLimit(const PathSegment& in, const PathSegment& out, double accelIn, double& hold,
-                     double& radius) const;
+  // acceleration on `in`. `junction`: the path's directions there (a chord curve's, where one
+  // side is run as one); between two straight lines, `radius` is the circle's through three
+  // points (mm).
+  struct Junction {
+    Vec3 inTangent, outTangent;
+    bool betweenLines;
+  };
+  double cornerLimit(const PathSegment& in, const PathSegment& out, const Junction& junction, double accelIn,
+                     double& hold, double& radius) const;
+  // A run of chords as a curve (chord_spline.h): its speed limit (mm/s; its feed, the axes'
+  // speeds along its steepest directions, its tightest curvature) and its ramps' acceleration
+  // (mm/s^2).
+  double chordCurveSpeed(const ChordSpline& curve, const Move& move) const;
+  double chordCurveAccel(const ChordSpline& curve) const;
   BlendChoice blendAt(const PathSegment& in, const PathSegment& out, const Move& move) const;
   // The ramps' acceleration on a blend, mm/s^2.
   double blendAccel(const CornerBlend& blend) const;

@@ -13,6 +13,7 @@
 #include "isurface/gcode/path_segment.h"
 #include "isurface/nc/servo.h"
 
+#include "chord_run.h"
 #include "corner_blend.h"
 
 namespace isurface {
@@ -153,7 +154,10 @@ class ProfileWalker {
     const std::optional<CornerBlend> blend =
         s.cornerReach > 0 ? CornerBlend::at(q.start, incoming_, move_.direction, s.cornerReach) : std::nullopt;
     inBlend_ = blend.has_value();
-    geometry_ = blend ? PathPiece(*blend) : PathPiece(shortenedLine(move_, s.trimStart, s.trimEnd));
+    if (s.smooth)
+      geometry_ = PathPiece(curveOf(move_, s.chordCurve));
+    else
+      geometry_ = blend ? PathPiece(*blend) : PathPiece(shortenedLine(move_, s.trimStart, s.trimEnd));
     incoming_ = geometry_.endTangent();
     tAccel_ = s.accelTime();
     tCruise_ = s.cruiseTime();

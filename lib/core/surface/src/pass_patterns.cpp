@@ -170,6 +170,8 @@ namespace {
 // Turning of the horizontal heading that closes a loop, and how far past it the end is sought.
 constexpr double kTurnToSeek = 1.75 * kPi;
 constexpr double kTurnLimit = 2.25 * kPi;
+// mm of path, seen from above, before a loop's end that give its closing heading.
+constexpr double kClosingStretch = 0.3;
 
 struct Turn {
   std::size_t end = 0;     // the sample nearest the start after about one turn (exclusive end - 1)
@@ -231,6 +233,19 @@ Turn walkOneTurn(const Trajectory& s, std::size_t start, std::size_t runEnd) {
     bestLength = cornerLength;
   }
   if (turn.complete) {
+    // The loop's heading over its last stretch, not its last step's: where the control rounds
+    // the corner into the link, the sample nearest the start may lie a few micrometres into the
+    // link, heading its way.
+    std::size_t from = turn.end;
+    double back = 0;
+    while (from > start && back < kClosingStretch) {
+      --from;
+      back = std::hypot(s.x[turn.end] - s.x[from], s.y[turn.end] - s.y[from]);
+    }
+    if (back >= kClosingStretch && std::isfinite(back)) {
+      bestHx = s.x[turn.end] - s.x[from];
+      bestHy = s.y[turn.end] - s.y[from];
+    }
     const double h = std::sqrt(bestHx * bestHx + bestHy * bestHy);
     turn.closingX = bestHx / h;
     turn.closingY = bestHy / h;
@@ -261,8 +276,9 @@ std::size_t skipLink(const Trajectory& s, std::size_t from, std::size_t runEnd, 
       const bool steep = std::fabs(dz) > xy;
       const double c = xy > kLengthEpsilon ? (dx * turn.closingX + dy * turn.closingY) / xy : 0;
       const bool parallel = !steep && std::fabs(c) >= backCos;
-      // This step crosses into the next loop: its end is the loop's first sample.
-      if (left && parallel) return i + 1;
+      // The heading has come back: the link's last step ended at this step's start, the loop's
+      // first sample.
+      if (left && parallel) return i;
       if (steep || c < leaveCos) left = true;
     }
     length += l;

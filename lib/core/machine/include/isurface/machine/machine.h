@@ -33,6 +33,11 @@ struct ControlModes {
   // an acceleration leaves it as it is. A description that does not give it gets the largest a / j
   // of its own axes; 0 without a jerk limit.
   double accelerationRiseTime = 0;
+  // The generic control smooths the path within its tolerance before interpolating, as modern
+  // controls' compressors do: corner blends between chords without a jerk limit, a curve through
+  // runs of chords with one. Off: each chord is planned as programmed and its junctions braked
+  // for, as a control without a compressor (the paper's NC system) runs them.
+  bool chordSmoothing = true;
   bool fanuc = false;  // Fanuc and Haas (else RS274/NGC as LinuxCNC reads it)
   bool inch = false;   // G20 at power-on
   Plane plane = Plane::XY;    // G17 at power-on

@@ -12,6 +12,7 @@
 //     corner so that corners, too, have bounded jerk. The filters move samples off the
 //     programmed path at corners and on curves; the limits of stage 1 keep that deviation
 //     within the machine's chord tolerance.
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <memory>
@@ -54,6 +55,11 @@ struct PlannedSegment {
   // each from the corner.
   double trimStart = 0, trimEnd = 0;
   double cornerReach = 0;
+  // With a jerk limit, the generic control runs a run of short G1 chords as a curve through
+  // their points (`chord_run.h`): where `smooth`, this segment is its whole move as that curve,
+  // whose ends are packed here (offset from the move's end points, mm; tangent; curvature, 1/mm).
+  bool smooth = false;
+  std::array<float, 18> chordCurve{};
 
   double accelTime() const { return accel > 0 ? (peakSpeed - entrySpeed) / accel : 0; }
   double decelTime() const { return accel > 0 ? (peakSpeed - exitSpeed) / accel : 0; }

@@ -1,0 +1,120 @@
+#include "chord_spline.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace isurface {
+
+namespace {
+
+// Gauss-Legendre nodes and weights on [0, 1], three points: exact for the length of a quintic
+// piece this close to straight to well below a nanometre per span.
+constexpr double kNodes[3] = {0.1127016653792583, 0.5, 0.8872983346207417};
+constexpr double kWeights[3] = {5.0 / 18.0, 8.0 / 18.0, 5.0 / 18.0};
+// Samples per piece where its curvature, deviation and directions are looked at.
+constexpr int kLooks = 32;
+
+}  // namespace
+
+ChordKnot ChordKnot::straight(const Vec3& from, const Vec3& to) {
+  ChordKnot k;
+  const Vec3 d = to - from;
+  if (d.norm() > 0) k.tangent = d.normalized();
+  return k;
+}
+
+ChordKnot ChordKnot::through(const Vec3& previous, const Vec3& point, const Vec3& next) {
+  const Vec3 u = previous - point, w = next - point;
+  const Vec3 normal = u.cross(w);
+  const double lengths = u.norm() * w.norm() * (next - previous).norm();
+  if (!(normal.norm() > kCollinearRelative * lengths) || lengths == 0) return straight(previous, next);
+  // The circumcentre relative to `point`.
+  const Vec3 centre = (u.squaredNorm() * w - w.squaredNorm() * u).cross(normal) / (2.0 * normal.squaredNorm());
+  ChordKnot k;
+  k.curvature = centre / centre.squaredNorm();
+  const Vec3 inward = centre.normalized();
+  const Vec3 along = next - previous;
+  k.tangent = (along - along.dot(inward) * inward).normalized();
+  return k;
+}
+
+ChordSpline::ChordSpline(const Vec3& start, const ChordKnot& startKnot, const Vec3& end, const ChordKnot& endKnot) {
+  // Quintic Hermite in u in [0, 1]: p(0), p'(0) = h T0, p''(0) = h^2 K0 and the same at u = 1,
+  // h the chord. With p'' normal to p' at the ends, the curvature there is |K| exactly.
+  const double h = (end - start).norm();
+  const Vec3 p0 = start, p1 = end;
+  const Vec3 d0 = h * startKnot.tangent, d1 = h * endKnot.tangent;
+  const Vec3 a0 = h * h * startKnot.curvature, a1 = h * h * endKnot.curvature;
+  c_[0] = p0;
+  c_[1] = d0;
+  c_[2] = 0.5 * a0;
+  c_[3] = -10.0 * p0 - 6.0 * d0 - 1.5 * a0 + 0.5 * a1 - 4.0 * d1 + 10.0 * p1;
+  c_[4] = 15.0 * p0 + 8.0 * d0 + 1.5 * a0 - a1 + 7.0 * d1 - 15.0 * p1;
+  c_[5] = -6.0 * p0 - 3.0 * d0 - 0.5 * a0 + 0.5 * a1 - 3.0 * d1 + 6.0 * p1;
+
+  cumulative_[0] = 0;
+  for (int i = 0; i < kSpans; ++i) {
+    double span = 0;
+    for (int g = 0; g < 3; ++g) span += kWeights[g] * derivative((i + kNodes[g]) / kSpans).norm();
+    cumulative_[i + 1] = cumulative_[i] + span / kSpans;
+  }
+  const Vec3 chordDirection = h > 0 ? Vec3((p1 - p0) / h) : Vec3::Zero();
+  for (int i = 0; i <= kLooks; ++i) {
+    const double u = static_cast<double>(i) / kLooks;
+    const Vec3 d = derivative(u);
+    if (!(d.dot(chordDirection) >= 0.5 * h)) wellFormed_ = false;
+    const double speed = d.norm();
+    if (speed > 0) {
+      largestCurvature_ = std::max(largestCurvature_, d.cross(secondDerivative(u)).norm() / (speed * speed * speed));
+      largestDirection_ = largestDirection_.cwiseMax(d.cwiseAbs() / speed);
+    }
+  }
+}
+
+Vec3 ChordSpline::point(double u) const {
+  return c_[0] + u * (c_[1] + u * (c_[2] + u * (c_[3] + u * (c_[4] + u * c_[5]))));
+}
+
+Vec3 ChordSpline::derivative(double u) const {
+  return c_[1] + u * (2.0 * c_[2] + u * (3.0 * c_[3] + u * (4.0 * c_[4] + u * 5.0 * c_[5])));
+}
+
+Vec3 ChordSpline::secondDerivative(double u) const {
+  return 2.0 * c_[2] + u * (6.0 * c_[3] + u * (12.0 * c_[4] + u * 20.0 * c_[5]));
+}
+
+// The parameter at arc length s: the span from the table, then Newton steps on the length
+// within it (the speed |p'| barely changes over a span).
+double ChordSpline::parameterAt(double s) const {
+  if (s <= 0) return 0.0;
+  if (s >= length()) return 1.0;
+  const int span = static_cast<int>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
+  const double lo = static_cast<double>(span) / kSpans, hi = static_cast<double>(span + 1) / kSpans;
+  const double spanLength = cumulative_[span + 1] - cumulative_[span];
+  double u = spanLength > 0 ? lo + (hi - lo) * (s - cumulative_[span]) / spanLength : lo;
+  for (int iteration = 0; iteration < 2; ++iteration) {
+    // Length from lo to u by the midpoint-weighted Gauss rule on [lo, u].
+    double covered = 0;
+    for (int g = 0; g < 3; ++g) covered += kWeights[g] * derivative(lo + (u - lo) * kNodes[g]).norm();
+    covered *= (u - lo);
+    const double speed = derivative(u).norm();
+    if (!(speed > 0)) break;
+    u = std::clamp(u - (cumulative_[span] + covered - s) / speed, lo, hi);
+  }
+  return u;
+}
+
+double ChordSpline::farthestFrom(const Vec3& a, const Vec3& b) const {
+  double farthest = 0;
+  for (int i = 0; i <= kLooks; ++i) farthest = std::max(farthest, distanceToSegment(point(static_cast<double>(i) / kLooks), a, b));
+  return farthest;
+}
+
+Vec3 ChordSpline::at(double s) const { return point(parameterAt(s)); }
+
+Vec3 ChordSpline::tangentAt(double s) const {
+  const Vec3 d = derivative(parameterAt(s));
+  return d.norm() > 0 ? Vec3(d.normalized()) : Vec3((end() - start()).normalized());
+}
+
+}  // namespace isurface
