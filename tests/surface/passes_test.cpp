@@ -217,6 +217,29 @@ TEST(passes, ConcentricLoopsOnePassPerLoop) {
   }
 }
 
+// A control rounds the corner from a loop into its link: the sample nearest the loop's start
+// then lies in the rounding, heading half into the link. The next loop still starts where the
+// link comes back to the loop's heading, on its circle, not a link's length or a loop's later.
+TEST(passes, LoopsWhoseLinkCornerIsRoundedStartOnTheirCircle) {
+  const double outer = 20.0, step = 1.0, rounding = 0.02;  // mm
+  PathSampler path(Vec3(outer, 0, 0));
+  for (int k = 0; k < 6; ++k) {
+    const double r = outer - k * step;
+    if (k > 0) path.lineTo(Vec3(r, 0, 0), 3000);
+    path.arc(Vec3::Zero(), 2 * kPi - rounding / r, r, 0, 3000);
+    if (k < 5) path.arc(Vec3(r - rounding, -rounding, 0), kPi / 2, rounding, 0, 300);  // slowly round the corner
+  }
+  const Trajectory s = path.take();
+  const PassSet set = splitPasses(s);
+  ASSERT_EQ(set.passes.size(), 6u);
+  for (std::size_t k = 0; k < set.passes.size(); ++k) {
+    const Pass& p = set.passes[k];
+    const double r = outer - double(k) * step;
+    EXPECT_NEAR(std::hypot(s.x[p.begin], s.y[p.begin]), r, 0.05) << k;
+    EXPECT_NEAR(pathLengthOf(s, p), 2 * kPi * r, 0.2) << k;
+  }
+}
+
 TEST(passes, SpiralOnePassPerRevolution) {
   // An Archimedean spiral of 6 turns from radius 20 to 8 (2 mm a turn).
   PathSampler path(Vec3(20, 0, 0));

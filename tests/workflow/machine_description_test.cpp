@@ -70,6 +70,20 @@ TEST(MachineDescription, ThePlannerIsNamedKeptAndCheckedAndTheLinuxcncSimMachine
   EXPECT_EQ(sim.control.planner, TrajectoryPlanner::LinuxCnc29);
 }
 
+// Whether the control smooths chords within its tolerance: on unless the description says not,
+// kept through a saved description and a dump's metadata, a boolean or refused.
+TEST(MachineDescription, ChordSmoothingIsOnUnlessSaidAndKept) {
+  EXPECT_TRUE(parseMachine("{}", "m.json").control.chordSmoothing);
+  EXPECT_TRUE(defaultMachine().control.chordSmoothing);
+  const Machine without = loadMachine(std::string(test::sourceDir()) + "/resources/machines/without-chord-smoothing.json");
+  EXPECT_FALSE(without.control.chordSmoothing);
+  EXPECT_EQ(without.axes[0].maxJerk, defaultMachine().axes[0].maxJerk) << "the default machine's limits";
+  EXPECT_FALSE(parseMachine(machineDescriptionJson(without), "again.json").control.chordSmoothing);
+  EXPECT_NE(machineLimitsJson(without).find("\"chord_smoothing\":false"), std::string::npos) << machineLimitsJson(without);
+  EXPECT_NE(refusal(R"({"control": {"chord_smoothing": "no"}})").find("control.chord_smoothing must be true or false"),
+            std::string::npos);
+}
+
 TEST(MachineDescription, TheRiseTimeIsTheDescriptionsOwnOrItsLargestAOverJAndStaysWhenALimitIsLowered) {
   // The default's axes: 2000 / 100000 and 1500 / 75000 mm/s^2 over mm/s^3.
   EXPECT_DOUBLE_EQ(defaultMachine().control.accelerationRiseTime, 0.02);

@@ -39,9 +39,14 @@ ChordKnot ChordKnot::through(const Vec3& previous, const Vec3& point, const Vec3
 }
 
 ChordSpline::ChordSpline(const Vec3& start, const ChordKnot& startKnot, const Vec3& end, const ChordKnot& endKnot) {
-  // Quintic Hermite in u in [0, 1]: p(0), p'(0) = h T0, p''(0) = h^2 K0 and the same at u = 1,
-  // h the chord. With p'' normal to p' at the ends, the curvature there is |K| exactly.
-  const double h = (end - start).norm();
+  // Quintic Hermite in u in [0, 1]: p(0), p'(0) = L T0, p''(0) = L^2 K0 and the same at u = 1.
+  // With p'' normal to p' at the ends, the curvature there is |K| exactly; L, the length of the
+  // circular arc over the chord that turns as the end tangents do, makes the parameter's speed
+  // nearly even, and an arc of a circle nearly exact (its error falls with the sixth power of
+  // the turn).
+  const double chord = (end - start).norm();
+  const double halfTurn = 0.5 * std::acos(std::clamp(startKnot.tangent.dot(endKnot.tangent), -1.0, 1.0));
+  const double h = halfTurn > 1e-6 && halfTurn < 1.5 ? chord * halfTurn / std::sin(halfTurn) : chord;
   const Vec3 p0 = start, p1 = end;
   const Vec3 d0 = h * startKnot.tangent, d1 = h * endKnot.tangent;
   const Vec3 a0 = h * h * startKnot.curvature, a1 = h * h * endKnot.curvature;
@@ -58,11 +63,11 @@ ChordSpline::ChordSpline(const Vec3& start, const ChordKnot& startKnot, const Ve
     for (int g = 0; g < 3; ++g) span += kWeights[g] * derivative((i + kNodes[g]) / kSpans).norm();
     cumulative_[i + 1] = cumulative_[i] + span / kSpans;
   }
-  const Vec3 chordDirection = h > 0 ? Vec3((p1 - p0) / h) : Vec3::Zero();
+  const Vec3 chordDirection = chord > 0 ? Vec3((p1 - p0) / chord) : Vec3::Zero();
   for (int i = 0; i <= kLooks; ++i) {
     const double u = static_cast<double>(i) / kLooks;
     const Vec3 d = derivative(u);
-    if (!(d.dot(chordDirection) >= 0.5 * h)) wellFormed_ = false;
+    if (!(d.dot(chordDirection) >= 0.5 * chord)) wellFormed_ = false;
     const double speed = d.norm();
     if (speed > 0) {
       largestCurvature_ = std::max(largestCurvature_, d.cross(secondDerivative(u)).norm() / (speed * speed * speed));
