@@ -60,8 +60,8 @@ TEST(chordSpline, FollowsTheCircleItsKnotsComeFrom) {
   const ChordKnot k1 = ChordKnot::through(onCircle(r, a0), onCircle(r, a1), onCircle(r, a1 + 0.1));
   const ChordSpline curve(onCircle(r, a0), k0, onCircle(r, a1), k1);
   EXPECT_NEAR(curve.length(), r * (a1 - a0), 1e-6);
-  EXPECT_NEAR(curve.largestCurvature(), 1.0 / r, 0.01 / r);
-  EXPECT_TRUE(curve.wellFormed());
+  EXPECT_NEAR(curve.shape().largestCurvature, 1.0 / r, 0.01 / r);
+  EXPECT_TRUE(curve.shape().wellFormed);
   for (double s = 0; s <= curve.length(); s += curve.length() / 50) {
     EXPECT_NEAR(curve.at(s).norm(), r, 2e-7) << s;
     // Arc length: the point s along lies at the angle s / r.
@@ -76,7 +76,7 @@ TEST(chordSpline, IsStraightBetweenStraightEnds) {
   const ChordSpline line(a, ChordKnot::straight(a, b), b, ChordKnot::straight(a, b));
   EXPECT_NEAR(line.length(), (b - a).norm(), 1e-12);
   EXPECT_LT(line.farthestFrom(a, b), 1e-12);
-  EXPECT_LT(line.largestCurvature(), 1e-9);
+  EXPECT_LT(line.shape().largestCurvature, 1e-9);
   EXPECT_LT((line.at(0.5 * line.length()) - 0.5 * (a + b)).norm(), 1e-12);
 }
 
@@ -86,7 +86,7 @@ TEST(chordSpline, KnotsThatTurnBackMakeNoCurve) {
   back.tangent = Vec3(-1, 0, 0);
   ChordKnot ahead;
   ahead.tangent = Vec3(1, 0, 0);
-  EXPECT_FALSE(ChordSpline(Vec3::Zero(), back, Vec3(0.5, 0, 0), ahead).wellFormed());
+  EXPECT_FALSE(ChordSpline(Vec3::Zero(), back, Vec3(0.5, 0, 0), ahead).shape().wellFormed);
 }
 
 TEST(chordRun, FitsRoundedPointsWithoutTheirNoise) {

@@ -58,22 +58,30 @@ ChordSpline::ChordSpline(const Vec3& start, const ChordKnot& startKnot, const Ve
   c_[5] = -6.0 * p0 - 3.0 * d0 - 0.5 * a0 + 0.5 * a1 - 3.0 * d1 + 6.0 * p1;
 
   cumulative_[0] = 0;
-  for (int i = 0; i < kSpans; ++i) {
+  for (int i = 0; i <= kSpans; ++i) {
+    const double speed = derivative(static_cast<double>(i) / kSpans).norm();
+    slope_[i] = speed > 0 ? 1.0 / speed : 0.0;
+    if (i == kSpans) break;
     double span = 0;
     for (int g = 0; g < 3; ++g) span += kWeights[g] * derivative((i + kNodes[g]) / kSpans).norm();
     cumulative_[i + 1] = cumulative_[i] + span / kSpans;
   }
-  const Vec3 chordDirection = chord > 0 ? Vec3((p1 - p0) / chord) : Vec3::Zero();
+}
+
+ChordSpline::Shape ChordSpline::shape() const {
+  Shape out;
+  const Vec3 along = end() - start();
   for (int i = 0; i <= kLooks; ++i) {
     const double u = static_cast<double>(i) / kLooks;
     const Vec3 d = derivative(u);
-    if (!(d.dot(chordDirection) >= 0.5 * chord)) wellFormed_ = false;
     const double speed = d.norm();
+    if (!(d.dot(along) >= 0.5 * along.squaredNorm())) out.wellFormed = false;
     if (speed > 0) {
-      largestCurvature_ = std::max(largestCurvature_, d.cross(secondDerivative(u)).norm() / (speed * speed * speed));
-      largestDirection_ = largestDirection_.cwiseMax(d.cwiseAbs() / speed);
+      out.largestCurvature = std::max(out.largestCurvature, d.cross(secondDerivative(u)).norm() / (speed * speed * speed));
+      out.largestDirection = out.largestDirection.cwiseMax(d.cwiseAbs() / speed);
     }
   }
+  return out;
 }
 
 Vec3 ChordSpline::point(double u) const {
@@ -88,25 +96,18 @@ Vec3 ChordSpline::secondDerivative(double u) const {
   return 2.0 * c_[2] + u * (6.0 * c_[3] + u * (12.0 * c_[4] + u * 20.0 * c_[5]));
 }
 
-// The parameter at arc length s: the span from the table, then Newton steps on the length
-// within it (the speed |p'| barely changes over a span).
+// The parameter at arc length s: the table's span, then the cubic through its nodes.
 double ChordSpline::parameterAt(double s) const {
   if (s <= 0) return 0.0;
   if (s >= length()) return 1.0;
-  const int span = static_cast<int>(std::upper_bound(cumulative_.begin(), cumulative_.end(), s) - cumulative_.begin()) - 1;
-  const double lo = static_cast<double>(span) / kSpans, hi = static_cast<double>(span + 1) / kSpans;
-  const double spanLength = cumulative_[span + 1] - cumulative_[span];
-  double u = spanLength > 0 ? lo + (hi - lo) * (s - cumulative_[span]) / spanLength : lo;
-  for (int iteration = 0; iteration < 2; ++iteration) {
-    // Length from lo to u by the midpoint-weighted Gauss rule on [lo, u].
-    double covered = 0;
-    for (int g = 0; g < 3; ++g) covered += kWeights[g] * derivative(lo + (u - lo) * kNodes[g]).norm();
-    covered *= (u - lo);
-    const double speed = derivative(u).norm();
-    if (!(speed > 0)) break;
-    u = std::clamp(u - (cumulative_[span] + covered - s) / speed, lo, hi);
-  }
-  return u;
+  const auto above = std::upper_bound(cumulative_.begin(), cumulative_.end(), s);
+  const int span = std::min(kSpans - 1, static_cast<int>(above - cumulative_.begin()) - 1);
+  const double s0 = cumulative_[span], w = cumulative_[span + 1] - s0;
+  const double u0 = static_cast<double>(span) / kSpans, u1 = static_cast<double>(span + 1) / kSpans;
+  if (!(w > 0)) return u0;
+  const double t = (s - s0) / w, t2 = t * t, t3 = t2 * t;
+  return (2 * t3 - 3 * t2 + 1) * u0 + (t3 - 2 * t2 + t) * w * slope_[span] + (3 * t2 - 2 * t3) * u1 +
+         (t3 - t2) * w * slope_[span + 1];
 }
 
 double ChordSpline::farthestFrom(const Vec3& a, const Vec3& b) const {

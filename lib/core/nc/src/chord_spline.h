@@ -37,17 +37,22 @@ class ChordSpline {
   Vec3 startTangent() const { return tangentAt(0.0); }
   Vec3 endTangent() const { return tangentAt(length()); }
 
-  double largestCurvature() const { return largestCurvature_; }  // 1/mm
+  // What the planner judges the curve by, at 33 points along it.
+  struct Shape {
+    double largestCurvature = 0;          // 1/mm
+    Vec3 largestDirection = Vec3::Zero();  // per axis, the largest |component| of the unit tangent
+    // Whether it runs from start to end without turning back on itself: everywhere at least
+    // half its speed along the chord.
+    bool wellFormed = true;
+  };
+  Shape shape() const;
   // The farthest it strays from the segment a-b, mm (at 33 points along it).
   double farthestFrom(const Vec3& a, const Vec3& b) const;
-  // For each axis, the largest |component| of its unit tangent.
-  const Vec3& largestDirection() const { return largestDirection_; }
-  // Whether it runs from start to end without turning back on itself: everywhere at least
-  // half its speed along the chord.
-  bool wellFormed() const { return wellFormed_; }
 
  private:
-  static constexpr int kSpans = 16;  // arc-length table resolution
+  // The arc-length table: spans of equal parameter, each measured by Gauss-Legendre; between
+  // its nodes the parameter is a cubic in arc length with the slopes 1 / |p'| of the nodes.
+  static constexpr int kSpans = 8;
   Vec3 point(double u) const;
   Vec3 derivative(double u) const;
   Vec3 secondDerivative(double u) const;
@@ -55,9 +60,7 @@ class ChordSpline {
 
   std::array<Vec3, 6> c_;  // monomial coefficients in u in [0, 1]
   std::array<double, kSpans + 1> cumulative_{};
-  double largestCurvature_ = 0;
-  bool wellFormed_ = true;
-  Vec3 largestDirection_ = Vec3::Zero();
+  std::array<double, kSpans + 1> slope_{};  // du/ds at the nodes
 };
 
 }  // namespace isurface

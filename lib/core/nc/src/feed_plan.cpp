@@ -198,22 +198,30 @@ class Planner {
       }
       std::array<float, 18> packed = packCurve(*c.start, *c.end);
       ChordSpline curve = curveOf(c.seg, packed);
-      if (!curve.wellFormed() || !(curve.farthestFrom(c.seg.start, c.seg.end) <= limits_.smoothingTolerance())) {
+      ChordSpline::Shape shape = curve.shape();
+      if (!shape.wellFormed || !(curve.farthestFrom(c.seg.start, c.seg.end) <= limits_.smoothingTolerance())) {
         CurveEnd start = *c.start, end = *c.end;
         start.knot = end.knot = ChordKnot::straight(c.seg.start + start.offset, c.seg.end + end.offset);
         packed = packCurve(start, end);
         curve = curveOf(c.seg, packed);
+        shape = curve.shape();
       }
-      addPiece(c.index, c.move, c.seg, &curve);
+      const PlannedCurve planned{curve, shape};
+      addPiece(c.index, c.move, c.seg, &planned);
       window_.back().planned.smooth = true;
       window_.back().planned.chordCurve = packed;
     }
     fitted_.clear();
   }
 
+  struct PlannedCurve {
+    ChordSpline curve;
+    ChordSpline::Shape shape;
+  };
+
   // A move's segment, after its start junction: run as `curve` where it is not null.
-  void addPiece(std::uint32_t index, const Move& move, const PathSegment& seg, const ChordSpline* curve) {
-    const Vec3 startTangent = curve ? curve->startTangent() : seg.startTangent();
+  void addPiece(std::uint32_t index, const Move& move, const PathSegment& seg, const PlannedCurve* curve) {
+    const Vec3 startTangent = curve ? curve->curve.startTangent() : seg.startTangent();
     double reach = 0;
     if (segments_ > 0) {
       double hold = 0;
@@ -239,19 +247,20 @@ class Planner {
     if (curve) addCurve(index, move, *curve);
     else addSegment(index, move, reach > 0 ? shortenedLine(seg, reach, 0.0) : seg, reach);
     previous_ = seg;
-    previousEndTangent_ = curve ? curve->endTangent() : seg.endTangent();
+    previousEndTangent_ = curve ? curve->curve.endTangent() : seg.endTangent();
     previousCurve_ = curve != nullptr;
     previousRapid_ = move.kind == MoveKind::Rapid;
   }
 
-  void addCurve(std::uint32_t index, const Move& move, const ChordSpline& curve) {
+  void addCurve(std::uint32_t index, const Move& move, const PlannedCurve& curve) {
     Entry e;
     PlannedSegment& ps = e.planned;
     ps.move = index;
-    ps.length = curve.length();
-    ps.accel = limits_.chordCurveAccel(curve);
-    const double radius = curve.largestCurvature() > 0 ? 1.0 / curve.largestCurvature() : kInfinity;
-    append(e, move, limits_.chordCurveSpeed(curve, move), limits_.curveAccelLimit(radius, limits_.smoothingTolerance()));
+    ps.length = curve.curve.length();
+    const ChordSpline::Shape& shape = curve.shape;
+    ps.accel = limits_.chordCurveAccel(shape);
+    const double radius = shape.largestCurvature > 0 ? 1.0 / shape.largestCurvature : kInfinity;
+    append(e, move, limits_.chordCurveSpeed(shape, move), limits_.curveAccelLimit(radius, limits_.smoothingTolerance()));
   }
 
   // The machine comes to rest at the current junction and waits `hold` seconds; by default

@@ -107,17 +107,17 @@ double GenericLimits::segmentSpeed(const PathSegment& seg, const Move& move) con
                                         true, smoothingTolerance_));
 }
 
-double GenericLimits::chordCurveSpeed(const ChordSpline& curve, const Move& move) const {
+double GenericLimits::chordCurveSpeed(const ChordSpline::Shape& curve, const Move& move) const {
   const auto& ax = machine_.axes;
   const double speed = std::min(mmPerMinToMmPerS(static_cast<double>(move.feed)),
-                                projectedLimit(curve.largestDirection(), [&](int a) { return ax[a].maxVelocity; }));
-  const double radius = curve.largestCurvature() > 0 ? 1.0 / curve.largestCurvature() : kInfinity;
+                                projectedLimit(curve.largestDirection, [&](int a) { return ax[a].maxVelocity; }));
+  const double radius = curve.largestCurvature > 0 ? 1.0 / curve.largestCurvature : kInfinity;
   return std::min(speed, curvatureLimit(radius, minAcceleration(machine_), filterAccel_.minCoeff(), true,
                                         smoothingTolerance_));
 }
 
-double GenericLimits::chordCurveAccel(const ChordSpline& curve) const {
-  return projectedLimit(curve.largestDirection(), [&](int a) { return rampAccel_[a]; });
+double GenericLimits::chordCurveAccel(const ChordSpline::Shape& curve) const {
+  return projectedLimit(curve.largestDirection, [&](int a) { return rampAccel_[a]; });
 }
 
 double GenericLimits::blendAccel(const CornerBlend& blend) const {

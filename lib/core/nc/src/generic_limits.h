@@ -50,8 +50,8 @@ class GenericLimits {
   // A run of chords as a curve (chord_spline.h): its speed limit (mm/s; its feed, the axes'
   // speeds along its steepest directions, its tightest curvature) and its ramps' acceleration
   // (mm/s^2).
-  double chordCurveSpeed(const ChordSpline& curve, const Move& move) const;
-  double chordCurveAccel(const ChordSpline& curve) const;
+  double chordCurveSpeed(const ChordSpline::Shape& curve, const Move& move) const;
+  double chordCurveAccel(const ChordSpline::Shape& curve) const;
   BlendChoice blendAt(const PathSegment& in, const PathSegment& out, const Move& move) const;
   // The ramps' acceleration on a blend, mm/s^2.
   double blendAccel(const CornerBlend& blend) const;
