@@ -455,6 +455,22 @@ TEST(workingDay, EscapeClosesHelp) {
   EXPECT_FALSE(described(*ui)["windows"]["help"].get<bool>());
 }
 
+// A control without a compressor, chosen in the machine window: the transition's chords are
+// braked for, so the same program takes longer and is named as run on an edited machine.
+TEST(workingDay, TheMachinesChordSmoothingIsSwitchedOffInTheWindow) {
+  auto ui = openedSample();
+  const double smoothed = described(*ui)["documents"][0]["duration_s"];
+  tapLetter(*ui, 'M');
+  clickControl(*ui, "machine.chordSmoothing");
+  clickControl(*ui, "machine.simulate");
+  waitForJobs(*ui);
+  ASSERT_NE(ui->inspector().activeMachine(), nullptr);
+  EXPECT_FALSE(ui->inspector().activeMachine()->control.chordSmoothing);
+  const nlohmann::json state = described(*ui);
+  EXPECT_EQ(state["documents"][0]["machine"], defaultMachine().name + " (edited: control.chord_smoothing)");
+  EXPECT_GT(state["documents"][0]["duration_s"].get<double>(), smoothed);
+}
+
 // A kept program that was not saved lives only in the window: Close asks before letting it go,
 // and once it is saved Close closes.
 TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
