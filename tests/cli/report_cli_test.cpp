@@ -12,6 +12,7 @@
 
 #include "image_compare.h"
 #include "test_support.h"
+#include "control_machines.h"
 
 namespace fs = std::filesystem;
 using isurface::test::readPng;
@@ -214,10 +215,13 @@ TEST(Report, ASecondRunStandsBesideIt) {
 
 // The program re-optimised: before and after maps, the difference, and the figures of the
 // region and of the whole program.
+// On a control that brakes at the transition's chords, where its transition is a region to
+// optimise (control_machines.h).
 TEST(ReportLong, AnOptimisationShowsBeforeAndAfter) {
   const std::string html = (scratchDir() / "optimised.html").string(), json = (scratchDir() / "optimised.json").string();
   const auto r = runCli("report " + std::string(::isurface::test::sourceDir()) + "/samples/transition-surface.nc -o " + html +
-                        " --json " + json + " --regions 1 --optimize auto");
+                        " --json " + json + " --regions 1 --optimize auto --machine " +
+                        ::isurface::test::sourcePath(::isurface::test::kMachineWithoutChordSmoothing));
   ASSERT_EQ(r.exitCode, 0) << r.err;
   const std::string section = sectionOf(readAll(html), "optimisation");
   ASSERT_FALSE(section.empty());

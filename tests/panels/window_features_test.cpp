@@ -195,6 +195,26 @@ TEST(windowFeatures, TheRunIsPlayedAndScrubbed) {
   EXPECT_NEAR(double(middle) / double(samples), 0.5, 0.05);
 }
 
+// The tool stands on the selected sample, its tip on the commanded point, and moves with the
+// selection as the run plays; with nothing selected it is not drawn.
+TEST(windowFeatures, TheToolStandsOnTheSelectedSampleAndPlaysAlong) {
+  auto ui = openedSample();
+  EXPECT_FALSE(described(*ui)["selection"].contains("tool_tip"));
+  ASSERT_TRUE(ui->inspector().selectSample(5000));
+  settle(*ui, 3);
+  const nlohmann::json picked = described(*ui)["selection"];
+  ASSERT_TRUE(picked.contains("tool_tip")) << picked;
+  EXPECT_EQ(picked["tool_tip"], picked["position"]);
+  clickControl(*ui, "curves.play");
+  settle(*ui, 10);
+  clickControl(*ui, "curves.play");  // Pause
+  settle(*ui, 3);
+  const nlohmann::json played = described(*ui)["selection"];
+  ASSERT_GT(played["sample"].get<std::size_t>(), 5000u);
+  EXPECT_EQ(played["tool_tip"], played["position"]);
+  EXPECT_NE(played["tool_tip"], picked["tool_tip"]);
+}
+
 // A new document starts at its own top and from the default view, not where the one before it
 // was scrolled and turned; going back to the first finds it as it was left.
 TEST(windowFeatures, ANewDocumentStartsAtItsTopAndFromTheDefaultView) {

@@ -12,6 +12,7 @@ import sys
 def measure(path):
     data = open(path, "rb").read()
     header = struct.unpack_from("<I", data, 8)[0]
+    cycle = struct.unpack_from("<d", data, 24)[0]  # s
     count = (len(data) - header) // 64
     previous = None
     moving = within = 0
@@ -20,14 +21,14 @@ def measure(path):
         record = struct.unpack_from("<II7d", data, header + 64 * i)
         position, feed = record[2:5], record[8]
         if previous is not None:
-            speed = math.dist(position, previous) * 60000.0  # mm/min at a 1 ms cycle
+            speed = math.dist(position, previous) / cycle * 60.0  # mm/min
             if speed > 1.0:
                 moving += 1
                 within += abs(speed - feed) <= 0.05 * feed
                 first = i if first is None else first
                 last = i
         previous = position
-    span = (last - first + 1) * 0.001 if first is not None else 0.0
+    span = (last - first + 1) * cycle if first is not None else 0.0
     return span, (100.0 * within / moving if moving else 0.0)
 
 

@@ -339,6 +339,8 @@ void Inspector::State::syncHighlight() {
   }
   if (sel.sample && *sel.sample < t.size()) sample.push_back(t.commanded(*sel.sample));
   doc->scene->setHighlight(line, sample);
+  // The tool stands where the selected sample puts it: picked, located or played to.
+  doc->scene->setTool(sample.empty() ? std::nullopt : std::optional<Vec3>(sample.front()));
   view.invalidate();
 }
 

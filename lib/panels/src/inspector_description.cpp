@@ -83,6 +83,12 @@ std::string Inspector::describe() const {
   if (sel.sample) selection["sample"] = *sel.sample;
   if (sel.line) selection["line"] = *sel.line;
   if (s.pointer.hoverSample) selection["hover_sample"] = *s.pointer.hoverSample;
+  if (const Document* active = s.active < s.documents.size() ? s.documents[s.active].get() : nullptr) {
+    if (sel.sample && active->samples && *sel.sample < active->samples->size())
+      selection["position"] = pointJson(active->samples->commanded(*sel.sample));
+    if (active->scene)
+      if (const std::optional<Vec3> tip = active->scene->toolTip()) selection["tool_tip"] = pointJson(*tip);
+  }
   nlohmann::json measure = nlohmann::json::object();
   measure["active"] = s.pointer.measuring;
   if (s.pointer.measureA) measure["a"] = pointJson(*s.pointer.measureA);

@@ -3,6 +3,7 @@
 #include <vtkAutoInit.h>
 
 #include <vtkActor.h>
+#include <vtkAssembly.h>
 #include <vtkAxesActor.h>
 #include <vtkCamera.h>
 #include <vtkCaptionActor2D.h>
@@ -31,6 +32,7 @@
 #include "isurface/vis/color_map.h"
 #include "isurface/vis/detail_surface.h"
 #include "scene_actors.h"
+#include "tool_actor.h"
 
 // VTK's rendering classes come from object factories that these register; without them every
 // renderer, mapper and shader property would be an empty base class and every picture black.
@@ -94,6 +96,8 @@ struct QualityScene::Parts {
   vtkSmartPointer<vtkPolyData> surface, coarseSurface;
   vtkSmartPointer<vtkLookupTable> table;
   vtkSmartPointer<vtkActor> surfaceActor, coarseActor, detailActor, toolpathActor, lineGlow, sampleGlow, pointsActor;
+  vtkSmartPointer<vtkAssembly> tool;  // made when first shown
+  std::optional<Vec3> toolTip;
   MapStyle style;
   vtkSmartPointer<vtkPolyData> lineGlowPoints = vtkSmartPointer<vtkPolyData>::New();
   vtkSmartPointer<vtkPolyData> sampleGlowPoints = vtkSmartPointer<vtkPolyData>::New();
@@ -252,6 +256,23 @@ void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector
   parts_->lineGlow->SetVisibility(!line.empty());
   parts_->sampleGlow->SetVisibility(!sample.empty());
 }
+
+void QualityScene::setTool(const std::optional<Vec3>& tip) {
+  Parts& p = *parts_;
+  p.toolTip = tip;
+  if (!tip) {
+    if (p.tool) p.tool->SetVisibility(false);
+    return;
+  }
+  if (!p.tool) {
+    p.tool = makeBallEndMill(kShownToolRadius);
+    p.renderer->AddActor(p.tool);
+  }
+  p.tool->SetPosition(tip->x(), tip->y(), tip->z());
+  p.tool->SetVisibility(true);
+}
+
+std::optional<Vec3> QualityScene::toolTip() const { return parts_->toolTip; }
 
 void QualityScene::useCoarseSurface(bool coarse) {
   Parts& p = *parts_;

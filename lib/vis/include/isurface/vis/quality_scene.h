@@ -74,6 +74,9 @@ class QualityScene {
 
   // The glowing samples: a selected line's, and the selected sample itself (brighter, larger).
   void setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample);
+  // The tool standing on a cutter-location point (mm; none: not drawn), a D6R3 ball-end mill.
+  void setTool(const std::optional<Vec3>& tip);
+  std::optional<Vec3> toolTip() const;
   // Shows the coarse surface instead of the full one (while the camera moves), if there is one.
   void useCoarseSurface(bool coarse);
   // A close-up of part of the surface, finer than the whole one, shown instead of it at rest (the
