@@ -21,6 +21,7 @@
 #include "isurface/workflow/same_program.h"
 #include "number_options.h"
 #include "isurface/base/json_text.h"
+#include "isurface/vis/quality_scene.h"
 
 namespace isurface::cli {
 namespace {

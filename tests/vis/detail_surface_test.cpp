@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "isurface/vis/detail_surface.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 #include "isurface/vis/quality_scene.h"
 #include "surface_fixtures.h"
 

@@ -10,7 +10,7 @@
 #include <cmath>
 
 #include "isurface/vis/color_map.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 #include "isurface/vis/quality_scene.h"
 #include "surface_fixtures.h"
 

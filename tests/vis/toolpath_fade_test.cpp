@@ -8,7 +8,7 @@
 #include "isurface/nc/sample_trajectory.h"
 #include "isurface/nc/simulator.h"
 #include "isurface/vis/offscreen_render.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 #include "isurface/vis/quality_scene.h"
 
 using namespace isurface;

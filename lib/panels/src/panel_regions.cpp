@@ -6,7 +6,7 @@
 #include <fmt/format.h>
 
 #include "inspector_state.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 
 namespace isurface::panels {
 

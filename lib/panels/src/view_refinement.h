@@ -11,6 +11,7 @@
 
 #include "isurface/panels/scene_view.h"
 #include "isurface/vis/detail_surface.h"
+#include "isurface/vis/quality_scene.h"
 
 namespace isurface::panels {
 

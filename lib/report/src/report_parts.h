@@ -7,7 +7,7 @@
 
 #include "isurface/analysis/quality_figures.h"
 #include "isurface/report/html_document.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 #include "isurface/workflow/run_inputs.h"
 
 namespace isurface::report {

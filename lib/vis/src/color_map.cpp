@@ -27,11 +27,6 @@ std::vector<std::string> colorMapNames() {
   return names;
 }
 
-std::string resolveColorMap(const std::string& name, bool signedValues) {
-  if (name != kAutoColorMap) return name;
-  return signedValues ? "coolwarm" : "rainbow";
-}
-
 vtkSmartPointer<vtkLookupTable> makeLookupTable(const std::string& name, double lo, double hi) {
   const auto& files = embeddedResources();
   const auto found = files.find(std::string(kFolder) + name + ".json");

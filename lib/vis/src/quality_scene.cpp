@@ -43,14 +43,6 @@ VTK_MODULE_INIT(vtkInteractionStyle);
 
 namespace isurface::vis {
 
-std::optional<ViewDirection> parseView(const std::string& name) {
-  if (name == "iso") return ViewDirection::Iso;
-  if (name == "top") return ViewDirection::Top;
-  if (name == "front") return ViewDirection::Front;
-  if (name == "left") return ViewDirection::Left;
-  return std::nullopt;
-}
-
 vtkSmartPointer<vtkPolyData> surfacePolyData(const std::vector<Vec3>& positions, const SurfaceMesh& mesh) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   points->SetDataTypeToFloat();

@@ -5,6 +5,8 @@
 
 #include <vtkSmartPointer.h>
 
+#include "isurface/map/map_style.h"
+
 class vtkLookupTable;
 
 namespace isurface::vis {
@@ -12,10 +14,7 @@ namespace isurface::vis {
 // "rainbow" (the paper's blue-to-red, the default), "viridis", "turbo", "coolwarm", "grey".
 std::vector<std::string> colorMapNames();
 
-// "auto": the paper's rainbow, or "coolwarm" (diverging, white at the middle) for values of
-// both signs. Any other name is itself.
-constexpr const char* kAutoColorMap = "auto";
-std::string resolveColorMap(const std::string& name, bool signedValues);
+// resolveColorMap(): isurface/map/map_style.h.
 
 // A 256-entry table over [lo, hi]; values outside take the end colours, NaN a neutral grey.
 // Throws InputError for an unknown name.

@@ -10,7 +10,7 @@
 #include "isurface/base/trajectory.h"
 #include "isurface/surface/passes.h"
 #include "isurface/surface/surface_mesh.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 
 namespace isurface::vis {
 

@@ -7,7 +7,7 @@
 
 #include "isurface/fitting/constant_speed_intervals.h"
 #include "isurface/analysis/run_comparison.h"
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 
 namespace isurface::vis {
 

@@ -12,7 +12,7 @@
 #include "isurface/analysis/quantities.h"
 #include "isurface/base/trajectory.h"
 #include "isurface/surface/surface_ray_index.h"
-#include "isurface/vis/quality_scene.h"
+#include "isurface/map/map_style.h"
 
 namespace isurface::vis {
 

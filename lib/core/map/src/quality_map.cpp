@@ -1,4 +1,4 @@
-#include "isurface/vis/quality_map.h"
+#include "isurface/map/quality_map.h"
 
 #include <algorithm>
 #include <cmath>
@@ -9,7 +9,6 @@
 
 #include "isurface/base/diagnostic.h"
 #include "isurface/base/units.h"
-#include "isurface/vis/color_map.h"
 #include "isurface/gcode/path_segment.h"
 #include "isurface/surface/coarse_mesh.h"
 
