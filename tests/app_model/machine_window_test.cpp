@@ -46,3 +46,23 @@ TEST(machineWindow, ADescriptionLoadsIntoTheCopyOnly) {
   EXPECT_NE(w.message.find("window-machine-bad.json"), std::string::npos) << w.message;
   EXPECT_EQ(w.source, "built-in default");
 }
+
+// Simulating with the machine as it is, or with a description loaded and left as it was, names
+// where it came from, not "edited".
+TEST(machineWindow, AMachineAppliedUnchangedKeepsWhereItCameFrom) {
+  MachineWindow w;
+  w.show();
+  ASSERT_TRUE(w.apply());
+  EXPECT_EQ(w.source, "built-in default");
+  Machine other = defaultMachine();
+  other.name = "the shop's mill";
+  other.axes[2].maxVelocity /= 2;
+  w.loadPath = test::writeScratch("window-shop-machine.json", machineDescriptionJson(other));
+  w.load();
+  ASSERT_TRUE(w.apply());
+  EXPECT_EQ(w.source, w.loadPath);
+  EXPECT_EQ(w.inUse.name, "the shop's mill");
+  w.edit.axes[0].maxJerk /= 2;
+  ASSERT_TRUE(w.apply());
+  EXPECT_EQ(w.source, "edited");
+}

@@ -167,6 +167,11 @@ TEST(windowFeatures, TheWorstRegionsAreListedAndAClickGoesThere) {
   clickControl(*ui, "regions.item:1");
   ASSERT_TRUE(ui->inspector().selection().sample);
   const std::uint32_t line = *ui->inspector().selection().line;
+  // The status names the region's box (its corners), not its width as a distance.
+  const std::string status = described(*ui)["status"];
+  EXPECT_EQ(status.rfind("region 1: lines ", 0), 0u) << status;
+  EXPECT_NE(status.find(", box X "), std::string::npos) << status;
+  EXPECT_EQ(status.find(" from X "), std::string::npos) << status;
   clickControl(*ui, "regions.optimise:1");
   settle(*ui);
   const nlohmann::json lines = described(*ui)["optimise_lines"];
@@ -207,6 +212,9 @@ TEST(windowFeatures, TheToolStandsOnTheSelectedSampleAndPlaysAlong) {
   EXPECT_EQ(picked["tool_tip"], picked["position"]);
   clickControl(*ui, "curves.play");
   settle(*ui, 10);
+  const nlohmann::json playing = described(*ui)["selection"];  // while it plays
+  ASSERT_GT(playing["sample"].get<std::size_t>(), 5000u);
+  EXPECT_EQ(playing["tool_tip"], playing["position"]);
   clickControl(*ui, "curves.play");  // Pause
   settle(*ui, 3);
   const nlohmann::json played = described(*ui)["selection"];

@@ -455,6 +455,16 @@ TEST(workingDay, EscapeClosesHelp) {
   EXPECT_FALSE(described(*ui)["windows"]["help"].get<bool>());
 }
 
+// Esc closes Locate too, also after it has gone somewhere.
+TEST(workingDay, EscapeClosesLocate) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'L', true);
+  ASSERT_TRUE(described(*ui)["windows"]["locate"].get<bool>());
+  clickControl(*ui, "locate.goSample");
+  tap(*ui, ImGuiKey_Escape);
+  EXPECT_FALSE(described(*ui)["windows"]["locate"].get<bool>());
+}
+
 // A control without a compressor, chosen in the machine window: the transition's chords are
 // braked for, so the same program takes longer and is named as run on an edited machine.
 TEST(workingDay, TheMachinesChordSmoothingIsSwitchedOffInTheWindow) {

@@ -26,6 +26,7 @@ void MachineWindow::load() {
   if (loadPath.empty()) return;
   try {
     edit = loadMachine(loadPath);
+    loaded = Loaded{loadPath, machineDescriptionJson(edit)};
     message = "loaded " + loadPath + ": simulate to use it";
   } catch (const InputError& e) {
     message = e.what();
@@ -44,9 +45,13 @@ std::optional<Machine> MachineWindow::checkedEdit() {
 bool MachineWindow::apply() {
   const std::optional<Machine> m = checkedEdit();
   if (!m) return false;
+  // Where the machine now in use comes from: as it was, the file it was loaded from unchanged,
+  // or edits.
+  const std::string description = machineDescriptionJson(*m);
+  if (description != machineDescriptionJson(inUse))
+    source = loaded && description == loaded->description ? loaded->path : "edited";
   inUse = *m;
   edit.name = inUse.name;
-  source = "edited";
   message.clear();
   return true;
 }

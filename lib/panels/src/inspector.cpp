@@ -323,7 +323,9 @@ void Inspector::State::syncHighlight() {
   if (!doc || !doc->scene || !doc->samples || sel.generation == follow.shownGeneration) return;
   // The frame after a selection shows it in every panel at once (a marker over the view);
   // the glow of its line in the 3D scene, which costs a full render, follows a frame later.
-  if (follow.glowDeferred != sel.generation) {
+  // While the run plays the selection moves every frame: the tool follows it at once, or it
+  // would stand still until Pause.
+  if (follow.glowDeferred != sel.generation && !follow.playback.playing) {
     follow.glowDeferred = sel.generation;
     return;
   }
@@ -399,6 +401,9 @@ void Inspector::frame() {
   s.chrome.escapeTaken = false;
   s.takeJobResult();
   s.startQueuedLoad();
+  // Playing moves the selection before anything is drawn, so that the view's tool and every
+  // panel show the same sample in a frame.
+  s.follow.playback.advance(s.selection, ImGui::GetIO().DeltaTime);
   s.syncHighlight();
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
   const float width = viewport->Size.x, height = viewport->Size.y;

@@ -348,6 +348,8 @@ void drawLocateWindow(Inspector::State& s) {
     if (goPoint) w.goToPoint(s.selection);
     if (!w.message.empty()) ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f), "%s", w.message.c_str());
     if (ImGui::Button("Close")) w.open = false;
+    // Esc closes it, as every other window, when it has the keyboard.
+    if (ImGui::IsWindowFocused(ImGuiFocusedFlags_RootAndChildWindows) && s.takeEscape()) w.open = false;
   }
   ImGui::End();
 }

@@ -46,9 +46,9 @@ void drawRegionRows(Inspector::State& s, Document& doc, const QualityReport& rep
     const std::string label = std::to_string(k + 1);
     if (ImGui::Selectable(label.c_str(), false, ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
       s.selection.selectSample(r.worstSample);
-      s.status = fmt::format("region {}: lines {}-{}, worst at sample {} ({:.4g} {} from X {:.4g} Y {:.4g})", k + 1,
-                             r.firstLine, r.lastLine, r.worstSample, u.length(r.upper.x() - r.lower.x()),
-                             u.lengthUnit(), u.length(r.lower.x()), u.length(r.lower.y()));
+      s.status = fmt::format("region {}: lines {}-{}, box X {:.4g} to {:.4g}, Y {:.4g} to {:.4g} {}; worst at sample {}",
+                             k + 1, r.firstLine, r.lastLine, u.length(r.lower.x()), u.length(r.upper.x()),
+                             u.length(r.lower.y()), u.length(r.upper.y()), u.lengthUnit(), r.worstSample);
     }
     noteControl(s, "regions.item:" + label);
     ImGui::TableNextColumn();

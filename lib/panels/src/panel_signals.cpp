@@ -200,7 +200,6 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
 // marker, the G-code line, the row, the curves' cursor), as a preview plays the tool along its path.
 void drawPlayback(Inspector::State& s, const Trajectory& t) {
   app_model::Playback& play = s.follow.playback;
-  play.advance(s.selection, ImGui::GetIO().DeltaTime);
   const bool toggled = ImGui::Button(play.playing ? "Pause" : "Play");
   noteControl(s, "curves.play");
   if (toggled) play.toggle(s.selection);

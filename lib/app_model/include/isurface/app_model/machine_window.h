@@ -16,6 +16,11 @@ struct MachineWindow {
   bool appearing = false;  // opened this frame: it takes the machine in use and comes to the front
   std::string loadPath, savePath;
   std::string message;  // what the last request did, or why it failed
+  // The description last loaded, as it was read.
+  struct Loaded {
+    std::string path, description;
+  };
+  std::optional<Loaded> loaded;
 
   // Opens it with the machine in use; an open one keeps its edits.
   void show();
@@ -27,7 +32,8 @@ struct MachineWindow {
   // The copy, checked as a description file is and named after its edits from the machine in
   // use; nothing (and the message says why) when a value is refused.
   std::optional<Machine> checkedEdit();
-  // The copy becomes the machine in use ("edited"); false when it was refused.
+  // The copy becomes the machine in use: its source stays where nothing changed, is the file it
+  // was loaded from where it is that file's machine, else "edited"; false when it was refused.
   bool apply();
 };
 
