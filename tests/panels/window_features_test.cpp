@@ -255,8 +255,10 @@ TEST(windowFeatures, TheMachineIsRememberedForItsProgram) {
   const std::string edited = described(*ui)["machine"]["name"];
   ASSERT_NE(edited, defaultMachine().name);
   EXPECT_FALSE(ui->inspector().settings().machineOf(test::sourcePath("samples/transition-surface.nc")).empty());
-  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));  // with the machine in use
+  // Another program does not take the machine applied to this one: it opens with the default.
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
   waitForJobs(*ui);
+  EXPECT_EQ(described(*ui)["documents"].back()["machine"], defaultMachine().name);
   clickControl(*ui, "machine.default");
   clickControl(*ui, "machine.simulate");
   waitForJobs(*ui);

@@ -15,6 +15,7 @@ void MachineWindow::show() {
 void MachineWindow::use(const Machine& machine, const std::string& from) {
   inUse = edit = machine;
   source = from;
+  appliedFor.clear();
 }
 
 void MachineWindow::revert() {

@@ -95,8 +95,10 @@ void Inspector::State::useTheMachineRememberedFor(const std::string& programPath
       persistent.rememberMachine(programPath, "");  // no longer a machine: forgotten
     }
   }
-  // Another program's remembered machine is that program's.
-  if (dialogs.machine.source.rfind(kRememberedFor, 0) == 0) dialogs.machine.use(defaultMachine(), "built-in default");
+  // Another program's machine, remembered or applied to it in the window, is that program's.
+  const app_model::MachineWindow& m = dialogs.machine;
+  if (m.source.rfind(kRememberedFor, 0) == 0 || (!m.appliedFor.empty() && m.appliedFor != programPath))
+    dialogs.machine.use(defaultMachine(), "built-in default");
 }
 
 void Inspector::State::startRecolour() {

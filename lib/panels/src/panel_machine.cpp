@@ -114,8 +114,10 @@ void drawMachineWindow(Inspector::State& s) {
     const bool simulate = ImGui::Button("Simulate with this machine");
     noteControl(s, "machine.simulate");
     if (simulate && w.apply()) {
-      // The program reopens with it next time (the default machine: nothing to remember).
+      // The program reopens with it next time (the default machine: nothing to remember); other
+      // programs opened meanwhile do not take it.
       if (simulatable) s.persistent.rememberMachine(s.activeDocument()->programPath, machineDescriptionJson(w.inUse));
+      w.appliedFor = simulatable ? s.activeDocument()->programPath : std::string();
       if (simulatable) s.simulateAgain();
       else w.message = "used for the next program opened: no program is open";
     }

@@ -16,6 +16,9 @@ struct MachineWindow {
   bool appearing = false;  // opened this frame: it takes the machine in use and comes to the front
   std::string loadPath, savePath;
   std::string message;  // what the last request did, or why it failed
+  // The program the machine in use was applied to (simulated with from the window); empty when
+  // it was chosen with no program open, for the programs opened next.
+  std::string appliedFor;
   // The description last loaded, as it was read.
   struct Loaded {
     std::string path, description;
