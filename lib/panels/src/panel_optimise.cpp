@@ -77,8 +77,9 @@ void chooseWorstRegion(Inspector::State& s) {
   try {
     const SurfaceRun run{doc->samples, doc->map.passes, vis::figuresMesh(*doc->samples, doc->map), doc->map.request.gapLimit};
     holdRegion(s, worstRegion(run, doc->name), "worst predicted region");
-    // Widened to the passes joined to it (a pass left as it was beside one re-planned leaves a seam).
-    s.status += " (with every pass joined to it on the surface)";
+    // Widened to the passes joined to it (a pass left as it was beside one re-planned leaves a seam);
+    // regions where passes start and end rank too, but no re-fitting changes them.
+    s.status += " (with every pass joined to it on the surface; the worst inside the passes, regions at pass ends left out)";
   } catch (const InputError& e) {
     s.status = s.dialogs.optimise.notice = e.what();
   }
