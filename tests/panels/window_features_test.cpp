@@ -223,6 +223,21 @@ TEST(windowFeatures, TheToolStandsOnTheSelectedSampleAndPlaysAlong) {
   EXPECT_NE(played["tool_tip"], picked["tool_tip"]);
 }
 
+// A re-optimisation shown beside its document stays with it: another document shown meanwhile
+// has none beside it, and going back finds it again.
+TEST(windowFeatures, AnOptimisationStaysWithItsDocument) {
+  auto ui = openedSample();
+  ui->inspector().optimise(105, 400);
+  waitForJobs(*ui);
+  ASSERT_FALSE(described(*ui)["optimised"].is_null()) << ui->inspector().statusText();
+  ui->inspector().open(test::sourcePath("samples/wuzhishan.nc"));
+  waitForJobs(*ui);
+  EXPECT_TRUE(described(*ui)["optimised"].is_null());
+  ui->inspector().showDocument(0);
+  settle(*ui);
+  EXPECT_FALSE(described(*ui)["optimised"].is_null());
+}
+
 // A new document starts at its own top and from the default view, not where the one before it
 // was scrolled and turned; going back to the first finds it as it was left.
 TEST(windowFeatures, ANewDocumentStartsAtItsTopAndFromTheDefaultView) {

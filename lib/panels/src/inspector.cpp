@@ -286,11 +286,24 @@ bool Inspector::State::showDocumentOf(const std::shared_ptr<const Trajectory>& m
 }
 
 void Inspector::State::activate(std::size_t index) {
+  // What stands beside the document left goes with it, and comes back when it is shown again.
+  if (Document* leaving = activeDocument(); leaving && index != active) {
+    leaving->besideOptimised = comparison;
+    leaving->besideRun = runComparison;
+  }
   active = index;
   comparison.reset();
   runComparison.reset();
   afterView.setScene(nullptr);
   Document* doc = activeDocument();
+  if (doc && doc->besideOptimised) {
+    comparison = std::move(doc->besideOptimised);
+    showOptimisedDifference(comparison->showDifference);
+  } else if (doc && doc->besideRun) {
+    runComparison = std::move(doc->besideRun);
+    showRunDifference(runComparison->showDifference);
+  }
+  if (doc) doc->besideOptimised.reset(), doc->besideRun.reset();
   if (doc) settings.view = doc->viewDirection;  // Reset (R) and its maps made again look from there
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();

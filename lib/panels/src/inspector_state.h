@@ -58,6 +58,9 @@ struct Curve {
 };
 
 // One program and its interpolation samples (simulated or read from a dump).
+struct Comparison;
+struct RunComparisonView;
+
 struct Document {
   Document();
   std::uint64_t serial;  // unique in the process: what its panes' scroll is kept under
@@ -82,6 +85,9 @@ struct Document {
   // a map made again (another gap, another pass pattern) finds them again.
   std::shared_ptr<const QualityReport> regions;
   std::shared_ptr<const SurfaceMesh> regionsOfMap;
+  // Its re-optimisation or second run shown beside it, kept while another document is shown.
+  std::shared_ptr<Comparison> besideOptimised;
+  std::shared_ptr<RunComparisonView> besideRun;
   bool feedbackAvailable() const { return samples && (samples->hasFeedback() || feedbackSupply.available()); }
 };
 
