@@ -303,7 +303,6 @@ void Inspector::State::activate(std::size_t index) {
     runComparison = std::move(doc->besideRun);
     showRunDifference(runComparison->showDifference);
   }
-  if (doc) doc->besideOptimised.reset(), doc->besideRun.reset();
   if (doc) settings.view = doc->viewDirection;  // Reset (R) and its maps made again look from there
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();
