@@ -11,8 +11,7 @@
 #include "isurface/io/atomic_file.h"
 #include "isurface/analysis/quality_regions.h"
 #include "isurface/map/quality_map.h"
-#include "isurface/vis/quality_scene.h"
-#include "isurface/vis/offscreen_render.h"
+#include "analysis_picture.h"
 #include "progress.h"
 #include "trajectory_input.h"
 #include "number_options.h"
@@ -28,6 +27,7 @@ struct AnalyzeOptions {
   bool force = false;
   QualityThresholds thresholds;
   std::size_t top = 20;
+  AnalysisPainter painter = nullptr;
 };
 
 nlohmann::json point(const Vec3& p) { return nlohmann::json::array({p.x(), p.y(), p.z()}); }
@@ -88,18 +88,8 @@ int runAnalyze(const AnalyzeOptions& o) {
   writeFileAtomically(o.output, jsonText(out, 2) + "\n");
 
   if (!o.png.empty()) {
-    const QualityRegion* worst = worstRegionInsidePasses(report);
-    if (!worst && !report.regions.empty()) worst = &report.regions.front();
-    if (worst) {
-      // The worst line of the most severe region that re-fitting can improve glows.
-      const std::uint32_t line = samples.line[worst->worstSample];
-      samples.line.forEachRun([&](std::uint32_t l, std::size_t begin, std::size_t end) {
-        if (l == line)
-          for (std::size_t i = begin; i < end; ++i) map.data.highlight.push_back(samples.commanded(i));
-      });
-    }
-    vis::QualityScene scene(map.data, map.style);
-    vis::renderSceneToPng(scene, 1600, 1000, o.png);
+    if (!o.painter) throw InputError(Diagnostic{o.png, 0, 0, "pictures are drawn by isurface-cli-all, beside isurface-cli"});
+    o.painter(AnalysisPicture{map, samples, report, o.png});
   }
   std::printf("%s: %zu regions beyond the thresholds (%zu of %zu vertices)", o.output.c_str(), report.regions.size(),
               report.flaggedVertices, report.vertices);
@@ -117,10 +107,11 @@ int runAnalyze(const AnalyzeOptions& o) {
 
 }  // namespace
 
-Command analyzeCommand() {
+Command analyzeCommand(AnalysisPainter painter) {
   return Command{"analyze", "Predict surface defects: regions where adjacent passes or consecutive samples disagree",
-    [](CLI::App& sub) {
+    [painter](CLI::App& sub) {
       auto o = std::make_shared<AnalyzeOptions>();
+      o->painter = painter;
       sub.add_option("gcode", o->gcode, "G-code program")->required();
       sub.add_option("biip", o->biip, "Biip dump of the program (default: simulate it)");
       outputOption(sub.add_option("-o,--output", o->output, "JSON report to write"))->required();

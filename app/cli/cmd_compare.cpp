@@ -63,13 +63,6 @@ nlohmann::json unmatchedJson(const std::vector<UnmatchedLine>& lines) {
   return out;
 }
 
-PathPattern parsePattern(const std::string& name) {
-  for (PathPattern p : {PathPattern::Auto, PathPattern::DirectionParallel, PathPattern::ContourParallel, PathPattern::NoBoundary})
-    if (name == pathPatternName(p)) return p;
-  throw InputError(Diagnostic{"--pattern", 0, 0, "unknown pattern '" + name +
-                                                     "' (auto, direction-parallel, contour-parallel, no-boundary)"});
-}
-
 // A run without a line channel gets its lines from the program, as `import --gcode` does.
 Trajectory loadRun(const std::string& path, const Program* program, bool linuxcncLines) {
   Trajectory run = readTrajectory(path);
@@ -166,7 +159,7 @@ int runCompare(const CompareOptions& o) {
     vis::QualityMapRequest request = vis::differenceMapRequest(comparison, *quantity, fixedRange, o.colorMap);
     request.view = *view;
     request.gapLimit = gapLimit;
-    request.pattern = parsePattern(o.pattern);
+    request.pattern = parsePathPattern(o.pattern);
     request.caption = std::filesystem::path(o.runB).filename().string() + " against " +
                       std::filesystem::path(o.runA).filename().string();
     map = vis::buildQualityMap(a, programPointer, request);

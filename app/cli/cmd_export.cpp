@@ -1,7 +1,5 @@
-// isurface-cli export: the CL surface with every scalar, as VTK XML polydata for ParaView.
-#include <vtkPolyData.h>
-#include <vtkXMLPolyDataWriter.h>
-
+// isurface-cli export: the CL surface with every scalar, as VTK XML polydata for ParaView
+// (written without VTK).
 #include <cstdio>
 #include <memory>
 
@@ -10,7 +8,8 @@
 #include "output_options.h"
 #include "isurface/io/atomic_file.h"
 #include "isurface/analysis/quantities.h"
-#include "isurface/vis/quality_scene.h"
+#include "isurface/io/vtp_surface.h"
+#include "isurface/surface/surface_mesh.h"
 #include "progress.h"
 #include "trajectory_input.h"
 
@@ -42,31 +41,23 @@ int runExport(const ExportOptions& o) {
   meshOptions.gapLimit = gapLimit;
   const SurfaceMesh mesh = buildSurfaceMesh(samples, passes, meshOptions);
   if (mesh.triangles.empty()) throw InputError(Diagnostic{o.biip, 0, 0, whyNoTriangles(passes, gapLimit)});
-  auto poly = vis::surfacePolyData(meshPositions(samples, mesh, feedback), mesh);
-  std::size_t arrays = 0;
+  std::vector<VtpPointArray> arrays;
+  arrays.push_back({"pass", std::vector<float>(mesh.vertexPass.begin(), mesh.vertexPass.end())});
   const auto& infos = quantityInfos();
   for (std::size_t k = 0; k < infos.size(); ++k) {
     progress.update(static_cast<double>(k) / infos.size());
     if (infos[k].needsFeedback && !samples.hasFeedback()) continue;
-    vis::addPointArray(poly, infos[k].name, vertexQuantity(infos[k].quantity, samples, mesh));
-    ++arrays;
+    arrays.push_back({infos[k].name, vertexQuantity(infos[k].quantity, samples, mesh)});
   }
   for (const auto& [name, values] : samples.extra) {
     std::vector<float> perVertex(mesh.vertexSample.size());
     for (std::size_t v = 0; v < perVertex.size(); ++v) perVertex[v] = static_cast<float>(values[mesh.vertexSample[v]]);
-    vis::addPointArray(poly, name, perVertex);
-    ++arrays;
+    arrays.push_back({name, std::move(perVertex)});
   }
   progress.finish();
-  auto writer = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-  writer->SetInputData(poly);
-  writer->SetDataModeToAppended();
-  writer->SetCompressorTypeToZLib();
-  writer->WriteToOutputStringOn();
-  if (!writer->Write()) throw std::runtime_error("cannot encode the surface as VTK XML");
-  writeFileAtomically(o.vtp, writer->GetOutputString());
+  writeFileAtomically(o.vtp, surfaceVtp(meshPositions(samples, mesh, feedback), mesh.triangles, arrays));
   std::printf("%s: %zu vertices, %zu triangles, %zu scalars\n", o.vtp.c_str(), mesh.vertexSample.size(),
-              mesh.triangles.size(), arrays);
+              mesh.triangles.size(), arrays.size() - 1);
   return kExitOk;
 }
 

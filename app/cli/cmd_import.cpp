@@ -94,6 +94,8 @@ int runImport(const ImportOptions& o) {
       trace.line = RunChannel<std::uint32_t>(mapping.line);
       trace.hasLine = true;
     }
+    // The dump is a run of that program: render, compare and the window join the two without --force.
+    trace.source = o.gcode;
   }
   writeTrajectoryBiip(trace, o.output);
   std::printf("-> %s\n", o.output.c_str());

@@ -28,7 +28,7 @@ struct RenderOptions {
   std::string gcode, biip, output;
   MachineOption machine;
   std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "auto";
-  std::string range, percentiles = "1:99", surface = "commanded";
+  std::string range, percentiles = "1:99", surface = "commanded", pattern = "auto";
   long highlightLine = -1;
   bool noToolpath = false, noPassWires = false, colorToolpath = false, force = false;
   int isoBands = 12;
@@ -83,6 +83,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
   request.gapLimit = o.gapLimit.checked();
+  request.pattern = parsePathPattern(o.pattern);
   request.caption = std::filesystem::path(o.biip.empty() ? o.gcode : o.biip).filename().string();
   return request;
 }
@@ -105,7 +106,8 @@ int runRender(const RenderOptions& o) {
   const Trajectory& samples = *run.samples;
   ProgressLine building("building the surface");
   vis::QualityMap map = vis::buildQualityMap(samples, run.program.get(), request);
-  if (map.mesh->foldedStrips > 0) std::fprintf(stderr, "warning: %s: %s\n", samples.source.c_str(), foldedPasses(map.mesh->foldedStrips).c_str());
+  for (const std::string& note : surfaceNotes(samples, map, "--pattern or --gap-limit"))
+    std::fprintf(stderr, "warning: %s: %s\n", samples.source.c_str(), note.c_str());
   map.style.fontSize = vis::fontSizeForHeight(height);
   building.finish();
   vis::QualityScene scene(map.data, map.style);
@@ -131,6 +133,8 @@ Command renderCommand() {
                                           "following_error, line, time, feed, speed_inconsistency, "
                                           "accel_inconsistency, deviation")->capture_default_str();
       sub.add_option("--view", o->view, "iso, top, front or left")->capture_default_str();
+      sub.add_option("--pattern", o->pattern, "how the map's passes are found: auto, direction-parallel, "
+                                              "contour-parallel or no-boundary")->capture_default_str();
       sub.add_option("--size", o->size, "image size WxH in pixels")->capture_default_str();
       sub.add_option("--cmap", o->colorMap, "colour map: auto (rainbow, coolwarm for signed quantities), rainbow, viridis, turbo, coolwarm, grey")->capture_default_str();
       sub.add_option("--range", o->range, "colour range: A:B fixed, or 'full' for the values' extent");

@@ -15,7 +15,11 @@ struct Command {
   CommandSetup setup;
 };
 
-Command analyzeCommand();
+// With a painter, `analyze --png` draws the map (in isurface-cli-all); without, the command
+// draws nothing and needs no VTK.
+struct AnalysisPicture;
+using AnalysisPainter = void (*)(const AnalysisPicture& picture);
+Command analyzeCommand(AnalysisPainter painter = nullptr);
 Command canonCommand();
 Command compareCommand();
 Command exportCommand();
@@ -37,9 +41,9 @@ Command uiSnapshotCommand();
 std::vector<Command> plainCommands();
 std::vector<Command> allCommands();
 
-// The names of the commands that draw (render, analyze, ...): isurface-cli hands them to
-// isurface-cli-all.
-bool drawsPictures(const std::string& command);
+// Whether the command line asks for a picture (render, compare, analyze --png, ...):
+// isurface-cli hands those to isurface-cli-all.
+bool drawsPictures(int argc, char** argv);
 
 // Parses the command line against `commands` and runs the one it names; the exit code.
 int runCommands(int argc, char** argv, const std::vector<Command>& commands);

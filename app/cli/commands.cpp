@@ -6,12 +6,20 @@
 namespace isurface::cli {
 
 std::vector<Command> plainCommands() {
-  return {canonCommand(),     fitCommand(),    importCommand(), infoCommand(),
+  return {analyzeCommand(),   canonCommand(),  exportCommand(), fitCommand(),    importCommand(), infoCommand(),
           intervalsCommand(), locateCommand(), sampleCommand(), simulateCommand()};
 }
 
-bool drawsPictures(const std::string& command) {
-  static const char* const kDrawing[] = {"analyze", "compare", "export", "optimize", "render", "report", "sts", "ui-snapshot"};
+bool drawsPictures(int argc, char** argv) {
+  static const char* const kDrawing[] = {"compare", "optimize", "render", "report", "sts", "ui-snapshot"};
+  std::string command;
+  bool png = false;
+  for (int i = 1; i < argc; ++i) {
+    const std::string word = argv[i];
+    if (command.empty() && word[0] != '-') command = word;
+    png |= word.rfind("--png", 0) == 0;
+  }
+  if (command == "analyze") return png;
   return std::find(std::begin(kDrawing), std::end(kDrawing), command) != std::end(kDrawing);
 }
 

@@ -1,5 +1,5 @@
 // isurface-cli: every headless job of iSurface, one subcommand each. The commands that draw
-// (render, analyze, ...) run in isurface-cli-all, beside this program: loading VTK, OSMesa and
+// (render, analyze --png, ...) run in isurface-cli-all, beside this program: loading VTK, OSMesa and
 // the LLVM it brings takes a tenth of a second before main, longer than reading a million-line
 // program, so the commands that draw nothing start without them.
 #include <unistd.h>
@@ -35,7 +35,7 @@ int main(int argc, char** argv) {
   using namespace isurface::cli;
   const std::string command = commandOf(argc, argv);
   const bool version = argc == 2 && std::strcmp(argv[1], "--version") == 0;
-  if (version || (!command.empty() && !drawsPictures(command))) return runCommands(argc, argv, plainCommands());
+  if (version || (!command.empty() && !drawsPictures(argc, argv))) return runCommands(argc, argv, plainCommands());
   // A command that draws, or a question (help, nothing, a command unknown here): the program
   // that knows every command answers.
   const std::string all = allCommandsProgram();

@@ -22,6 +22,8 @@ std::string render(const std::string& name, const std::string& args) {
   const std::string out = (scratchDir() / (name + ".png")).string();
   const CommandResult r = runCli("render " + args + " --size " + kSize + " -o " + out);
   EXPECT_EQ(r.exitCode, 0) << r.err;
+  // A render that works says nothing of the OpenGL loader (GLEW failing over to OSMesa).
+  EXPECT_EQ(r.err.find("GLEW"), std::string::npos) << r.err;
   return r.exitCode == 0 ? out : "";
 }
 

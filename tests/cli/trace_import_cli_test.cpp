@@ -76,6 +76,21 @@ TEST(traceImport, aTraceThatDoesNotFollowTheProgramGivenIsRefusedUnlessForced) {
   EXPECT_TRUE(test::fileExists(out));
 }
 
+// A trace imported with its program is a run of that program: it is mapped beside the program
+// without --force, and its surface (little of it, the program being a test of moves more than a
+// finish) is said to be little, with the options that may fill it.
+TEST(traceImport, aTraceImportedWithItsProgramIsMappedWithIt) {
+  const std::string program = realdataPath("linuxcnc_test.ngc");
+  const std::string dump = (scratchDir() / "linuxcnc_test_trace.biip").string();
+  ASSERT_EQ(runCli("import halsampler " + realdataPath("linuxcnc_test.halsampler.txt") + " -o " + dump + " --gcode " +
+                   program).exitCode, 0);
+  const std::string png = (scratchDir() / "linuxcnc_test_trace.png").string();
+  const auto rendered = runCli("render " + program + " " + dump + " --size 400x300 -o " + png);
+  EXPECT_EQ(rendered.exitCode, 0) << rendered.err;
+  EXPECT_NE(rendered.err.find("of the cutting path lies on the surface"), std::string::npos) << rendered.err;
+  EXPECT_NE(rendered.err.find("--pattern or --gap-limit"), std::string::npos) << rendered.err;
+}
+
 TEST(traceImport, halsamplerRecordingKeepsLines) {
   const std::string path = realdataPath("linuxcnc_test.halsampler.txt");
   ISURFACE_SKIP_WITHOUT_REALDATA(path);

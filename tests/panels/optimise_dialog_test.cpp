@@ -129,3 +129,30 @@ TEST(optimiseDialog, TheWorstPredictedRegionIsHeldWithItsBox) {
   EXPECT_LE(state["optimise_time_share"].get<double>(), 1.0);
   EXPECT_LT(state["optimise_box"]["lower"][0].get<double>(), state["optimise_box"]["upper"][0].get<double>());
 }
+
+// The worst region widened to every pass joined to it can be most of a program; the passes it
+// lies on alone are a click away, with their cost, and the box still stands for them (the figures
+// are taken in it). A second click goes back to the widened lines.
+TEST(optimiseDialog, TheWorstRegionCanBeOptimisedOnThePassesItLiesOnAlone) {
+  auto ui = openedOnABrakingControl();
+  tapLetter(*ui, 'P');
+  clickControl(*ui, "optimise.worst");
+  waitForJobs(*ui);
+  nlohmann::json state = described(*ui);
+  ASSERT_FALSE(state["optimise_box"].is_null()) << state["status"];
+  const auto widened = state["optimise_lines"].get<std::vector<int>>();
+  const auto own = state["optimise_box"]["own_passes"].get<std::vector<int>>();
+  ASSERT_LT(own[1] - own[0], widened[1] - widened[0]) << "the transition's worst region is widened";
+  EXPECT_GE(own[0], widened[0]);
+  EXPECT_LE(own[1], widened[1]);
+  const double widenedShare = state["optimise_time_share"].get<double>();
+
+  clickControl(*ui, "optimise.width");
+  state = described(*ui);
+  EXPECT_EQ(state["optimise_lines"].get<std::vector<int>>(), own);
+  EXPECT_LT(state["optimise_time_share"].get<double>(), widenedShare);
+  EXPECT_FALSE(state["optimise_box"].is_null()) << "the box stands for the passes it lies on too";
+
+  clickControl(*ui, "optimise.width");
+  EXPECT_EQ(described(*ui)["optimise_lines"].get<std::vector<int>>(), widened);
+}

@@ -114,3 +114,46 @@ TEST(windowLayout, TheColourPanelsChoicesAreWholeOnASmallWindow) {
     EXPECT_LE((*rect)[2], (*panel)[2]) << control << " reaches past the panel's right edge";
   }
 }
+
+// With text at 150 % in a 1000 x 700 window, the machine window (its axis table, its name field)
+// stays inside the application's window, scrolling instead of reaching past the edges.
+TEST(windowLayout, TheMachineWindowStaysInsideASmallWindow) {
+  app_model::Settings settings;
+  settings.uiScale = 1.5f;
+  settings.uiScaleChosen = true;
+  panels::HeadlessUi ui(1000, 700, settings);
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  test::tapLetter(ui, 'M');
+  settle(ui, 4);
+  const auto inside = [&](int width, int height) {
+    const auto rect = ui.inspector().controlRect("machine");
+    ASSERT_TRUE(rect.has_value());
+    EXPECT_GE((*rect)[0], 0.0f);
+    EXPECT_GE((*rect)[1], 0.0f);
+    EXPECT_LE((*rect)[2], float(width)) << "the machine window reaches past the right edge";
+    EXPECT_LE((*rect)[3], float(height)) << "the machine window reaches past the bottom";
+  };
+  inside(1000, 700);
+}
+
+// A problem line appearing in the Export dialog (here: no file given) does not move the Export
+// button down under the pointer.
+TEST(windowLayout, TheExportButtonStaysPutWhenAProblemIsSaid) {
+  panels::HeadlessUi ui(1600, 1000, app_model::Settings{});
+  ui.inspector().open(test::sourcePath("samples/transition-surface.nc"));
+  waitForJobs(ui);
+  test::tapLetter(ui, 'E', true);
+  ASSERT_TRUE(described(ui)["windows"]["export"].get<bool>());
+  test::typeInto(ui, "export.path", "map.png");
+  const auto withPath = ui.inspector().controlRect("export.write");
+  test::typeInto(ui, "export.path", "");
+  ui.key(ImGuiKey_Backspace, true);
+  ui.frame();
+  ui.key(ImGuiKey_Backspace, false);
+  settle(ui, 2);
+  ASSERT_EQ(described(ui)["export_path"], "");
+  const auto withoutPath = ui.inspector().controlRect("export.write");
+  ASSERT_TRUE(withPath && withoutPath);
+  EXPECT_EQ((*withPath)[1], (*withoutPath)[1]);
+}

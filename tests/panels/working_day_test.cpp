@@ -524,3 +524,27 @@ TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
   clickControl(*ui, "optimised.close");
   EXPECT_TRUE(described(*ui)["optimised"].is_null()) << "saved: nothing to ask";
 }
+
+// The Open dialog takes what is typed at once: a path typed right after O is not lost to a
+// field that has not been clicked.
+TEST(workingDay, APathTypedRightAfterOpeningGoesIntoTheOpenDialog) {
+  auto ui = openedSample();
+  tapLetter(*ui, 'O');
+  ui->type("/tmp/program.nc");
+  settle(*ui, 2);
+  EXPECT_EQ(described(*ui)["open_path"].get<std::string>(), "/tmp/program.nc");
+}
+
+// A program whose surface covers little of its path (a test of moves, not a finish) keeps a
+// warning that says so and what may fill it, and the Colour panel says it too.
+TEST(workingDay, ASurfaceOnLittleOfThePathIsSaid) {
+  auto ui = std::make_unique<panels::HeadlessUi>(kWidth, kHeight, app_model::Settings{});
+  ui->inspector().open(test::realdataPath("linuxcnc_test.ngc"));
+  waitForJobs(*ui);
+  const nlohmann::json warnings = described(*ui)["documents"][0]["warnings"];
+  bool said = false;
+  for (const auto& w : warnings)
+    said |= w.get<std::string>().find("of the cutting path lies on the surface") != std::string::npos &&
+            w.get<std::string>().find("Colour panel") != std::string::npos;
+  EXPECT_TRUE(said) << warnings;
+}

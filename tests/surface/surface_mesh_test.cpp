@@ -434,18 +434,76 @@ Grid kochSnowflake(int level) {
 TEST(surface_mesh, PiecesOfOneEngravedCurveMakeNoSurface) {
   const Grid koch = kochSnowflake(4);
   const SurfaceMesh mesh = buildSurfaceMesh(koch.samples, koch.passes);
-  EXPECT_EQ(mesh.foldedStrips, 2u);
+  EXPECT_EQ(mesh.foldedStrips(), 2u);
   EXPECT_TRUE(mesh.triangles.empty()) << mesh.triangles.size();
   for (std::size_t v = 0; v < mesh.vertexSample.size(); ++v) {
     EXPECT_EQ(mesh.nextPassNeighbour[v], kNoVertex);
     EXPECT_EQ(mesh.previousPassNeighbour[v], kNoVertex);
   }
-  EXPECT_NE(whyNoTriangles(koch.passes, 2.0, mesh.foldedStrips).find("cross and double back"), std::string::npos);
+  EXPECT_NE(whyNoTriangles(koch.passes, 2.0, mesh.foldedStrips()).find("cross and double back"), std::string::npos);
   // Passes side by side, flat or curved, zig-zag or one way, fold nowhere.
   for (const bool zigZag : {true, false}) {
     const Grid relief = planeGrid(20, 200, 0.1, 0.3, zigZag, [](double x, double y) { return std::sin(x) * std::cos(y); });
     const SurfaceMesh surface = buildSurfaceMesh(relief.samples, relief.passes);
-    EXPECT_EQ(surface.foldedStrips, 0u);
+    EXPECT_EQ(surface.foldedStrips(), 0u);
     EXPECT_EQ(surface.triangles.size(), 2u * 19 * 199);
   }
+}
+
+// A raster whose passes 5, 10 and 15 are each followed by a pass cut across them (corner to
+// corner over the pass and back over the next): that pass crosses and doubles back over the one
+// before, so it is left out, but the passes either side of it still make their strip, and the
+// note names the lines of what was left out.
+TEST(surface_mesh, APassCutAcrossItsNeighboursCostsNoStripOfTheSurface) {
+  constexpr int kPasses = 21, kPoints = 201;
+  constexpr double kSpacing = 0.1, kStep = 0.5;  // mm
+  Grid g;
+  g.passes.pattern = PathPattern::DirectionParallel;
+  std::vector<std::uint32_t> lines;
+  const auto addPass = [&](const std::function<Vec3(double)>& at, std::uint32_t firstLine) {
+    const std::size_t begin = g.samples.x.size();
+    for (int i = 0; i < kPoints; ++i) {
+      const Vec3 p = at(double(i) / (kPoints - 1));
+      g.samples.x.push_back(p.x()), g.samples.y.push_back(p.y()), g.samples.z.push_back(p.z());
+      lines.push_back(firstLine + static_cast<std::uint32_t>(i / 50));  // 5 lines a pass
+    }
+    g.passes.passes.push_back({begin, g.samples.x.size()});
+  };
+  const double length = (kPoints - 1) * kSpacing;
+  std::uint32_t line = 10;
+  std::vector<std::size_t> crossing;
+  for (int k = 0; k < kPasses; ++k) {
+    const double y = k * kStep;
+    const bool back = k % 2 == 1;
+    addPass([&](double u) { return Vec3((back ? 1 - u : u) * length, y, 0.2 * std::sin(y)); }, line);
+    line += 5;
+    if (k == 5 || k == 10 || k == 15) {
+      crossing.push_back(g.passes.passes.size());
+      addPass([&](double u) { return Vec3((1 - u) * length, y + 0.8 * (0.5 - u), 0.2 * std::sin(y)); }, line);
+      line += 5;
+    }
+  }
+  timeEveryMillisecond(g.samples);
+  g.samples.line = lines;
+
+  const SurfaceMesh mesh = buildSurfaceMesh(g.samples, g.passes);
+  EXPECT_EQ(mesh.passesLeftOut, crossing);
+  EXPECT_TRUE(mesh.foldedPairs.empty());
+  // Every strip between the raster's own neighbours is there, and nothing else.
+  EXPECT_EQ(mesh.triangles.size(), 2u * (kPasses - 1) * (kPoints - 1));
+  for (const auto& t : mesh.triangles)
+    for (std::uint32_t v : t) EXPECT_EQ(std::count(crossing.begin(), crossing.end(), mesh.vertexPass[v]), 0);
+  // Each raster pass is matched to its neighbours across the left-out pass.
+  const std::uint32_t beforeCrossing = static_cast<std::uint32_t>(mesh.passFirstVertex[crossing[0] - 1]);
+  ASSERT_NE(mesh.nextPassNeighbour[beforeCrossing], kNoVertex);
+  EXPECT_EQ(mesh.vertexPass[mesh.nextPassNeighbour[beforeCrossing]], crossing[0] + 1);
+  // Facing up throughout, the bridged strips too.
+  const std::vector<Vec3> positions = meshPositions(g.samples, mesh);
+  for (const auto& t : mesh.triangles)
+    EXPECT_GT((positions[t[1]] - positions[t[0]]).cross(positions[t[2]] - positions[t[0]]).z(), 0);
+
+  const std::string note = passesNotJoined(g.samples, g.passes, mesh);
+  EXPECT_NE(note.find("3 passes cross and double back"), std::string::npos) << note;
+  EXPECT_NE(note.find("lines 40-44"), std::string::npos) << note;  // the pass after raster pass 5
+  EXPECT_NE(note.find(kFoldedPassesNote), std::string::npos) << note;
 }

@@ -20,5 +20,5 @@ TEST(sampleSurfaces, EveryLoopOfTheColaBottleIsJoinedToTheNext) {
   // Each loop starts on the line that starts it (the loops start on the +X axis).
   for (const Pass& pass : passes.passes) EXPECT_LT(std::abs(samples.y[pass.begin]), 0.3) << pass.begin;
   const SurfaceMesh mesh = buildSurfaceMesh(samples, passes);
-  EXPECT_EQ(mesh.foldedStrips, 0u);
+  EXPECT_EQ(mesh.foldedStrips(), 0u);
 }

@@ -18,9 +18,30 @@ void OptimiseDialog::hold(LineRange lines, std::optional<BoxSelection> foundIn) 
   notice.clear();
 }
 
+namespace {
+
+bool held(const OptimiseDialog& d, const LineRange& lines) {
+  return lines.first == static_cast<std::uint32_t>(d.first) && lines.last == static_cast<std::uint32_t>(d.last);
+}
+
+}  // namespace
+
 bool OptimiseDialog::boxed() const {
-  return box && box->lines.first == static_cast<std::uint32_t>(first) &&
-         box->lines.last == static_cast<std::uint32_t>(last);
+  return box && (held(*this, box->lines) || (box->ownPasses && held(*this, *box->ownPasses)));
+}
+
+std::optional<LineRange> OptimiseDialog::otherWidth() const {
+  if (!boxed() || !box->ownPasses) return std::nullopt;
+  const LineRange& own = *box->ownPasses;
+  if (own.first == box->lines.first && own.last == box->lines.last) return std::nullopt;
+  return held(*this, own) ? box->lines : own;
+}
+
+void OptimiseDialog::holdOtherWidth() {
+  if (const std::optional<LineRange> other = otherWidth()) {
+    first = static_cast<int>(other->first);
+    last = static_cast<int>(other->last);
+  }
 }
 
 std::string OptimiseDialog::rangeProblem() const {

@@ -31,8 +31,10 @@ struct DisplayUnits {
     return mmUnit;
   }
   // What the three curves of motion (feed, acceleration, jerk) are read to, in their display
-  // units: far below what a machine's figures are told apart by, far above differencing noise.
-  static double motionResolution(std::size_t curve) { return curve < 2 ? 0.01 : 1.0; }
+  // units: far below what a machine's figures are told apart by, far above differencing noise
+  // (0.01 mm/min, 0.01 mm/s^2, 1 mm/s^3, and as much in inches: an inch acceleration read to
+  // 0.01 in/s^2 showed 0.2 mm/s^2 as 0).
+  double motionResolution(std::size_t curve) const { return length(curve < 2 ? 0.01 : 1.0); }
   // Decimals that show a length to about a micrometre.
   int lengthDecimals() const { return inch ? 5 : 4; }
 };

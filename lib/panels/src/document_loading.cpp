@@ -64,11 +64,18 @@ std::string mapCaption(const Document& doc) {
   return caption;
 }
 
-void noteFoldedPasses(Document& doc) {
+void noteSurface(Document& doc) {
   auto& w = doc.warnings;
-  w.erase(std::remove_if(w.begin(), w.end(), [](const std::string& s) { return s.find(kFoldedPassesNote) != std::string::npos; }),
+  w.erase(std::remove_if(w.begin(), w.end(),
+                         [](const std::string& s) {
+                           return s.find(kFoldedPassesNote) != std::string::npos ||
+                                  s.find(vis::kLittleSurfaceNote) != std::string::npos;
+                         }),
           w.end());
-  if (doc.map.mesh && doc.map.mesh->foldedStrips > 0) w.push_back(foldedPasses(doc.map.mesh->foldedStrips));
+  doc.surfaceShare = doc.map.mesh ? doc.map.mesh->joinedShare() : 1.0;
+  if (!doc.samples) return;
+  for (std::string& note : vis::surfaceNotes(*doc.samples, doc.map, "the Colour panel's passes and gap"))
+    w.push_back(std::move(note));
 }
 
 std::unique_ptr<Document> loadDocument(const std::string& programPath, const std::string& dumpPath,
@@ -111,7 +118,7 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   // curves and rows are there, and the reason stands beside the file's own warnings.
   try {
     doc->map = vis::buildQualityMap(*doc->samples, doc->program.get(), fitted);
-    noteFoldedPasses(*doc);
+    noteSurface(*doc);
     control.progress(0.75);
     doc->scene = std::make_shared<vis::QualityScene>(doc->map.data, doc->map.style);
   } catch (const InputError& e) {

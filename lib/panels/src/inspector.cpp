@@ -259,7 +259,7 @@ void Inspector::State::take(Recolouring& result, const std::string&) {
   const bool firstMap = !doc->scene;
   doc->map = std::move(result.map);
   doc->scene = result.scene;
-  noteFoldedPasses(*doc);
+  noteSurface(*doc);
   doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
   status = doc->name + ": coloured by " +
            (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);

@@ -35,7 +35,9 @@ nlohmann::json pointJson(const Vec3& p) { return {p.x(), p.y(), p.z()}; }
 
 // The region the Optimise dialog holds: its lines, its box (mm) and the surface samples inside.
 nlohmann::json optimiseBoxJson(const app_model::BoxSelection& b) {
-  return {{"lines", {b.lines.first, b.lines.last}}, {"lower", pointJson(b.lower)}, {"upper", pointJson(b.upper)}, {"samples", b.samples}};
+  nlohmann::json box = {{"lines", {b.lines.first, b.lines.last}}, {"lower", pointJson(b.lower)}, {"upper", pointJson(b.upper)}, {"samples", b.samples}};
+  if (b.ownPasses) box["own_passes"] = {b.ownPasses->first, b.ownPasses->last};
+  return box;
 }
 
 nlohmann::json machineJson(const Machine& m) {

@@ -55,6 +55,7 @@ struct Curve {
     std::pair<float, float> range;
   };
   std::optional<Shown> shown = std::nullopt;
+  std::optional<std::pair<float, float>> wholeRun;  // lowest and highest of every sample
 };
 
 // One program and its interpolation samples (simulated or read from a dump).
@@ -75,6 +76,7 @@ struct Document {
   Machine machine;            // what made the samples: the dump's own, else the simulation's
   bool machineKnown = true;   // false: a dump that names no machine (the default stands in)
   std::vector<std::string> warnings;
+  double surfaceShare = 1;  // of the map's vertices, the share on its surface (SurfaceMesh::joinedShare)
   bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
   vis::ViewDirection viewDirection = vis::ViewDirection::Iso;  // the direction it was last seen from
   // The servo's positions are loaded when first needed (12 bytes a sample): from here.
@@ -466,8 +468,8 @@ inline std::string sampleName(const Trajectory& samples, std::size_t i) {
 
 // The first line of a document's map captions: its machine, and its thinning if it is thinned.
 std::string mapCaption(const Document& doc);
-// The document's warning of passes not joined as they fold over each other, as its map now has
-// them (a map made again with another gap may fold elsewhere).
-void noteFoldedPasses(Document& doc);
+// The document's warnings of its surface (passes not joined, a surface on little of the path)
+// as its map now has it: a map made again with another gap or pattern may have other ones.
+void noteSurface(Document& doc);
 
 }  // namespace isurface::panels

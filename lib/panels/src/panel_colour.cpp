@@ -171,15 +171,6 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     const std::size_t passes = doc->map.passes.passes.size();
     ImGui::TextWrapped("%zu passes, %s%s", passes, pathPatternName(doc->map.passes.pattern),
                        doc->map.request.pattern == PathPattern::Auto ? " (found)" : "");
-    // A surface of a few passes is mostly empty: said, with what may fill it.
-    if (passes <= kFewPasses) {
-      ImGui::PushTextWrapPos(0);
-      ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
-                         "only %zu passes: the surface has little between them; if the program is a raster or "
-                         "waterlines, choose its pass pattern above, or raise the gap",
-                         passes);
-      ImGui::PopTextWrapPos();
-    }
     bool visibility = ImGui::Checkbox("surface", &doc->showSurface);
     ImGui::SameLine();
     visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);
@@ -188,6 +179,16 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     if (visibility) {
       doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
       s.view.invalidate();
+    }
+    // A surface on little of the path is mostly empty: said, with what may fill it, below the
+    // controls so that none of them moves when it appears.
+    if (passes <= kFewPasses || doc->surfaceShare < vis::kLittleSurfaceShare) {
+      ImGui::PushTextWrapPos(0);
+      ImGui::TextColored(ImVec4(1.0f, 0.75f, 0.3f, 1.0f),
+                         "%zu passes, %.0f %% of the path on the surface: if the program is a raster or "
+                         "waterlines, choose its pass pattern above, or raise the gap",
+                         passes, 100 * doc->surfaceShare);
+      ImGui::PopTextWrapPos();
     }
   }
   if (recolour) s.startRecolour();

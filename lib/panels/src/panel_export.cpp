@@ -188,6 +188,7 @@ void drawExportDialog(Inspector::State& s) {
                         "again or give to isurface-cli");
   }
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // typing goes to the path at once
   inputTextWithHint("##path", "file to write", d.path);
   noteControl(s, "export.path");
   app_model::ExportSubject subject;
@@ -199,7 +200,8 @@ void drawExportDialog(Inspector::State& s) {
   }
   subject.jobRunning = s.job.running();
   const std::string problem = d.problem(subject);
-  if (!problem.empty()) ImGui::TextDisabled("%s", problem.c_str());
+  // The line is there when empty too: the button below does not move when a problem appears.
+  ImGui::TextDisabled("%s", problem.empty() ? " " : problem.c_str());
   const bool write = ImGui::Button("Export");
   noteControl(s, "export.write");
   if (write && problem.empty()) {

@@ -3,6 +3,7 @@
 // simulating the active program again.
 #include <imgui.h>
 
+#include <algorithm>
 #include <optional>
 
 #include "inspector_state.h"
@@ -92,11 +93,26 @@ void drawMachineWindow(Inspector::State& s) {
   ImGui::SetNextWindowPos(ImVec2(viewport->Size.x * 0.5f, viewport->Size.y * 0.45f), ImGuiCond_Appearing,
                           ImVec2(0.5f, 0.5f));
   ImGui::SetNextWindowBgAlpha(1.0f);  // the map behind would make the figures hard to read
-  if (ImGui::Begin("Machine", &w.open, ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse)) {
+  // Never larger than the application's window: on a small one it scrolls instead of reaching
+  // past its edges.
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), viewport->WorkSize);
+  const ImGuiWindowFlags flags =
+      ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoCollapse | ImGuiWindowFlags_HorizontalScrollbar;
+  if (ImGui::Begin("Machine", &w.open, flags)) {
+    // Kept inside the application's window when that is made smaller.
+    const ImVec2 size = ImGui::GetWindowSize();
+    ImVec2 at = ImGui::GetWindowPos();
+    const ImVec2 inside(std::clamp(at.x, viewport->WorkPos.x, std::max(viewport->WorkPos.x, viewport->WorkPos.x + viewport->WorkSize.x - size.x)),
+                        std::clamp(at.y, viewport->WorkPos.y, std::max(viewport->WorkPos.y, viewport->WorkPos.y + viewport->WorkSize.y - size.y)));
+    if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(at = inside);
+    s.chrome.controls["machine"] = {at.x, at.y, at.x + size.x, at.y + size.y};
     ImGui::Text("Simulations use: %s (%s)", w.inUse.name.c_str(), w.source.c_str());
-    if (const Document* doc = s.activeDocument(); doc && doc->samples)
+    // The line is there without a map too, so that nothing below moves when one comes.
+    const Document* doc = s.activeDocument();
+    if (doc && doc->samples)
       ImGui::TextDisabled("The map of %s was made with: %s", doc->name.c_str(),
                           doc->machineKnown ? doc->machine.name.c_str() : "a machine its dump does not name");
+    else ImGui::TextDisabled("No map is open.");
     ImGui::Separator();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 40);
     inputText("name", w.edit.name);

@@ -70,6 +70,8 @@ void drawOpenDialog(Inspector::State& s) {
   d.opening = false;
   if (!ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 44);
+  // Typing goes to the path at once, without a click in it first.
+  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
   const bool enter = inputTextWithHint("##path", "a file or a folder", d.path, ImGuiInputTextFlags_EnterReturnsTrue);
   noteControl(s, "open.path");
   if (ImGui::Button("Up")) d.up();

@@ -65,7 +65,9 @@ namespace {
 
 // The dialog holds a region found for the user (not dragged on the view, so not drawn there).
 void holdRegion(Inspector::State& s, const ChosenRegion& region, const char* what) {
-  s.dialogs.optimise.hold(region.lines, app_model::BoxSelection{region.lines, region.lower, region.upper, region.vertices});
+  app_model::BoxSelection box{region.lines, region.lower, region.upper, region.vertices};
+  if (region.ownPasses.first > 0) box.ownPasses = region.ownPasses;
+  s.dialogs.optimise.hold(region.lines, box);
   s.dialogs.optimise.boxOnView = {};
   s.status = fmt::format("{}: lines {}-{}", what, region.lines.first, region.lines.last);
 }
@@ -264,8 +266,20 @@ void drawOptimiseDialog(Inspector::State& s) {
     const app_model::BoxSelection& b = *s.dialogs.optimise.box;
     ImGui::TextWrapped("Box: X %.2f .. %.2f  Y %.2f .. %.2f mm, %zu surface samples; the figures are taken inside it",
                 b.lower.x(), b.upper.x(), b.lower.y(), b.upper.y(), b.samples);
+    // A region widened to every pass joined to it may be most of the program: the passes it lies
+    // on alone are offered (a seam beside them is the price), and back.
+    if (const std::optional<LineRange> other = s.dialogs.optimise.otherWidth()) {
+      const bool widened = other->last - other->first < static_cast<std::uint32_t>(s.dialogs.optimise.last - s.dialogs.optimise.first);
+      const std::string label = fmt::format("{}: lines {}-{}###width", widened ? "Only the passes it lies on" : "With the passes joined to it",
+                                            other->first, other->last);
+      if (ImGui::SmallButton(label.c_str())) s.dialogs.optimise.holdOtherWidth();
+      noteControl(s, "optimise.width");
+    } else {
+      ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight()));  // its room kept: the buttons below stay put
+    }
   } else {
     ImGui::TextWrapped("%s", "No box: the figures are taken where the first plan re-fits the path");
+    ImGui::Dummy(ImVec2(0, ImGui::GetTextLineHeight()));
   }
   drawRegionButtons(s, doc);
   // Said here too, where the user looks: the lines above are still those chosen before.

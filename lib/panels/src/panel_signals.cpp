@@ -162,8 +162,13 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   // Read to a millionth of what the plot spans: finer is the rounding of differencing.
   const double largest = std::max(std::fabs(double(lo)), std::fabs(double(hi)));
   const double resolution = std::isfinite(largest) ? 1e-6 * largest : 0.0;
-  std::snprintf(label, sizeof label, "%s [%s]  %s .. %s", curve.label.c_str(), unit, readableValue(lo, resolution).c_str(),
-                readableValue(hi, resolution).c_str());
+  // The axis spans most of the shown stretch; the run's extremes beside it, so that neither is
+  // taken for the other.
+  if (!curve.wholeRun) curve.wholeRun = curve.values.range(0, curve.values.size());
+  const float runLo = static_cast<float>(curve.wholeRun->first * scale), runHi = static_cast<float>(curve.wholeRun->second * scale);
+  std::snprintf(label, sizeof label, "%s [%s]  axis %s .. %s; run %s .. %s", curve.label.c_str(), unit,
+                readableValue(lo, resolution).c_str(), readableValue(hi, resolution).c_str(),
+                readableValue(runLo, resolution).c_str(), readableValue(runHi, resolution).c_str());
   textOnBacking(draw, ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
   if (second && second->speed) {
     const std::string name = "and " + std::filesystem::path(second->path).filename().string() + " (orange)";

@@ -9,12 +9,14 @@
 #include <vector>
 
 // VTK loads OpenGL through GLEW, which asks GLX for function pointers and fails without an X
-// display. These two definitions take precedence over the libraries' own: OSMesa answers.
+// display. These two definitions take precedence over the libraries' own: OSMesa answers. They
+// are exported whatever the build's default visibility, or GLEW still calls its own glxewInit
+// and VTK prints "GLEW could not be initialized" on every render.
 extern "C" {
-void (*glXGetProcAddressARB(const unsigned char* name))() {
+__attribute__((visibility("default"))) void (*glXGetProcAddressARB(const unsigned char* name))() {
   return reinterpret_cast<void (*)()>(OSMesaGetProcAddress(reinterpret_cast<const char*>(name)));
 }
-unsigned int glxewInit() { return 0; }
+__attribute__((visibility("default"))) unsigned int glxewInit() { return 0; }
 }
 
 namespace isurface::vis {

@@ -85,9 +85,9 @@ ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source) {
   // A raster's passes cross the same features one after the other; loops around a part do not,
   // and re-planned all alike, those of samples/wuzhishan.nc deviated 6 % more in its worst
   // region than with its own passes re-planned.
-  return {run.passes.pattern == PathPattern::DirectionParallel ? widenToJoinedPasses(run, lines)
-                                                               : widenToWholePasses(*run.samples, run.passes, lines),
-          worst->lower, worst->upper, worst->vertices};
+  const LineRange own = widenToWholePasses(*run.samples, run.passes, lines);
+  return {run.passes.pattern == PathPattern::DirectionParallel ? widenToJoinedPasses(run, lines) : own, worst->lower,
+          worst->upper, worst->vertices, own};
 }
 
 namespace {

@@ -127,6 +127,21 @@ bool needsFeedback(const QualityMapRequest& request) {
          (request.channel.empty() && !request.sampleValues && quantityInfo(request.quantity).needsFeedback);
 }
 
+std::vector<std::string> surfaceNotes(const Trajectory& samples, const QualityMap& map, const std::string& remedy) {
+  std::vector<std::string> notes;
+  if (!map.mesh) return notes;
+  if (std::string notJoined = passesNotJoined(samples, map.passes, *map.mesh); !notJoined.empty())
+    notes.push_back(std::move(notJoined));
+  const double share = map.mesh->joinedShare();
+  if (share < kLittleSurfaceShare)
+    notes.push_back(fmt::format("only {:.0f} % {} ({} passes, {}{}): if the program is a raster or waterlines, "
+                                "choose its pass pattern, or raise the gap ({})",
+                                100 * share, kLittleSurfaceNote, map.passes.passes.size(),
+                                pathPatternName(map.passes.pattern),
+                                map.request.pattern == PathPattern::Auto ? " as found" : "", remedy));
+  return notes;
+}
+
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request) {
   const QuantityInfo& info = quantityInfo(request.quantity);
   if (needsFeedback(request) && !samples.hasFeedback())
@@ -151,7 +166,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   map.mesh = std::make_unique<SurfaceMesh>(buildSurfaceMesh(samples, map.passes, meshOptions));
   if (map.mesh->triangles.empty())
     throw InputError(Diagnostic{samples.source, 0, 0,
-                                whyNoTriangles(map.passes, request.gapLimit, map.mesh->foldedStrips)});
+                                whyNoTriangles(map.passes, request.gapLimit, map.mesh->foldedStrips())});
 
   map.data.positions = meshPositions(samples, *map.mesh, request.feedbackSurface);
   map.data.mesh = map.mesh.get();

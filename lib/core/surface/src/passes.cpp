@@ -16,6 +16,8 @@
 // Dwells and moves of zero length take the state of the piece before them.
 #include "isurface/surface/passes.h"
 
+#include "isurface/base/diagnostic.h"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -366,6 +368,13 @@ const char* pathPatternName(PathPattern pattern) {
     case PathPattern::NoBoundary: return "no-boundary";
   }
   return "?";
+}
+
+PathPattern parsePathPattern(const std::string& name, const std::string& option) {
+  for (PathPattern p : {PathPattern::Auto, PathPattern::DirectionParallel, PathPattern::ContourParallel, PathPattern::NoBoundary})
+    if (name == pathPatternName(p)) return p;
+  throw InputError(Diagnostic{option, 0, 0, "unknown pattern '" + name +
+                                                "' (auto, direction-parallel, contour-parallel, no-boundary)"});
 }
 
 PassSet splitPasses(const Trajectory& samples, const PassOptions& options) {

@@ -103,6 +103,7 @@ struct StripShape {
   double facingUp = 0, facingDown = 0;  // of the doubled area, |z| of the triangles facing +Z, -Z as made
   bool reversedB = false;      // the walk ran pass B backward
   bool folded = false;         // its triangles folded over one another: none kept (see folds)
+  bool leftOut = false;        // its pass A crosses its neighbours and is left out: no strip
   bool wall() const { return !(std::fabs(normal.z()) >= 0.5 * areaSum); }
 };
 
@@ -123,7 +124,13 @@ class StripBuilder {
   // Triangles between pass k (A) and pass k + 1 (B), appended to `triangles`; the matched
   // vertices of neighbouring passes written into `out` (strips write disjoint vertices' entries,
   // so strips can be made side by side).
-  StripShape make(std::size_t k, std::vector<Triangle>& triangles, SurfaceMesh& out);
+  StripShape make(std::size_t k, std::vector<Triangle>& triangles, SurfaceMesh& out) {
+    return make(k, k + 1, triangles, out);
+  }
+  // Triangles between pass kA and a later pass kB.
+  StripShape make(std::size_t kA, std::size_t kB, std::vector<Triangle>& triangles, SurfaceMesh& out);
+  // Lets go of the neighbours a strip between passes kA and kB matched.
+  void forget(std::size_t kA, std::size_t kB, SurfaceMesh& out);
   // Faces a strip's triangles +Z, or, on a wall, the way the strip before it faced (its
   // `previousDirection`); returns how pass B's own edges ended up directed (+1 forward, -1
   // backward, 0 no triangles) for the next strip.
@@ -199,13 +206,20 @@ void StripBuilder::match(std::uint32_t a, std::uint32_t b, double dist2, Surface
   if (d < bestPrevious_[b]) bestPrevious_[b] = d, out.previousPassNeighbour[b] = a;
 }
 
-StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, SurfaceMesh& out) {
+void StripBuilder::forget(std::size_t kA, std::size_t kB, SurfaceMesh& out) {
+  for (std::size_t v = mesh_.passFirstVertex[kA]; v < mesh_.passFirstVertex[kA + 1]; ++v)
+    out.nextPassNeighbour[v] = kNoVertex, bestNext_[v] = std::numeric_limits<float>::infinity();
+  for (std::size_t v = mesh_.passFirstVertex[kB]; v < mesh_.passFirstVertex[kB + 1]; ++v)
+    out.previousPassNeighbour[v] = kNoVertex, bestPrevious_[v] = std::numeric_limits<float>::infinity();
+}
+
+StripShape StripBuilder::make(std::size_t kA, std::size_t kB, std::vector<Triangle>& triangles, SurfaceMesh& out) {
   StripShape shape;
   shape.begin = shape.end = triangles.size();
-  const std::uint32_t firstA = static_cast<std::uint32_t>(mesh_.passFirstVertex[k]);
-  const std::uint32_t firstB = static_cast<std::uint32_t>(mesh_.passFirstVertex[k + 1]);
-  std::size_t countA = mesh_.passFirstVertex[k + 1] - firstA;
-  std::size_t countB = mesh_.passFirstVertex[k + 2] - firstB;
+  const std::uint32_t firstA = static_cast<std::uint32_t>(mesh_.passFirstVertex[kA]);
+  const std::uint32_t firstB = static_cast<std::uint32_t>(mesh_.passFirstVertex[kB]);
+  std::size_t countA = mesh_.passFirstVertex[kA + 1] - firstA;
+  std::size_t countB = mesh_.passFirstVertex[kB + 1] - firstB;
   if (countA < 2 || countB < 2) return shape;
 
   PassWalk a{firstA, countA}, b{firstB, countB};
@@ -281,10 +295,7 @@ StripShape StripBuilder::make(std::size_t k, std::vector<Triangle>& triangles, S
     triangles.resize(shape.begin);
     shape = StripShape{shape.begin, shape.begin};
     shape.folded = true;
-    for (std::uint32_t v = firstA; v < firstA + countA; ++v)
-      out.nextPassNeighbour[v] = kNoVertex, bestNext_[v] = std::numeric_limits<float>::infinity();
-    for (std::uint32_t v = firstB; v < firstB + countB; ++v)
-      out.previousPassNeighbour[v] = kNoVertex, bestPrevious_[v] = std::numeric_limits<float>::infinity();
+    forget(kA, kB, out);
   }
   return shape;
 }
@@ -325,6 +336,56 @@ int StripBuilder::orient(std::size_t k, const StripShape& strip, int previousDir
   return directionB;
 }
 
+// Passes that cross and double back over their neighbour (a pass cut again across the others,
+// the link after it) must not cost the strip between the passes either side of them: where
+// strip k folds and a pass up to kMostLeftOut passes later lies beside pass k, the two are joined
+// and the passes between are left out. Strips keep their place in `shapes` (strip k then joins k
+// and that pass, the strips between are empty), and the triangles are put back in strip order.
+void joinAcrossCrossingPasses(StripBuilder& strips, std::vector<StripShape>& shapes, SurfaceMesh& mesh) {
+  constexpr std::size_t kMostLeftOut = 3;
+  const std::size_t count = shapes.size();
+  std::vector<Triangle> bridges;
+  std::vector<bool> bridged(count, false);
+  for (std::size_t k = 0; k < count; ++k) {
+    if (!shapes[k].folded) continue;
+    bool joined = false;
+    for (std::size_t m = k + 2; m <= std::min(k + 1 + kMostLeftOut, count) && !joined; ++m) {
+      for (std::size_t j = k + 1; j < m; ++j) strips.forget(j, j + 1, mesh);
+      const StripShape bridge = strips.make(k, m, bridges, mesh);
+      joined = !bridge.folded && bridge.end > bridge.begin;
+      if (joined) {
+        shapes[k] = bridge;
+        bridged[k] = true;
+        for (std::size_t j = k + 1; j < m; ++j) {
+          shapes[j] = StripShape{};
+          shapes[j].leftOut = true;
+          mesh.passesLeftOut.push_back(j);
+        }
+        k = m - 1;
+        break;
+      }
+      // The strips between stay as made; making them again (into a list let go) gives back
+      // their matches.
+      strips.forget(k, m, mesh);
+      bridges.resize(bridge.begin);
+      std::vector<Triangle> again;
+      for (std::size_t j = k + 1; j < m; ++j) strips.make(j, again, mesh);
+    }
+    if (!joined) mesh.foldedPairs.push_back(k);
+  }
+  if (mesh.passesLeftOut.empty()) return;
+  std::vector<Triangle> ordered;
+  ordered.reserve(mesh.triangles.size() + bridges.size());
+  for (std::size_t k = 0; k < count; ++k) {
+    const std::vector<Triangle>& from = bridged[k] ? bridges : mesh.triangles;
+    const std::size_t begin = ordered.size();
+    ordered.insert(ordered.end(), from.begin() + shapes[k].begin, from.begin() + shapes[k].end);
+    shapes[k].begin = begin;
+    shapes[k].end = ordered.size();
+  }
+  mesh.triangles = std::move(ordered);
+}
+
 }  // namespace
 
 namespace {
@@ -350,6 +411,45 @@ std::string foldedPasses(std::size_t foldedStrips) {
   return fmt::format("{} pair{} of neighbouring passes {}, as pieces of one engraved curve do, instead of lying side "
                      "by side over a surface: not joined",
                      foldedStrips, foldedStrips == 1 ? "" : "s", kFoldedPassesNote);
+}
+
+namespace {
+
+// "lines 120-180" (or "line 120", or "samples 500-800" where the samples name no line).
+std::string passLines(const Trajectory& samples, const Pass& pass) {
+  const std::uint32_t first = samples.line[pass.begin], last = samples.line[pass.end - 1];
+  if (first == 0 || last == 0) return fmt::format("samples {}-{}", pass.begin, pass.end - 1);
+  const std::uint32_t low = std::min(first, last), high = std::max(first, last);
+  return low == high ? fmt::format("line {}", low) : fmt::format("lines {}-{}", low, high);
+}
+
+// The first few of `items`, then how many more.
+std::string firstFew(const std::vector<std::string>& items) {
+  constexpr std::size_t kNamed = 4;
+  std::string out;
+  for (std::size_t i = 0; i < items.size() && i < kNamed; ++i) out += (i > 0 ? "; " : "") + items[i];
+  if (items.size() > kNamed) out += fmt::format("; and {} more", items.size() - kNamed);
+  return out;
+}
+
+}  // namespace
+
+std::string passesNotJoined(const Trajectory& samples, const PassSet& passes, const SurfaceMesh& mesh) {
+  std::string note;
+  if (!mesh.passesLeftOut.empty()) {
+    std::vector<std::string> where;
+    for (std::size_t k : mesh.passesLeftOut) where.push_back(passLines(samples, passes.passes[k]));
+    note = fmt::format("{} pass{} {} with the pass before, left out so that the passes either side are joined ({})",
+                       where.size(), where.size() == 1 ? "" : "es", kFoldedPassesNote, firstFew(where));
+  }
+  if (!mesh.foldedPairs.empty()) {
+    std::vector<std::string> where;
+    for (std::size_t k : mesh.foldedPairs)
+      where.push_back(passLines(samples, passes.passes[k]) + " with " + passLines(samples, passes.passes[k + 1]));
+    if (!note.empty()) note += "; ";
+    note += foldedPasses(mesh.foldedPairs.size()) + " (" + firstFew(where) + ")";
+  }
+  return note;
 }
 
 SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, const MeshOptions& options) {
@@ -394,13 +494,20 @@ SurfaceMesh buildSurfaceMesh(const Trajectory& samples, const PassSet& passes, c
   }
   const std::size_t offset = mesh.triangles.size();
   mesh.triangles.insert(mesh.triangles.end(), later.begin(), later.end());
+  for (std::size_t k = middle; k < count; ++k) shapes[k].begin += offset, shapes[k].end += offset;
+  joinAcrossCrossingPasses(strips, shapes, mesh);
   int direction = 0;
-  for (std::size_t k = 0; k < count; ++k) {
-    mesh.foldedStrips += shapes[k].folded;
-    if (k >= middle) shapes[k].begin += offset, shapes[k].end += offset;
-    direction = strips.orient(k, shapes[k], direction, mesh.triangles);
-  }
+  for (std::size_t k = 0; k < count; ++k)
+    if (!shapes[k].leftOut) direction = strips.orient(k, shapes[k], direction, mesh.triangles);
   return mesh;
+}
+
+double SurfaceMesh::joinedShare() const {
+  if (vertexSample.empty()) return 0;
+  std::vector<bool> joined(vertexSample.size(), false);
+  for (const auto& t : triangles)
+    for (std::uint32_t v : t) joined[v] = true;
+  return double(std::count(joined.begin(), joined.end(), true)) / double(vertexSample.size());
 }
 
 std::vector<Vec3> meshPositions(const Trajectory& samples, const SurfaceMesh& mesh, bool feedback) {

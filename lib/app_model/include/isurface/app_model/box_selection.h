@@ -33,6 +33,9 @@ struct BoxSelection {
   LineRange lines;                    // first to last line of the samples inside
   Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // their extent, mm
   std::size_t samples = 0;
+  // A region found on the map and widened to the passes joined to it: the lines of the passes it
+  // lies on alone, for the user who would rather not re-plan them all.
+  std::optional<LineRange> ownPasses;
 };
 
 // The samples of the surface's passes (cutting samples only, so that rapids and approach moves

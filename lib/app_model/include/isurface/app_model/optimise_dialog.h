@@ -28,8 +28,13 @@ struct OptimiseDialog {
   void forgetTheRegionOfAnotherProgram(const std::string& programPath);
   // Holds `lines` (and the box they were found in, if any); the notice is cleared.
   void hold(LineRange lines, std::optional<BoxSelection> foundIn = std::nullopt);
-  // Whether the box stands for the lines: it does while they are still its own.
+  // Whether the box stands for the lines: it does while they are still its own (widened, or
+  // those of the passes it lies on).
   bool boxed() const;
+  // The other lines of a widened region held with its box (its own passes, or the passes joined
+  // to them), when it has them.
+  std::optional<LineRange> otherWidth() const;
+  void holdOtherWidth();
   // Why the lines cannot be optimised as typed; empty when they can.
   std::string rangeProblem() const;
   // Offers where to save the result of optimising `programPath`: "NAME-optimized.nc" in

@@ -37,6 +37,7 @@ struct ChosenRegion {
   LineRange lines;
   Vec3 lower = Vec3::Zero(), upper = Vec3::Zero();  // mm, where the figures are measured
   std::size_t vertices = 0;                         // surface vertices of the defect
+  LineRange ownPasses;  // the worst region: the lines of the passes it lies on, before any widening
 };
 ChosenRegion worstRegion(const SurfaceRun& run, const std::string& source);
 

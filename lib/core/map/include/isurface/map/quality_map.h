@@ -69,6 +69,15 @@ struct QualityMap {
   QualityMapRequest request;  // what it was made for: a close-up of it is made alike
 };
 
+// A surface on less than this share of the cutting path's vertices is mostly empty.
+constexpr double kLittleSurfaceShare = 0.5;
+inline constexpr const char* kLittleSurfaceNote = "of the cutting path lies on the surface";
+
+// What a user should know of a map's surface: passes left out or not joined (with their
+// lines), and a surface on little of the cutting path, with what may fill it (`remedy`, the
+// options or controls that choose the pass pattern and the gap).
+std::vector<std::string> surfaceNotes(const Trajectory& samples, const QualityMap& map, const std::string& remedy);
+
 // Throws InputError when the request cannot be met (no feedback, no cutting passes, ...).
 QualityMap buildQualityMap(const Trajectory& samples, const Program* program, const QualityMapRequest& request);
 

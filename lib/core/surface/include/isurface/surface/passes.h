@@ -14,6 +14,8 @@ namespace isurface {
 enum class PathPattern { Auto, DirectionParallel, ContourParallel, NoBoundary };
 
 const char* pathPatternName(PathPattern pattern);  // "direction-parallel", ...
+// The pattern of that name; InputError naming `option` and the known names otherwise.
+PathPattern parsePathPattern(const std::string& name, const std::string& option = "--pattern");
 
 struct Pass {
   std::size_t begin = 0, end = 0;  // samples [begin, end)

@@ -20,7 +20,14 @@ struct SurfaceMesh {
   // Nearest vertex on the previous / next pass (the one the strip matched), kNoVertex if none.
   std::vector<std::uint32_t> previousPassNeighbour, nextPassNeighbour;
   std::vector<std::size_t> passFirstVertex;             // first vertex of each pass, plus the end
-  std::size_t foldedStrips = 0;  // neighbouring passes not joined: they fold over each other
+  // Neighbouring passes that cross and double back over each other are not joined. Where the
+  // pass after such a pair lies beside the pair's first, that pass is joined to it instead and
+  // the crossing pass is left out (passesLeftOut); the other pairs stay apart (foldedPairs, the
+  // index of each pair's first pass).
+  std::vector<std::size_t> passesLeftOut, foldedPairs;
+  std::size_t foldedStrips() const { return passesLeftOut.size() + foldedPairs.size(); }
+  // Of the vertices, the share joined to a neighbouring pass (in a triangle): 0 when none.
+  double joinedShare() const;
 };
 
 struct MeshOptions {
@@ -42,6 +49,9 @@ std::string whyNoTriangles(const PassSet& passes, double gapLimit, std::size_t f
 // What a mesh's folded strips mean, for a note beside a map; every such note holds
 // kFoldedPassesNote.
 std::string foldedPasses(std::size_t foldedStrips);
+// The same, naming the G-code lines of the passes left out and of the pairs not joined; empty
+// when every pair of neighbouring passes was joined.
+std::string passesNotJoined(const Trajectory& samples, const PassSet& passes, const SurfaceMesh& mesh);
 inline constexpr const char* kFoldedPassesNote = "cross and double back over each other";
 
 // The smallest stride that keeps a mesh of these passes within maxVertices (at least 1).
