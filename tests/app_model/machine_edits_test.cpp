@@ -12,7 +12,7 @@ TEST(machineEdits, aMachineWithOtherLimitsIsNotNamedAsTheOneItWasEditedFrom) {
   edited.axes[0].maxAcceleration *= 0.5;
   edited.axes[1].maxAcceleration *= 0.5;
   const Machine named = namedAfterEdits(edited, original);
-  EXPECT_EQ(named.name, original.name + " (edited: axes.x.max_acceleration_mm_s2, axes.y.max_acceleration_mm_s2)");
+  EXPECT_EQ(named.name, original.name + " (edited: X acceleration, Y acceleration)");
   EXPECT_EQ(named.axes[0].maxAcceleration, edited.axes[0].maxAcceleration);
 }
 
@@ -25,7 +25,7 @@ TEST(machineEdits, editsOfAnEditedMachineAddToItsList) {
   twice.axes[0].maxAcceleration = 800;  // listed already
   twice.chordTolerance = 0.005;
   EXPECT_EQ(namedAfterEdits(twice, once).name,
-            original.name + " (edited: axes.x.max_acceleration_mm_s2, chord_tolerance_mm)");
+            original.name + " (edited: X acceleration, chord tolerance)");
   Machine many = once;
   for (AxisLimits& axis : many.axes) axis.maxJerk *= 2;
   many.cycle = 0.002;

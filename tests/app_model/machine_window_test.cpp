@@ -19,7 +19,7 @@ TEST(machineWindow, AnEditAppliedIsAMachineOfItsOwn) {
   EXPECT_EQ(w.source, "edited");
   EXPECT_EQ(w.inUse.axes[0].maxAcceleration, defaultMachine().axes[0].maxAcceleration / 2);
   EXPECT_NE(w.inUse.name, defaultMachine().name);
-  EXPECT_NE(w.inUse.name.find("edited: axes.x.max_acceleration_mm_s2"), std::string::npos) << w.inUse.name;
+  EXPECT_NE(w.inUse.name.find("edited: X acceleration"), std::string::npos) << w.inUse.name;
   EXPECT_EQ(w.edit.name, w.inUse.name);
 }
 

@@ -210,12 +210,15 @@ TEST(gcodeModal, ZeroLengthMovesAreKept) {
   for (const Move& m : r.program.moves) EXPECT_EQ(m.end, Vec3::Zero());
 }
 
-TEST(gcodeModal, RotaryWordsWarnOnce) {
+// A, B and C are read with the moves (not ignored with a warning): a move of the rotary axes
+// alone is a move, and each move knows where they end.
+TEST(gcodeModal, RotaryWordsAreReadWithTheirMoves) {
   const InterpretResult r = runOk("G21 G0 X1 A90\nG0 B10 C5\n");
   ASSERT_EQ(r.program.moves.size(), 2u);
   EXPECT_EQ(r.program.moves[1].end, Vec3(1, 0, 0));
-  ASSERT_EQ(r.program.warnings.size(), 1u);
-  EXPECT_EQ(r.program.warnings[0].column, 11u);
+  EXPECT_TRUE(r.program.warnings.empty());
+  EXPECT_EQ(r.program.rotaryAt(0), (std::array<double, 3>{90, 0, 0}));
+  EXPECT_EQ(r.program.rotaryAt(1), (std::array<double, 3>{90, 10, 5}));
 }
 
 TEST(gcodeModal, WordsWithoutACodeToUseThem) {

@@ -18,6 +18,7 @@
 #include <sstream>
 
 #include "gcode_test_support.h"
+#include "rs274_canon.h"
 #include "isurface/machine/tool_table.h"
 #include "test_support.h"
 
@@ -26,41 +27,11 @@ using namespace isurface::test;
 
 namespace {
 
-// The end points of rs274's STRAIGHT_TRAVERSE, STRAIGHT_FEED and ARC_FEED commands, in order.
-// ARC_FEED(first end, second end, first centre, second centre, rotation, axis end, ...), with
-// the plane's axes in SELECT_PLANE's order: XY, XZ (first Z, second X) or YZ. rs274 prints
-// positions in the program's coordinates and G92 / G52 offsets apart (SET_G92_OFFSET): they are
-// added, as iSurface's moves are in the workpiece's.
+// The end points of rs274's motion commands, in order, with the G92 / G52 offset rs274 prints
+// apart added: iSurface's moves are in the workpiece's coordinates.
 std::vector<Vec3> motionEnds(const std::string& canon) {
-  static const std::regex motion(
-      R"((STRAIGHT_TRAVERSE|STRAIGHT_FEED|ARC_FEED|SET_G92_OFFSET|SELECT_PLANE)\(([^)]*)\))");
   std::vector<Vec3> ends;
-  Vec3 offset = Vec3::Zero();
-  Plane plane = Plane::XY;
-  std::istringstream in(canon);
-  for (std::string line; std::getline(in, line);) {
-    std::smatch m;
-    if (!std::regex_search(line, m, motion)) continue;
-    if (m[1] == "SELECT_PLANE") {
-      plane = m[2] == "CANON_PLANE_XZ" ? Plane::ZX : m[2] == "CANON_PLANE_YZ" ? Plane::YZ : Plane::XY;
-      continue;
-    }
-    std::vector<double> v;
-    std::istringstream args(m[2].str());
-    for (std::string a; std::getline(args, a, ',');) v.push_back(std::stod(a));
-    if (m[1] == "SET_G92_OFFSET") {
-      offset = Vec3(v.at(0), v.at(1), v.at(2));
-    } else if (m[1] == "ARC_FEED") {
-      const PlaneAxes ax = planeAxes(plane);
-      Vec3 end;
-      end[ax.u] = v.at(0);
-      end[ax.v] = v.at(1);
-      end[ax.w] = v.at(5);
-      ends.push_back(end + offset);
-    } else {
-      ends.push_back(Vec3(v.at(0), v.at(1), v.at(2)) + offset);
-    }
-  }
+  for (const Rs274Motion& m : rs274Motions(canon)) ends.push_back(m.end + m.g92Offset);
   return ends;
 }
 

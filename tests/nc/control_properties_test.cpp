@@ -147,9 +147,9 @@ INSTANTIATE_TEST_SUITE_P(
                     Case{Setup::LinuxCnc, true, "linuxcnc_test.ngc", "LinuxCncOnLinuxCncsTestProgram"},
                     Case{Setup::Generic, true, "linuxcnc_flowsnake.ngc", "GenericOnFlowsnake"},
                     Case{Setup::LinuxCnc, true, "linuxcnc_flowsnake.ngc", "LinuxCncOnFlowsnake"},
-                    Case{Setup::GenericWithoutJerkLimit, true, "linuxcnc_flowsnake.ngc", "NoJerkLimitOnFlowsnake"},
-                    Case{Setup::Generic, true, "linuxcnc_daisy.ngc", "GenericOnDaisy"},
-                    Case{Setup::LinuxCnc, true, "linuxcnc_daisy.ngc", "LinuxCncOnDaisy"}),
+                    Case{Setup::GenericWithoutJerkLimit, true, "linuxcnc_flowsnake.ngc", "NoJerkLimitOnFlowsnake"}),
+    // (linuxcnc_daisy.ngc turns its A axis: refused until five-axis motion is simulated; its
+    // X Y Z alone are checked against LinuxCNC in linuxcnc_reference_test.cpp.)
     nameOf);
 
 INSTANTIATE_TEST_SUITE_P(

@@ -223,6 +223,27 @@ TEST(windowFeatures, TheToolStandsOnTheSelectedSampleAndPlaysAlong) {
   EXPECT_NE(played["tool_tip"], picked["tool_tip"]);
 }
 
+// Playing with the curves around the selection, the curves turn the page when the tool leaves
+// the stretch they show: it stays in view, and the stretch keeps its width.
+TEST(windowFeatures, TheCurvesAroundTheSelectionFollowPlay) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectSample(5000));
+  settle(*ui, 2);
+  clickControl(*ui, "curves.around");
+  const auto before = described(*ui)["curves_span"].get<std::vector<std::size_t>>();
+  ASSERT_EQ(before, (std::vector<std::size_t>{3000, 7000}));
+  clickControl(*ui, "curves.play");
+  settle(*ui, 120);  // 4 s at x1, 1 ms a sample: well past the stretch
+  clickControl(*ui, "curves.play");
+  const nlohmann::json state = described(*ui);
+  const auto span = state["curves_span"].get<std::vector<std::size_t>>();
+  const std::size_t sample = state["selection"]["sample"];
+  ASSERT_GT(sample, 7000u);
+  EXPECT_GE(sample, span[0]);
+  EXPECT_LT(sample, span[1]);
+  EXPECT_EQ(span[1] - span[0], 4000u);
+}
+
 // A re-optimisation shown beside its document stays with it: another document shown meanwhile
 // has none beside it, and going back finds it again.
 TEST(windowFeatures, AnOptimisationStaysWithItsDocument) {

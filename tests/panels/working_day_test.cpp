@@ -53,8 +53,8 @@ TEST(workingDay, TheMachineIsEditedSimulatedWithAndSaved) {
   EXPECT_DOUBLE_EQ(state["machine"]["axes"][0]["max_velocity_mm_s"].get<double>(), 25.0);
   EXPECT_EQ(state["machine_source"], "edited");
   // Named as a machine of its own, wherever the map and its exports name it.
-  const std::string edited = defaultMachine().name + " (edited: axes.x.max_velocity_mm_min, axes.y.max_velocity_mm_min, "
-                             "axes.z.max_velocity_mm_min)";
+  const std::string edited = defaultMachine().name + " (edited: X velocity, Y velocity, "
+                             "Z velocity)";
   EXPECT_EQ(state["machine"]["name"], edited);
   EXPECT_EQ(state["documents"][0]["machine"], edited);
   const double after = state["documents"][0]["duration_s"];
@@ -331,6 +331,9 @@ TEST(workingDay, TheMapsFiguresExportAsJson) {
   EXPECT_GT(figures["machining_time_s"].get<double>(), 100.0);
   EXPECT_LE(figures["values"]["p1"].get<double>(), figures["values"]["median"].get<double>());
   EXPECT_LE(figures["values"]["median"].get<double>(), figures["values"]["p99"].get<double>());
+  // The map's 1-99 % range is its values' 1st and 99th percentiles, to the digit.
+  EXPECT_EQ(figures["values"]["p1"].get<double>(), figures["colour_range"][0].get<double>());
+  EXPECT_EQ(figures["values"]["p99"].get<double>(), figures["colour_range"][1].get<double>());
   EXPECT_GT(figures["figures"]["speed_fluctuation_mm_min"].get<double>(), 0.0);
 }
 
@@ -465,6 +468,18 @@ TEST(workingDay, EscapeClosesLocate) {
   EXPECT_FALSE(described(*ui)["windows"]["locate"].get<bool>());
 }
 
+// Simulated again with another machine, the program keeps the line the user had picked.
+TEST(workingDay, SimulatingAgainKeepsThePickedLine) {
+  auto ui = openedSample();
+  ASSERT_TRUE(ui->inspector().selectLine(2000));
+  settle(*ui, 2);
+  tapLetter(*ui, 'M');
+  clickControl(*ui, "machine.chordSmoothing");
+  clickControl(*ui, "machine.simulate");
+  waitForJobs(*ui);
+  EXPECT_EQ(described(*ui)["selection"]["line"], 2000);
+}
+
 // A control without a compressor, chosen in the machine window: the transition's chords are
 // braked for, so the same program takes longer and is named as run on an edited machine.
 TEST(workingDay, TheMachinesChordSmoothingIsSwitchedOffInTheWindow) {
@@ -477,7 +492,7 @@ TEST(workingDay, TheMachinesChordSmoothingIsSwitchedOffInTheWindow) {
   ASSERT_NE(ui->inspector().activeMachine(), nullptr);
   EXPECT_FALSE(ui->inspector().activeMachine()->control.chordSmoothing);
   const nlohmann::json state = described(*ui);
-  EXPECT_EQ(state["documents"][0]["machine"], defaultMachine().name + " (edited: control.chord_smoothing)");
+  EXPECT_EQ(state["documents"][0]["machine"], defaultMachine().name + " (edited: chord smoothing)");
   EXPECT_GT(state["documents"][0]["duration_s"].get<double>(), smoothed);
 }
 

@@ -114,3 +114,59 @@ TEST(MachineDescription, AKeyGivenTwiceOrAVelocityLoopThatNeverFollowsIsRefused)
   const std::string frozen = refusal(R"({"axes": {"x": {"velocity_loop_time_constant_s": 1e308}}})");
   EXPECT_NE(frozen.find("velocity_loop_time_constant_s must be from 0 to 1 s"), std::string::npos) << frozen;
 }
+
+// A five-axis machine: its kinematics read, checked and written back; the LinuxCNC xyzbc-trt
+// machine as its peer is configured.
+TEST(fiveAxisMachine, TheLinuxCncTrtMachineIsItsPeersConfiguration) {
+  const Machine m = loadMachine(std::string(test::sourceDir()) + "/resources/machines/linuxcnc-xyzbc-trt.json");
+  ASSERT_TRUE(m.kinematics.has_value());
+  const FiveAxisKinematics& k = *m.kinematics;
+  EXPECT_EQ(k.structure, KinematicStructure::TableTable);
+  EXPECT_EQ(k.rotary[0].name, 'B');
+  EXPECT_EQ(k.rotary[1].name, 'C');
+  EXPECT_EQ(k.rotary[0].pivot, Vec3(-20, 0, -15));
+  EXPECT_EQ(k.rotary[1].pivot, Vec3::Zero());
+  EXPECT_EQ(k.rotary[0].minimum, -120);
+  EXPECT_EQ(k.rotary[0].maximum, 120);
+  EXPECT_EQ(k.rotary[0].maxVelocity, 90);
+  EXPECT_EQ(k.rotary[1].maxAcceleration, 900);
+  EXPECT_FALSE(k.rotary[1].wraps);
+  EXPECT_EQ(m.control.planner, TrajectoryPlanner::LinuxCnc29);
+  // Written and read again, the same machine.
+  const Machine again = parseMachine(machineDescriptionJson(m), "again.json");
+  ASSERT_TRUE(again.kinematics.has_value());
+  EXPECT_EQ(again.kinematics->rotary[0].pivot, k.rotary[0].pivot);
+  EXPECT_EQ(again.kinematics->rotary[1].direction, k.rotary[1].direction);
+  EXPECT_EQ(again.kinematics->rotary[0].maximum, 120);
+  EXPECT_EQ(machineDescriptionJson(again), machineDescriptionJson(m));
+  // A three-axis machine has none.
+  EXPECT_FALSE(defaultMachine().kinematics.has_value());
+}
+
+TEST(fiveAxisMachine, AWrongKinematicsIsRefusedNamingTheKey) {
+  const std::string axisB = R"({"name": "B", "max_velocity_deg_s": 90, "max_acceleration_deg_s2": 900})";
+  const std::string axisC = R"({"name": "C", "max_velocity_deg_s": 90, "max_acceleration_deg_s2": 900})";
+  const auto with = [](const std::string& kinematics) { return R"({"kinematics": )" + kinematics + "}"; };
+  EXPECT_NE(refusal(with(R"({"structure": "table-chair", "rotary_axes": [)" + axisB + "," + axisC + "]}"))
+                .find("kinematics.structure"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "table-table", "rotary_axes": [)" + axisB + "]}")).find("two rotary axes"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "table-table", "rotary_axes": [)" + axisB + "," + axisB + "]}"))
+                .find("one axis twice"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "head-head", "rotary_axes": [{"name": "D"}, )" + axisC + "]}"))
+                .find("rotary_axes[0].name"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "table-table", "rotary_axes": [{"name": "B", "max_velocity_deg_s": 90}, )" +
+                         axisC + "]}"))
+                .find("rotary_axes[0].max_acceleration_deg_s2"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "table-table", "rotary_axes": [{"name": "B", "direction": [0, 0, 1], )"
+                         R"("max_velocity_deg_s": 90, "max_acceleration_deg_s2": 900}, )" + axisC + "]}"))
+                .find("parallel"),
+            std::string::npos);
+  EXPECT_NE(refusal(with(R"({"structure": "table-table", "rotary_axes": [)" + axisB + "," + axisC + R"(], "tool": 3})"))
+                .find("kinematics.tool"),
+            std::string::npos);
+}

@@ -1,6 +1,7 @@
 #include "isurface/app_model/machine_edits.h"
 
 #include <algorithm>
+#include <cctype>
 #include <string>
 #include <vector>
 
@@ -51,6 +52,26 @@ std::vector<std::string> differences(const Machine& a, const Machine& b) {
   return paths;
 }
 
+// What a user calls the value at a description's path: "X acceleration" for
+// axes.x.max_acceleration_mm_s2, "chord smoothing" for control.chord_smoothing.
+std::string label(const std::string& path) {
+  static const std::pair<const char*, const char*> kNames[] = {
+      {"max_velocity_mm_min", "velocity"},       {"max_acceleration_mm_s2", "acceleration"},
+      {"max_jerk_mm_s3", "jerk"},                {"position_gain_1_s", "position gain"},
+      {"velocity_feed_forward", "feed-forward"}, {"velocity_loop_time_constant_s", "velocity loop lag"},
+      {"cycle_s", "cycle"},                      {"rapid_mm_min", "rapid"},
+      {"chord_tolerance_mm", "chord tolerance"}, {"acceleration_rise_time_s", "acceleration rise time"}};
+  const std::size_t dot = path.rfind('.');
+  const std::string key = dot == std::string::npos ? path : path.substr(dot + 1);
+  std::string name = key;
+  for (const auto& [k, n] : kNames)
+    if (key == k) name = n;
+  std::replace(name.begin(), name.end(), '_', ' ');
+  // axes.x.<key>: the axis first, in capitals.
+  if (path.rfind("axes.", 0) == 0 && dot == 6) return std::string(1, static_cast<char>(std::toupper(path[5]))) + " " + name;
+  return name;
+}
+
 // The name before its edits, the edits it lists and whether it has more.
 struct EditedName {
   std::string base;
@@ -89,7 +110,7 @@ Machine namedAfterEdits(Machine edited, const Machine& original) {
   EditedName name = parse(original.name);
   std::vector<std::string> all = name.listed;
   for (const std::string& path : changed)
-    if (std::find(all.begin(), all.end(), path) == all.end()) all.push_back(path);
+    if (std::find(all.begin(), all.end(), label(path)) == all.end()) all.push_back(label(path));
   std::string list;
   for (std::size_t k = 0; k < all.size() && k < kNamedChanges; ++k) list += (k ? ", " : "") + all[k];
   if (name.more || all.size() > kNamedChanges) list += kMore;

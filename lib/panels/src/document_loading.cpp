@@ -85,7 +85,12 @@ std::unique_ptr<Document> loadDocument(const std::string& programPath, const std
   doc->programPath = programPath;
   doc->dumpPath = dumpPath;
   doc->viewDirection = request.view;
-  doc->name = std::filesystem::path(programPath.empty() ? dumpPath : programPath).filename().string();
+  // A program with a dump of its own (a recording) is named with it: the same program simulated
+  // beside it is told apart.
+  const auto fileName = [](const std::string& path) { return std::filesystem::path(path).filename().string(); };
+  doc->name = programPath.empty() ? fileName(dumpPath)
+              : dumpPath.empty()  ? fileName(programPath)
+                                  : fileName(programPath) + " (" + fileName(dumpPath) + ")";
   if (!programPath.empty()) doc->text = std::make_unique<app_model::TextLines>(programPath);
   OpenRunRequest open;
   open.files = {programPath, dumpPath};

@@ -243,8 +243,12 @@ void Inspector::State::take(LoadedDocument& result, const std::string& notice) {
     queue.noticeProgram = result.programAlone;
   }
   if (result.replaces < documents.size()) {
+    // The program simulated again keeps the line the user was looking at.
+    const bool shown = result.replaces == active;
+    const std::optional<std::uint32_t> line = shown ? selection.current().line : std::nullopt;
     documents[result.replaces] = std::move(result.document);
     activate(result.replaces);
+    if (line) selection.selectLine(*line);
   } else {
     documents.push_back(std::move(result.document));
     activate(documents.size() - 1);

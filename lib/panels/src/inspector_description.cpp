@@ -166,6 +166,7 @@ std::string Inspector::describe() const {
                               {"job", s.job.running() ? nlohmann::json{{"label", s.job.label()}, {"progress", s.job.progress()}, {"stage", s.job.stage()}}
                                                       : nlohmann::json()},
                               {"selection", selection},
+                              {"curves_span", {s.follow.curveFirst, s.follow.curveLast}},  // samples the curves show
                               {"gcode_search", s.dialogs.gcodeSearch.message},
                               {"gcode_top_line", s.follow.gcodeTopLine},
                               {"machine", machineJson(s.dialogs.machine.inUse)},

@@ -239,6 +239,8 @@ struct Dialogs {
   struct GcodeSearch {
     std::string text, message;
     bool focus = false;  // Ctrl+F: the field takes the keyboard on the next frame
+    // Frames left, from Ctrl+F, until the field has the keyboard: what is typed meanwhile is its text.
+    int awaitingKeyboard = 0;
   } gcodeSearch;
 };
 
@@ -400,6 +402,10 @@ constexpr int kHoverRestFrames = 5;
 
 // Remembers where the last item drawn stands, under `name` (Inspector::controlRect).
 void noteControl(Inspector::State& s, const std::string& name);
+
+// Opens a modal dialog (ImGui::BeginPopupModal), sized to its content but never larger than
+// the application's window: on a small one it scrolls instead of running past the edges.
+bool beginDialog(const char* title);
 
 // Opens one window of the fixed layout at its place (ImGui::End() closes it).
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags = 0);

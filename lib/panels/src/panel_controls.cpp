@@ -22,10 +22,15 @@ constexpr ImGuiWindowFlags kPanel = ImGuiWindowFlags_NoMove | ImGuiWindowFlags_N
 // A key pressed while no text field has the keyboard and no dialog or menu is open (letters are
 // their upper-case ASCII code in both hosts). Under an open dialog a shortcut would open a
 // window behind it, which Dear ImGui 1.86 does not allow (it asserts).
-bool shortcut(int key, bool ctrl = false) {
+// A key of the window's own, unless text is being typed: into a field, into a dialog that is
+// open or asked to open (what is typed right after O is the path, not shortcuts).
+bool shortcut(const Inspector::State& s, int key, bool ctrl = false) {
   const ImGuiIO& io = ImGui::GetIO();
-  return !io.WantTextInput && io.KeyCtrl == ctrl && !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId) &&
-         ImGui::IsKeyPressed(key, false);
+  const Dialogs& d = s.dialogs;
+  const bool dialogComing = d.open.opening || d.exportTo.opening || d.optimise.opening || d.locate.opening ||
+                            d.gcodeSearch.awaitingKeyboard > 0;
+  return !io.WantTextInput && !dialogComing && io.KeyCtrl == ctrl &&
+         !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId) && ImGui::IsKeyPressed(key, false);
 }
 
 // The text as it fits in `width` pixels: whole, or its beginning and "...". Cut between UTF-8
@@ -47,6 +52,15 @@ bool toolButton(const char* label, const char* tip) {
   const bool pressed = ImGui::Button(label);
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tip);
   ImGui::SameLine();
+  return pressed;
+}
+
+// A tool that stays on until switched off: lit while on, its label unchanged, so that the buttons
+// after it stay put.
+bool modeButton(const char* label, const char* tip, bool on) {
+  if (on) ImGui::PushStyleColor(ImGuiCol_Button, ImGui::GetStyleColorVec4(ImGuiCol_ButtonActive));
+  const bool pressed = toolButton(label, tip);
+  if (on) ImGui::PopStyleColor();
   return pressed;
 }
 
@@ -94,6 +108,11 @@ void setView(Inspector::State& s, vis::ViewDirection view) {
 }
 
 }  // namespace
+
+bool beginDialog(const char* title) {
+  ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0), ImGui::GetMainViewport()->WorkSize);
+  return ImGui::BeginPopupModal(title, nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+}
 
 void beginPanel(const char* name, float x, float y, float w, float h, int extraFlags) {
   ImGui::SetNextWindowPos(ImVec2(x, y));
@@ -180,40 +199,40 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   ImGui::SetNextWindowPos(ImVec2(0, toolbarTop));
   ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetFrameHeightWithSpacing() + 10));
   ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-  if (toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)") || shortcut('O') || shortcut('O', true))
+  if (toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)") || shortcut(s, 'O') || shortcut(s, 'O', true))
     s.dialogs.open.open();
-  if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut('S')) simulate = true;
-  if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut('M'))
+  if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut(s, 'S')) simulate = true;
+  if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut(s, 'M'))
     s.openMachineWindow();
-  if (toolButton("Iso", "Isometric view (I)") || shortcut('I')) setView(s, vis::ViewDirection::Iso);
-  if (toolButton("Top", "Top view (T)") || shortcut('T')) setView(s, vis::ViewDirection::Top);
-  if (toolButton("Front", "Front view (F)") || shortcut('F')) setView(s, vis::ViewDirection::Front);
-  if (toolButton("Left", "Left view (L)") || shortcut('L')) setView(s, vis::ViewDirection::Left);
-  if (toolButton("Reset", "Reset the camera (R)") || shortcut('R')) setView(s, s.settings.view);
-  if (toolButton(s.pointer.rectangleZoom ? "[Zoom box]" : "Zoom box", "Drag a rectangle to zoom to (Z)") || shortcut('Z'))
+  if (toolButton("Iso", "Isometric view (I)") || shortcut(s, 'I')) setView(s, vis::ViewDirection::Iso);
+  if (toolButton("Top", "Top view (T)") || shortcut(s, 'T')) setView(s, vis::ViewDirection::Top);
+  if (toolButton("Front", "Front view (F)") || shortcut(s, 'F')) setView(s, vis::ViewDirection::Front);
+  if (toolButton("Left", "Left view (L)") || shortcut(s, 'L')) setView(s, vis::ViewDirection::Left);
+  if (toolButton("Reset", "Reset the camera (R)") || shortcut(s, 'R')) setView(s, s.settings.view);
+  if (modeButton("Zoom box", "Drag a rectangle to zoom to (Z)", s.pointer.rectangleZoom) || shortcut(s, 'Z'))
     s.pointer.rectangleZoom = !s.pointer.rectangleZoom;
-  if (toolButton(s.pointer.boxSelect ? "[Select box]" : "Select box",
-                 "Drag a rectangle over the surface: its lines go to the Optimise dialog (B)") ||
-      shortcut('B'))
+  if (modeButton("Select box", "Drag a rectangle over the surface: its lines go to the Optimise dialog (B)",
+                 s.pointer.boxSelect) ||
+      shortcut(s, 'B'))
     s.pointer.boxSelect = !s.pointer.boxSelect;
-  if (toolButton(s.pointer.measuring ? "[Measure]" : "Measure", "Click two points of the surface: their distance (D)") ||
-      shortcut('D'))
+  if (modeButton("Measure", "Click two points of the surface: their distance (D)", s.pointer.measuring) ||
+      shortcut(s, 'D'))
     toggleMeasure(s);
-  if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut('L', true)) locate = true;
-  if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut('P')) s.dialogs.optimise.opening = true;
+  if (toolButton("Locate", "Locate a sample or a G-code line (Ctrl+L)") || shortcut(s, 'L', true)) locate = true;
+  if (toolButton("Optimise", "Re-optimise a region and compare the maps (P)") || shortcut(s, 'P')) s.dialogs.optimise.opening = true;
   ImGui::End();
   // One rectangle tool at a time: the one switched on last.
   if (s.pointer.boxSelect && s.pointer.rectangleZoom) {
     if (boxSelectWasOn) s.pointer.boxSelect = false;
     else s.pointer.rectangleZoom = false;
   }
-  if (shortcut('Q', true)) s.chrome.quit = true;
-  if (shortcut('E', true) && s.activeDocument()) s.dialogs.exportTo.show(s.selection.current().line);
-  if (shortcut('W', true) && s.activeDocument()) s.closeActive();
-  if (shortcut('F', true) && s.activeDocument()) s.dialogs.gcodeSearch.focus = true;
-  if (shortcut('R', true)) s.dialogs.regionsOpen = !s.dialogs.regionsOpen;
-  if (shortcut('H')) s.dialogs.helpOpen = !s.dialogs.helpOpen;
-  if (shortcut('W')) s.dialogs.warningsOpen = !s.dialogs.warningsOpen;
+  if (shortcut(s, 'Q', true)) s.chrome.quit = true;
+  if (shortcut(s, 'E', true) && s.activeDocument()) s.dialogs.exportTo.show(s.selection.current().line);
+  if (shortcut(s, 'W', true) && s.activeDocument()) s.closeActive();
+  if (shortcut(s, 'F', true) && s.activeDocument()) s.dialogs.gcodeSearch.focus = true;
+  if (shortcut(s, 'R', true)) s.dialogs.regionsOpen = !s.dialogs.regionsOpen;
+  if (shortcut(s, 'H')) s.dialogs.helpOpen = !s.dialogs.helpOpen;
+  if (shortcut(s, 'W')) s.dialogs.warningsOpen = !s.dialogs.warningsOpen;
   if (s.pointer.measuring && s.takeEscape()) toggleMeasure(s);
   if (locate) s.dialogs.locate.show(s.selection);
   if (simulate) s.simulateAgain();

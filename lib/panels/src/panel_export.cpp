@@ -17,6 +17,7 @@
 #include "isurface/io/trajectory_writing.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/base/json_text.h"
+#include "isurface/base/value_range.h"
 
 namespace isurface::panels {
 
@@ -34,12 +35,9 @@ nlohmann::json valueFigures(const std::vector<float>& values) {
   const double mean = sum / static_cast<double>(finite.size());
   const auto [low, high] = std::minmax_element(finite.begin(), finite.end());
   const double min = *low, max = *high;
-  return {{"min", min},
-          {"p1", percentileOf(finite, 1)},
-          {"median", percentileOf(finite, 50)},
-          {"p99", percentileOf(finite, 99)},
-          {"max", max},
-          {"mean", mean}};
+  // The percentiles as the map's 1-99 % colour range takes them, so that the two agree.
+  const ValueRange outer = percentileRange(values, 1, 99), middle = percentileRange(values, 50, 50);
+  return {{"min", min}, {"p1", outer.lo}, {"median", middle.lo}, {"p99", outer.hi}, {"max", max}, {"mean", mean}};
 }
 
 std::string figuresJson(const Document& doc) {
@@ -149,7 +147,7 @@ void drawExportDialog(Inspector::State& s) {
   app_model::ExportDialog& d = s.dialogs.exportTo;
   if (d.opening) ImGui::OpenPopup("Export");
   d.opening = false;
-  d.open = ImGui::BeginPopupModal("Export", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  d.open = beginDialog("Export");
   if (!d.open) return;
   using app_model::ExportKind;
   Document* doc = s.activeDocument();

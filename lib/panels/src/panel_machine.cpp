@@ -106,13 +106,19 @@ void drawMachineWindow(Inspector::State& s) {
                         std::clamp(at.y, viewport->WorkPos.y, std::max(viewport->WorkPos.y, viewport->WorkPos.y + viewport->WorkSize.y - size.y)));
     if (inside.x != at.x || inside.y != at.y) ImGui::SetWindowPos(at = inside);
     s.chrome.controls["machine"] = {at.x, at.y, at.x + size.x, at.y + size.y};
-    ImGui::Text("Simulations use: %s (%s)", w.inUse.name.c_str(), w.source.c_str());
+    // Long names (an edited machine lists its edits) wrap rather than widen the window.
+    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + ImGui::GetFontSize() * 44);
+    // Where it comes from when that is a file: an edited machine's name says so already.
+    const bool fromFile = w.source != "edited" && w.source != "built-in default";
+    ImGui::TextWrapped("Simulations use: %s%s%s%s", w.inUse.name.c_str(), fromFile ? " (" : "",
+                       fromFile ? w.source.c_str() : "", fromFile ? ")" : "");
     // The line is there without a map too, so that nothing below moves when one comes.
     const Document* doc = s.activeDocument();
     if (doc && doc->samples)
       ImGui::TextDisabled("The map of %s was made with: %s", doc->name.c_str(),
                           doc->machineKnown ? doc->machine.name.c_str() : "a machine its dump does not name");
     else ImGui::TextDisabled("No map is open.");
+    ImGui::PopTextWrapPos();
     ImGui::Separator();
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 40);
     inputText("name", w.edit.name);

@@ -68,11 +68,14 @@ void drawOpenDialog(Inspector::State& s) {
   app_model::OpenDialog& d = s.dialogs.open;
   if (d.opening) ImGui::OpenPopup("Open file");
   d.opening = false;
-  if (!ImGui::BeginPopupModal("Open file", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (!beginDialog("Open file")) return;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 44);
-  // Typing goes to the path at once, without a click in it first.
+  // Typing goes to the path at once, without a click in it first; a path left from before is
+  // selected, so that what is typed replaces it.
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  const bool enter = inputTextWithHint("##path", "a file or a folder", d.path, ImGuiInputTextFlags_EnterReturnsTrue);
+  const bool enter = inputTextWithHint("##path", "a file or a folder", d.path,
+                                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
+  takeTextTypedBeforeTheField(d.path);
   noteControl(s, "open.path");
   if (ImGui::Button("Up")) d.up();
   ImGui::SameLine();

@@ -225,7 +225,7 @@ void drawOptimiseDialog(Inspector::State& s) {
     ImGui::OpenPopup("Optimise region");
   }
   s.dialogs.optimise.opening = false;
-  s.dialogs.optimise.open = ImGui::BeginPopupModal("Optimise region", nullptr, ImGuiWindowFlags_AlwaysAutoResize);
+  s.dialogs.optimise.open = beginDialog("Optimise region");
   if (!s.dialogs.optimise.open) {
     // The box stays with its lines for the next opening; where it was dragged on the screen
     // does not, as the camera may move meanwhile.
@@ -378,7 +378,7 @@ namespace {
 bool askToDiscard(Inspector::State& s, Comparison& c) {
   constexpr const char* kTitle = "Close without saving?";
   if (!ImGui::IsPopupOpen(kTitle)) ImGui::OpenPopup(kTitle);
-  if (!ImGui::BeginPopupModal(kTitle, nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return false;
+  if (!beginDialog(kTitle)) return false;
   ImGui::Text("The re-optimised program of lines %u-%u is kept but not saved.", c.first, c.last);
   ImGui::TextUnformatted("Closed, it is gone (optimising again makes it anew).");
   const bool discard = ImGui::Button("Close without saving");

@@ -107,7 +107,7 @@ void Inspector::State::showRunDifference(bool difference) {
 void drawCompareDialog(Inspector::State& s) {
   if (s.dialogs.compare.opening) ImGui::OpenPopup("Compare with another run");
   s.dialogs.compare.opening = false;
-  if (!ImGui::BeginPopupModal("Compare with another run", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (!beginDialog("Compare with another run")) return;
   ImGui::TextWrapped("A Biip dump of the same program (another simulation, or a machine's trace imported with its "
                      "lines), aligned to this run by G-code line and arc length:");
   ImGui::SetNextItemWidth(560);

@@ -47,7 +47,7 @@ void Inspector::State::saveWith(const std::string& path, std::function<void(cons
 
 void drawOverwriteQuestion(Inspector::State& s) {
   if (s.dialogs.overwriteQuestion && !ImGui::IsPopupOpen("Replace file?")) ImGui::OpenPopup("Replace file?");
-  if (!ImGui::BeginPopupModal("Replace file?", nullptr, ImGuiWindowFlags_AlwaysAutoResize)) return;
+  if (!beginDialog("Replace file?")) return;
   if (!s.dialogs.overwriteQuestion) {
     ImGui::CloseCurrentPopup();
     ImGui::EndPopup();

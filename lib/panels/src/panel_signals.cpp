@@ -166,7 +166,8 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
   // taken for the other.
   if (!curve.wholeRun) curve.wholeRun = curve.values.range(0, curve.values.size());
   const float runLo = static_cast<float>(curve.wholeRun->first * scale), runHi = static_cast<float>(curve.wholeRun->second * scale);
-  std::snprintf(label, sizeof label, "%s [%s]  axis %s .. %s; run %s .. %s", curve.label.c_str(), unit,
+  const std::string unitText = unit[0] != '\0' ? std::string(" [") + unit + "]" : std::string();
+  std::snprintf(label, sizeof label, "%s%s  axis %s .. %s; run %s .. %s", curve.label.c_str(), unitText.c_str(),
                 readableValue(lo, resolution).c_str(), readableValue(hi, resolution).c_str(),
                 readableValue(runLo, resolution).c_str(), readableValue(runHi, resolution).c_str());
   textOnBacking(draw, ImVec2(origin.x + 4, origin.y + 2), IM_COL32(230, 230, 230, 255), label);
@@ -205,7 +206,9 @@ void drawCurve(Inspector::State& s, Curve& curve, double scale, const char* unit
 // marker, the G-code line, the row, the curves' cursor), as a preview plays the tool along its path.
 void drawPlayback(Inspector::State& s, const Trajectory& t) {
   app_model::Playback& play = s.follow.playback;
-  const bool toggled = ImGui::Button(play.playing ? "Pause" : "Play");
+  // As wide playing as paused: the speed and the slider beside it stay put.
+  const float playWidth = ImGui::CalcTextSize("Pause").x + 2 * ImGui::GetStyle().FramePadding.x;
+  const bool toggled = ImGui::Button(play.playing ? "Pause###play" : "Play###play", ImVec2(playWidth, 0));
   noteControl(s, "curves.play");
   if (toggled) play.toggle(s.selection);
   ImGui::SameLine();
@@ -242,10 +245,20 @@ void drawSignalCurves(Inspector::State& s, float x, float y, float w, float h) {
   if (ImGui::Button("Whole time")) s.follow.curveFirst = 0, s.follow.curveLast = doc->samples->size();
   ImGui::SameLine();
   const app_model::Selection& sel = s.selection.current();
-  if (ImGui::Button("Around selection") && sel.sample) {
+  const bool around = ImGui::Button("Around selection");
+  noteControl(s, "curves.around");
+  if (around && sel.sample) {
     const std::size_t half = 2000;
     s.follow.curveFirst = *sel.sample > half ? *sel.sample - half : 0;
     s.follow.curveLast = std::min(doc->samples->size(), *sel.sample + half);
+  }
+  // Playing, the curves turn the page when the tool leaves the stretch shown, as a chart
+  // recorder does: the same width, the tool near its left.
+  if (s.follow.playback.playing && sel.sample && s.follow.curveLast > s.follow.curveFirst &&
+      (*sel.sample < s.follow.curveFirst || *sel.sample >= s.follow.curveLast)) {
+    const std::size_t width = s.follow.curveLast - s.follow.curveFirst, size = doc->samples->size();
+    s.follow.curveFirst = std::min(*sel.sample > width / 10 ? *sel.sample - width / 10 : 0, size > width ? size - width : 0);
+    s.follow.curveLast = std::min(size, s.follow.curveFirst + width);
   }
   ImGui::SameLine();
   ImGui::Text("samples %zu .. %zu", s.follow.curveFirst, s.follow.curveLast);

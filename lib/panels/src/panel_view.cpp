@@ -59,9 +59,11 @@ void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, 
       {sampleName(t, k), fmt::format("line {}", t.line[k]), fmt::format("t {:.3f} s", t.timeAt(k))},
       {fmt::format("X {:.{}f}", u.length(t.x[k]), d), fmt::format("Y {:.{}f}", u.length(t.y[k]), d),
        fmt::format("Z {:.{}f} {}", u.length(t.z[k]), d, u.lengthUnit())},
-      {fmt::format("v {:.1f} {}", u.length(doc->curves[0].values.value(k)), u.feedUnit()),
-       fmt::format("a {:.1f} {}", u.length(doc->curves[1].values.value(k)), u.accelerationUnit()),
-       fmt::format("j {:.0f} {}", u.length(doc->curves[2].values.value(k)), u.jerkUnit())}};
+      // As the data table reads them (no "-0.0" for an acceleration below what is told apart).
+      {fmt::format("v {} {}", readableValue(u.length(doc->curves[0].values.value(k)), u.motionResolution(0)), u.feedUnit()),
+       fmt::format("a {} {}", readableValue(u.length(doc->curves[1].values.value(k)), u.motionResolution(1)),
+                   u.accelerationUnit()),
+       fmt::format("j {} {}", readableValue(u.length(doc->curves[2].values.value(k)), u.motionResolution(2)), u.jerkUnit())}};
   const float left = size.x * static_cast<float>(vis::kAxesCornerWidth) + 10;
   const float room = size.x * static_cast<float>(vis::kLegendLeft) - left - 8;
   // Each group on lines of its own, as many of its values on a line as fit.

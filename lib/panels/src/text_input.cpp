@@ -26,4 +26,23 @@ bool inputTextWithHint(const char* label, const char* hint, std::string& text, I
                                   flags | ImGuiInputTextFlags_CallbackResize, resizeString, &text);
 }
 
+void takeTextTypedBeforeTheField(std::string& text, bool inItsWindow) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (ImGui::IsItemActive() || io.InputQueueCharacters.empty() || (inItsWindow && !ImGui::IsWindowFocused())) return;
+  for (const ImWchar c : io.InputQueueCharacters) {
+    if (c < 0x20 || c == 0x7f) continue;  // control characters are keys, not text
+    if (c < 0x80) {
+      text += static_cast<char>(c);
+    } else if (c < 0x800) {
+      text += static_cast<char>(0xC0 | (c >> 6));
+      text += static_cast<char>(0x80 | (c & 0x3F));
+    } else {
+      text += static_cast<char>(0xE0 | (c >> 12));
+      text += static_cast<char>(0x80 | ((c >> 6) & 0x3F));
+      text += static_cast<char>(0x80 | (c & 0x3F));
+    }
+  }
+  io.InputQueueCharacters.resize(0);
+}
+
 }  // namespace isurface::panels

@@ -284,6 +284,20 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (axesForNonModal && groups.has(kGroupMotion) && groups.code[kGroupMotion] != kG80 && axes)
     return fail(groups.column[kGroupMotion],
                 "Cannot use two G codes that both use axis values");
+  // G65's A, B and C are a macro's arguments. G28 and G30 would move the rotary axes through
+  // their reference positions: refused (a zero while they stand at zero changes nothing). An
+  // offset of the rotary axes (G10, G52, G92) is kept in mind: a rotary move after it is refused
+  // (rotaryOffsetLine_), as its offset is not modelled.
+  if (axesForNonModal && nonModal != kG65)
+    for (char c : {'A', 'B', 'C'}) {
+      if (!block.has(c)) continue;
+      const bool still = block.get(c) == 0 && state_.rotary == std::array<double, 3>{};
+      if ((nonModal == kG28 || nonModal == kG30 || groups.code[kGroupRotation] == kG68) && !still)
+        return fail(block.col(c), fmt::format("{} word with G28, G30 or G68 (reference moves of the rotary axes) is not "
+                                              "supported",
+                                              c));
+      if (block.get(c) != 0 && rotaryOffsetLine_ == 0) rotaryOffsetLine_ = moveLine();
+    }
   if (nonModal == kG92 || nonModal == kG52 || nonModal == kG92_1 || nonModal == kG92_2 || nonModal == kG92_3) {
     if (!setOffset(block, nonModal)) return false;
   } else if (nonModal == kG28 || nonModal == kG30) {
@@ -333,6 +347,7 @@ bool InterpreterState::executeBlock(const Block& block) {
           return fail(groups.column[kGroupNonModal], "Cannot use G53 incremental");
       }
       moveColumn_ = column;
+      if (!readRotaryWords(block, motion, nonModal, column)) return false;
       if (motion == kG0 || motion == kG1) {
         if (!straight(block, motion, column)) return false;
       } else if (isArc) {
@@ -358,12 +373,6 @@ bool InterpreterState::executeBlock(const Block& block) {
   if (block.has('R') && !arcRan && !cycleRan && nonModal != kG10 && groups.code[kGroupRotation] != kG68 &&
       !(explicitMotion && isCycle(motion)))
     return fail(block.col('R'), "R word with no g code that uses it");
-  if ((block.has('A') || block.has('B') || block.has('C')) && !warnedRotary_) {
-    std::uint32_t column = 0;
-    for (char c : {'A', 'B', 'C'})
-      if (block.has(c)) { column = block.col(c); break; }
-    warnOnce(warnedRotary_, column, "A, B and C axis words are ignored: only X, Y and Z are modelled");
-  }
 
   // Spindle and tool changes happen before this block's motion: the previous move ends at rest.
   if (stopBefore && movesBefore > 0) moves_[movesBefore - 1].flags |= kStopAfter;
@@ -393,6 +402,39 @@ void InterpreterState::applyModalCodes(const GroupedCodes& groups) {
   if (groups.has(kGroupDistance)) state_.incremental = groups.code[kGroupDistance] == kG91;
   if (groups.has(kGroupArcDistance)) state_.arcAbsolute = groups.code[kGroupArcDistance] == kG90_1;
   if (groups.has(kGroupRetract)) state_.retractToR = groups.code[kGroupRetract] == kG99;
+}
+
+bool InterpreterState::readRotaryWords(const Block& block, int motion, int nonModal, std::uint32_t column) {
+  std::uint32_t rotaryColumn = 0;
+  for (char c : {'A', 'B', 'C'})
+    if (block.has(c) && rotaryColumn == 0) rotaryColumn = block.col(c);
+  if (rotaryColumn == 0) return true;
+  // What is not modelled of the rotary axes is refused, never read as if they stood still.
+  if (isCycle(motion)) return fail(rotaryColumn, "A, B or C words in a canned cycle are not supported");
+  if (nonModal == kG53) return fail(rotaryColumn, "A, B or C words with G53 (machine coordinates) are not supported");
+  if (state_.cutterComp != kG40)
+    return fail(rotaryColumn, "A, B or C words under cutter radius compensation (G41/G42) are not supported");
+  if (rotaryOffsetLine_ != 0)
+    return fail(rotaryColumn, fmt::format("A, B or C words after an offset of the rotary axes (G10, G52 or G92 with A, "
+                                          "B or C, line {}) are not supported",
+                                          rotaryOffsetLine_));
+  (void)column;
+  for (int i = 0; i < 3; ++i) {
+    const char c = "ABC"[i];
+    if (!block.has(c)) continue;
+    const double v = block.get(c);  // degrees, in inch programs too
+    state_.rotary[i] = state_.incremental ? state_.rotary[i] + v : v;
+  }
+  return true;
+}
+
+void InterpreterState::noteRotary() {
+  rotaryNoted_ = state_.rotary;
+  const RotaryPosition change{movesMade(), state_.rotary};
+  std::vector<RotaryPosition>& changes = result_.program.rotary;
+  if (!changes.empty() && changes.back().move == change.move) changes.back() = change;
+  else changes.push_back(change);
+  if (sink_) sink_->rotaryChanged(change);
 }
 
 // G64 alone blends without a tolerance of its own; P without Q merges lines within P, as

@@ -81,6 +81,7 @@ bool InterpreterState::setOffset(const Block& block, int code) {
 
 void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uint8_t extraFlags) {
   if (options_.callStack) reportCallStack();
+  if (state_.rotary != rotaryNoted_) noteRotary();
   Move& m = moves_.emplace_back();
   m.end = end;
   m.line = moveLine();
@@ -96,6 +97,7 @@ void InterpreterState::emit(MoveKind kind, const Vec3& end, float feed, std::uin
 void InterpreterState::emitArc(MoveKind kind, const Vec3& end, const Vec3& centre, unsigned turns,
                       float feed) {
   if (options_.callStack) reportCallStack();
+  if (state_.rotary != rotaryNoted_) noteRotary();
   Move& m = moves_.emplace_back();
   m.end = end;
   m.centre = centre;

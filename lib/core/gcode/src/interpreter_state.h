@@ -76,6 +76,7 @@ int workSystemIndex(int coordSystem);
 // Everything that persists from block to block. Small, so a block can be undone by copying.
 struct ModalState {
   Vec3 position = Vec3::Zero();  // mm
+  std::array<double, 3> rotary{};  // A, B, C, deg, as the program writes them
   int motion = kG80;
   int pathMotion = kG80;        // the last of G0-G3 given (Fanuc's group 01)
   Plane plane = Plane::XY;
@@ -153,6 +154,10 @@ class InterpreterState {
   bool groupCodes(const Block& block, GroupedCodes& groups);
   void applyModalCodes(const GroupedCodes& groups);
   void applyPathBlending(const Block& block);
+  // A block's A, B and C words: the rotary position its G0-G3 move ends at (false: refused).
+  bool readRotaryWords(const Block& block, int motion, int nonModal, std::uint32_t column);
+  // Tells the program (and a streaming sink) the rotary position the next move ends at.
+  void noteRotary();
   std::uint8_t pathFlags() const {
     return static_cast<std::uint8_t>((state_.exactStop ? kExactStop : 0) | (state_.exactPath ? kExactPath : 0));
   }
@@ -259,7 +264,8 @@ class InterpreterState {
   bool ended_ = false;            // M2 / M30 / closing '%'
   bool percentOpened_ = false;    // the first line with words was '%'
   bool seenWords_ = false;
-  bool warnedRotary_ = false;
+  std::array<double, 3> rotaryNoted_{};  // the rotary position last told to the program
+  std::uint32_t rotaryOffsetLine_ = 0;    // the first line that offset a rotary axis (0: none)
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
   bool warnedLinuxcncTap_ = false;

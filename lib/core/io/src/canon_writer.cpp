@@ -7,10 +7,12 @@
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <condition_variable>
 #include <cstring>
+#include <deque>
 #include <exception>
 #include <memory>
 #include <mutex>
@@ -151,7 +153,17 @@ inline char* writeText(char* out, const char (&text)[5]) {
   return out + 4;
 }
 
-char* writeMove(char* out, const Move& m, FeedText& feedText) {
+// The rotary axes after a move's feed, from the program's first A, B or C word on.
+char* writeRotary(char* out, const std::array<double, 3>& abc) {
+  for (int i = 0; i < 3; ++i) {
+    *out++ = ' ';
+    *out++ = "ABC"[i];
+    out = writeFixed4(out, abc[i]);
+  }
+  return out;
+}
+
+char* writeMove(char* out, const Move& m, FeedText& feedText, const std::optional<std::array<double, 3>>& rotary) {
   out = writeUnsigned(out, m.line);
   switch (m.kind) {
     case MoveKind::Rapid: out = writeText(out, " G0 "); break;
@@ -181,6 +193,7 @@ char* writeMove(char* out, const Move& m, FeedText& feedText) {
     *out++ = ' ';
   }
   out = writeFixed4(out, m.kind == MoveKind::Rapid ? 0.0 : feedText(m.feed));
+  if (rotary) out = writeRotary(out, *rotary);
   *out++ = '\n';
   return out;
 }
@@ -190,13 +203,15 @@ template <typename Write>
 class MoveFormatter {
  public:
   explicit MoveFormatter(Write& write) : output_(write) {}
+  // Rotary positions, told in move order before their moves are formatted.
+  void addRotary(const RotaryPosition& change) { rotaryChanges_.push_back(change); }
   void format(const Move* moves, std::size_t count) {
-    for (std::size_t i = 0; i < count; ++i) output_.advance(writeMove(output_.cursor(), moves[i], feedText_));
+    for (std::size_t i = 0; i < count; ++i) output_.advance(writeMove(output_.cursor(), moves[i], feedText_, nextRotary()));
   }
   // Each line followed by " @ " and the calls its move was made in, where it was made in any.
   void formatWithStacks(const Move* moves, std::size_t count, std::uint64_t firstIndex, CallStacks& stacks) {
     for (std::size_t i = 0; i < count; ++i) {
-      char* end = writeMove(output_.cursor(), moves[i], feedText_);
+      char* end = writeMove(output_.cursor(), moves[i], feedText_, nextRotary());
       const auto found = stacks.find(firstIndex + i);
       if (found != stacks.end()) {
         // The line's own newline goes after the stack; a stack longer than the room a line has
@@ -225,8 +240,21 @@ class MoveFormatter {
     }
   }
 
+  // The rotary position of the move about to be written (none before the first A, B or C).
+  const std::optional<std::array<double, 3>>& nextRotary() {
+    while (!rotaryChanges_.empty() && rotaryChanges_.front().move <= moveIndex_) {
+      rotary_ = rotaryChanges_.front().abc;
+      rotaryChanges_.pop_front();
+    }
+    ++moveIndex_;
+    return rotary_;
+  }
+
   Output<Write> output_;
   FeedText feedText_;
+  std::deque<RotaryPosition> rotaryChanges_;
+  std::optional<std::array<double, 3>> rotary_;
+  std::uint64_t moveIndex_ = 0;
 };
 
 // Moves per batch handed to the formatting thread (64 KB): small enough for the copy to stay in
@@ -281,6 +309,12 @@ class PipelinedCanonWriter final : public MoveSink {
     return true;
   }
 
+  void rotaryChanged(const RotaryPosition& change) override {
+    if (!thread_.joinable()) return formatter_.addRotary(change);
+    const std::lock_guard<std::mutex> lock(mutex_);
+    rotaryChanges_.push_back(change);
+  }
+
   // Waits until every move is formatted and written; passes on what the formatting threw.
   void finish() {
     stop(false);
@@ -331,6 +365,9 @@ class PipelinedCanonWriter final : public MoveSink {
         }
         if (queued_ == 0 || abandoned_) return;
         batch = &batches_[next_];
+        // Told before the moves they belong to were queued: the formatter has them in time.
+        for (const RotaryPosition& change : rotaryChanges_) formatter_.addRotary(change);
+        rotaryChanges_.clear();
       }
       try {
         formatter_.format(batch->data(), batch->size());
@@ -371,6 +408,7 @@ class PipelinedCanonWriter final : public MoveSink {
   std::exception_ptr error_;
   bool threadTried_ = false;
   std::thread thread_;
+  std::vector<RotaryPosition> rotaryChanges_;  // told, not yet handed to the formatter
 };
 
 // Formats on the interpreter's thread, each move with the calls it was made in: the stacks are
@@ -382,6 +420,7 @@ class StackedCanonWriter final : public MoveSink {
   void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override {
     formatter_.formatWithStacks(moves, count, firstIndex, stacks_);
   }
+  void rotaryChanged(const RotaryPosition& change) override { formatter_.addRotary(change); }
   // A move made again (its block was found bad and undone) replaces the stack told before.
   void tell(std::uint64_t moveIndex, const std::string& stack) {
     if (stack.empty())

@@ -4,6 +4,7 @@
 #include "isurface/base/units.h"
 #include "isurface/machine/machine.h"
 #include "isurface/base/json_text.h"
+#include "kinematics_description.h"
 
 namespace isurface {
 
@@ -58,6 +59,7 @@ std::string machineDescriptionJson(const Machine& m) {
   // Folders were made absolute when read: written so, they still hold wherever the file goes.
   if (!m.control.subroutinePath.empty()) control["subroutine_path"] = m.control.subroutinePath;
   root["control"] = control;
+  if (m.kinematics) root["kinematics"] = kinematicsJson(*m.kinematics);
   if (!m.toolDiameters.empty()) {
     // Diameters in mm: the table's own units are not kept once read.
     json diameters = json::object();

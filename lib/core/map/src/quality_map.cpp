@@ -133,12 +133,14 @@ std::vector<std::string> surfaceNotes(const Trajectory& samples, const QualityMa
   if (std::string notJoined = passesNotJoined(samples, map.passes, *map.mesh); !notJoined.empty())
     notes.push_back(std::move(notJoined));
   const double share = map.mesh->joinedShare();
+  // Once a pattern is chosen, the gap is what is left to try.
+  const bool found = map.request.pattern == PathPattern::Auto;
   if (share < kLittleSurfaceShare)
-    notes.push_back(fmt::format("only {:.0f} % {} ({} passes, {}{}): if the program is a raster or waterlines, "
-                                "choose its pass pattern, or raise the gap ({})",
-                                100 * share, kLittleSurfaceNote, map.passes.passes.size(),
-                                pathPatternName(map.passes.pattern),
-                                map.request.pattern == PathPattern::Auto ? " as found" : "", remedy));
+    notes.push_back(fmt::format("only {:.0f} % {} ({} passes, {}{}): {}raise the gap ({})", 100 * share,
+                                kLittleSurfaceNote, map.passes.passes.size(), pathPatternName(map.passes.pattern),
+                                found ? " as found" : " as chosen",
+                                found ? "if the program is a raster or waterlines, choose its pass pattern, or " : "",
+                                remedy));
   return notes;
 }
 

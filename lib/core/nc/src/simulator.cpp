@@ -21,6 +21,17 @@ namespace {
 constexpr std::size_t kExpectedTail = 16;
 constexpr std::size_t kLargestExpectation = std::size_t(1) << 32;
 
+// Until the machine's joints are planned, a program that turns its rotary axes is refused: its
+// tool tip simulated as if A, B and C stood still would show feeds no machine runs.
+InputError rotaryMotionRefused(const std::string& source, std::uint32_t line, std::uint32_t column,
+                               const std::array<double, 3>& abc) {
+  return InputError(Diagnostic{source, line, column,
+                               fmt::format("the rotary axes move here (A {:g} B {:g} C {:g} deg): simulating five-axis "
+                                           "motion (the machine's joints, tool-centre-point control) is not supported "
+                                           "yet, and the tool tip alone would show feeds the machine does not run",
+                                           abc[0], abc[1], abc[2])});
+}
+
 // The interpolator does not know the program's name; its errors get it here.
 InputError naming(const InputError& e, const std::string& source) {
   if (!e.diagnostic().file.empty()) return e;
@@ -70,6 +81,11 @@ namespace {
 
 SimulationReport simulateWithoutNotes(const Program& program, const Machine& machine, SampleSink& sink,
                                       const ProgressCallback& progress) {
+  if (!program.rotary.empty()) {
+    const std::size_t first = static_cast<std::size_t>(program.rotary.front().move);
+    const Move& m = program.moves.at(first);
+    throw rotaryMotionRefused(program.source, m.line, m.column, program.rotary.front().abc);
+  }
   if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) return simulateOnLinuxCnc(program, machine, sink, progress);
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
     if (progress) progress(0.1 * f);
@@ -153,11 +169,19 @@ void StreamingSimulation::blendingChanged(const PathBlending& blending) {
   if (linuxcnc_) linuxcnc_->blendingChanged(blending);
 }
 
+void StreamingSimulation::rotaryChanged(const RotaryPosition& rotary) {
+  if (!firstRotary_) firstRotary_ = rotary;
+}
+
 StreamingSimulation::~StreamingSimulation() = default;
 
 void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) {
   if (simulationError_) return;
   try {
+    if (firstRotary_ && firstRotary_->move >= firstIndex && firstRotary_->move < firstIndex + count) {
+      const Move& m = moves[firstRotary_->move - firstIndex];
+      throw rotaryMotionRefused(source_, m.line, m.column, firstRotary_->abc);
+    }
     if (linuxcnc_) {
       for (std::size_t i = 0; i < count; ++i) {
         feeds_.note(moves[i], moveStart_);

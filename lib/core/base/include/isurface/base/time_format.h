@@ -4,7 +4,8 @@
 
 namespace isurface {
 
-// "m:ss.mmm" (minutes run past 59); 0:00.000 for a time that is not a finite positive number.
+// "m:ss.mmm", from an hour on "h:mm:ss.mmm"; 0:00.000 for a time that is not a finite positive
+// number.
 std::string formatDuration(double seconds);
 
 }  // namespace isurface

@@ -28,6 +28,8 @@ class MoveSink {
   }
   // G64's tolerances from move `blending.firstMove` on; told before that move is consumed.
   virtual void blendingChanged(const PathBlending& blending) { (void)blending; }
+  // A, B and C at the end of move `rotary.move` on; told before that move is consumed.
+  virtual void rotaryChanged(const RotaryPosition& rotary) { (void)rotary; }
   // True once the sink takes no more moves (its run is over: an error it keeps, a bound passed):
   // the interpretation then stops, instead of making moves no one uses.
   virtual bool stopped() const { return false; }

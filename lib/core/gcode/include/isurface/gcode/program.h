@@ -2,6 +2,7 @@
 // The interpreted program: a flat list of moves in absolute workpiece millimetres, each tied to
 // the physical source line that produced it. Arcs stay exact (centre, plane, turns).
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -33,6 +34,13 @@ struct PathBlending {
   std::uint64_t firstMove = 0;
   double blend = 0;
   double merge = 0;
+};
+
+// The rotary axes' position (A, B, C in degrees, as the program writes them) at the end of move
+// `move`, and of every move after it until the next such position.
+struct RotaryPosition {
+  std::uint64_t move = 0;
+  std::array<double, 3> abc{};
 };
 
 // The program's own coordinate frame from a move on: G92 / G52's offset and G68's rotation.
@@ -89,10 +97,17 @@ struct Program {
   std::vector<Diagnostic> warnings; // non-fatal notes (e.g. cutter compensation ignored)
   std::vector<PathBlending> blending; // each G64 that changed the tolerances, in move order
   std::vector<CoordinateFrame> frames; // each change of G92 / G52 / G68, in move order; none: no offset
+  std::vector<RotaryPosition> rotary;  // each change of A, B or C, in move order; none: never moved
   std::uint32_t lineCount = 0;      // physical lines in the source
   bool inch = false;                // written in inches: the first G20/G21 was G20 (or the control's default)
 
   const Vec3& startOf(std::size_t i) const { return i == 0 ? start : moves[i - 1].end; }
+  // A, B and C (deg) at the end of move `i`: all 0 until the program moves them.
+  std::array<double, 3> rotaryAt(std::size_t i) const {
+    const auto after = std::upper_bound(rotary.begin(), rotary.end(), i,
+                                        [](std::size_t m, const RotaryPosition& r) { return m < r.move; });
+    return after == rotary.begin() ? std::array<double, 3>{} : std::prev(after)->abc;
+  }
   // The frame move `i` was programmed in.
   CoordinateFrame frameOf(std::size_t i) const {
     const auto after = std::upper_bound(frames.begin(), frames.end(), i,

@@ -2,10 +2,12 @@
 // The machine description a simulation runs against: interpolation cycle, per-axis limits and
 // servo gains, path tolerance. Read from JSON (resources/machines/default.json documents it).
 #include <array>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "isurface/base/geometry.h"
+#include "isurface/kinematics/five_axis.h"
 #include "isurface/machine/tool_table.h"
 
 namespace isurface {
@@ -62,6 +64,8 @@ struct Machine {
   // control's machine units.
   ToolDiameters toolDiameters;
   bool toolTableInch = false;
+  // Five-axis machines: how the rotary axes carry the part or the tool (none: three axes).
+  std::optional<FiveAxisKinematics> kinematics;
   // s; a simulated run longer than this is refused: its samples would fill the disk or memory
   // (100 h at 1 ms is 360 million samples). Not part of the description: a command's option.
   double longestRun = 100 * 3600.0;

@@ -46,6 +46,7 @@ class StreamingSimulation : public MoveSink {
   // throws it; stopped() then tells the interpreter to read no more, and later moves are ignored.
   void consume(const Move* moves, std::size_t count, std::uint64_t firstIndex) override;
   void blendingChanged(const PathBlending& blending) override;
+  void rotaryChanged(const RotaryPosition& rotary) override;
   // Once planning has failed or the run has passed the machine's longest run: the moves after
   // are not wanted, and the interpretation stops.
   bool stopped() const override { return simulationError_.has_value(); }
@@ -65,6 +66,7 @@ class StreamingSimulation : public MoveSink {
   std::unique_ptr<LinuxCncMotion> linuxcnc_;  // the machine's control is LinuxCNC 2.9  // once the dwell before the first motion is known
   Vec3 start_;
   Vec3 moveStart_;                 // where the next move handed over starts
+  std::optional<RotaryPosition> firstRotary_;  // the first move that turns a rotary axis: refused
   // The moves that may become segments, from the one being interpolated on.
   struct HeldMove {
     std::uint64_t index;  // in the whole program
