@@ -14,7 +14,6 @@
 #include <cctype>
 #include <cstdlib>
 #include <filesystem>
-#include <regex>
 #include <sstream>
 
 #include "gcode_test_support.h"
