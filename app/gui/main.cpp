@@ -48,7 +48,11 @@ std::vector<std::array<int, 4>> heldReleases;
 bool shortcutSinceFrame = false;
 std::vector<unsigned int> heldCharacters;
 
+// When the last key, character or button came: the loop draws on for a second after it.
+double inputSeenAt = 0;
+
 void onChar(GLFWwindow* window, unsigned int character) {
+  inputSeenAt = glfwGetTime();
   if (shortcutSinceFrame || !heldCharacters.empty()) {
     heldCharacters.push_back(character);
     return;
@@ -57,6 +61,7 @@ void onChar(GLFWwindow* window, unsigned int character) {
 }
 
 void onKey(GLFWwindow* window, int key, int scancode, int action, int mods) {
+  inputSeenAt = glfwGetTime();
   if (action == GLFW_PRESS && (mods & GLFW_MOD_CONTROL) != 0) shortcutSinceFrame = true;
   if (action == GLFW_RELEASE && (!pressedSinceFrame.empty() || !heldReleases.empty())) {
     heldReleases.push_back({key, scancode, action, mods});
@@ -93,6 +98,7 @@ std::optional<HeldPress> handedOn;   // the press the next frame shows
 constexpr float kReplayFrameSeconds = 1.0f / 60;
 
 void onMouseButton(GLFWwindow* window, int button, int action, int mods) {
+  inputSeenAt = glfwGetTime();
   if (action == GLFW_PRESS && button >= 0 && button < 3 &&
       (pressesSinceFrame[button]++ > 0 || ImGui::GetIO().MouseDown[button] || !heldPresses.empty())) {
     HeldPress press{button, mods, 0, 0};
@@ -197,8 +203,8 @@ constexpr const char* kUsage = R"(Usage: isurface [FILE...]
 
 iSurface: NC interpolation quality maps in a window. Opens the G-code programs, Biip dumps
 (Biip.dat) and machine traces (LinuxCNC halsampler text, CSV) named, a dump or trace after its
-program joining it; a program without a dump is simulated with the machine chosen in the window
-(the built-in 3-axis machining centre at first). Files may also be dropped on the window or
+program joining it; a program without a dump is simulated with the machine last applied to it
+in the window's Machine window (the built-in 3-axis machining centre otherwise). Files may also be dropped on the window or
 opened with File > Open (Ctrl+O).
 
 In the window: click the surface to pick a sample (every panel follows: the G-code line, the
@@ -306,7 +312,12 @@ int run(int argc, char** argv) {
     std::string toldState;
     while (!glfwWindowShouldClose(window) && !inspector.quitRequested()) {
       if (exitAfter >= 0 && dropped.empty() && !inspector.busy() && exitAfter-- == 0) break;
+      // Every input counts, not only the one that woke the loop: a click's result is drawn a
+      // frame after it, and one that came late in the second after the last wake was left undrawn
+      // until the pointer moved.
+      lastInput = std::max(lastInput, inputSeenAt);
       waitForInput(inspector.busy() || inspector.refining(), frameDue || !dropped.empty(), exitAfter >= 0, lastInput);
+      const double frameStart = glfwGetTime();
       // After a first frame: a map is made for the view's size, known once it has been laid out.
       if (!dropped.empty() && laidOut) {
         inspector.open(dropped);  // together: a dump after its program joins it
@@ -332,6 +343,9 @@ int run(int argc, char** argv) {
       tellState(inspector, toldState);
       keepSettings(false);
       laidOut = true;
+      // A long frame (a picture exported, a file written) is followed by frames that show its
+      // result, as input is.
+      if (glfwGetTime() - frameStart > 0.2) lastInput = glfwGetTime();
     }
     keepSettings(true);
   }

@@ -156,4 +156,11 @@ TEST(windowLayout, TheExportButtonStaysPutWhenAProblemIsSaid) {
   const auto withoutPath = ui.inspector().controlRect("export.write");
   ASSERT_TRUE(withPath && withoutPath);
   EXPECT_EQ((*withPath)[1], (*withoutPath)[1]);
+  // Nor does another kind of export, with settings of its own or none.
+  for (const char* kind : {"export.json", "export.report", "export.csv", "export.dump", "export.png"}) {
+    test::clickControl(ui, kind);
+    const auto rect = ui.inspector().controlRect("export.write");
+    ASSERT_TRUE(rect.has_value());
+    EXPECT_EQ((*rect)[1], (*withPath)[1]) << kind;
+  }
 }

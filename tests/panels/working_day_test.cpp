@@ -544,10 +544,47 @@ TEST(workingDay, AKeptProgramIsNotClosedUnsavedWithoutAsking) {
 // field that has not been clicked.
 TEST(workingDay, APathTypedRightAfterOpeningGoesIntoTheOpenDialog) {
   auto ui = openedSample();
-  tapLetter(*ui, 'O');
-  ui->type("/tmp/program.nc");
+  // As the window sees a quick typist: the O key's press, then (a frame later, as the window
+  // holds characters that come after a shortcut) its own "o" with the first typed character,
+  // then one character a frame while the dialog opens and its field takes the keyboard.
+  const auto typeQuickly = [&](const std::string& path) {
+    ui->letter('O', true);
+    ui->frame();
+    ui->letter('O', false);
+    ui->type("o" + path.substr(0, 1));
+    ui->frame();
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      ui->type(path.substr(i, 1));
+      ui->frame();
+    }
+    settle(*ui, 2);
+  };
+  typeQuickly("/tmp/program.nc");
+  nlohmann::json state = described(*ui);
+  EXPECT_EQ(state["open_path"].get<std::string>(), "/tmp/program.nc");
+  EXPECT_EQ(state["colour"]["view"], "iso") << "the t of tmp ran the Top shortcut";
+  // Opened again, what is typed replaces the path left from before (the first Esc leaves the
+  // field, the second closes the dialog).
+  tap(*ui, ImGuiKey_Escape);
+  tap(*ui, ImGuiKey_Escape);
+  typeQuickly("/tmp/other.nc");
+  EXPECT_EQ(described(*ui)["open_path"].get<std::string>(), "/tmp/other.nc");
+}
+
+// Ctrl+F and the text typed right after it: all of it is looked for.
+TEST(workingDay, TextTypedRightAfterCtrlFIsLookedFor) {
+  auto ui = openedSample();
+  ui->ctrl(true);
+  ui->letter('F', true);
+  ui->frame();
+  ui->letter('F', false);
+  ui->ctrl(false);
+  for (const char c : std::string("Y22.9")) {
+    ui->type(std::string(1, c));
+    ui->frame();
+  }
   settle(*ui, 2);
-  EXPECT_EQ(described(*ui)["open_path"].get<std::string>(), "/tmp/program.nc");
+  EXPECT_EQ(described(*ui)["gcode_search_text"], "Y22.9");
 }
 
 // A program whose surface covers little of its path (a test of moves, not a finish) keeps a

@@ -168,6 +168,7 @@ std::string Inspector::describe() const {
                               {"selection", selection},
                               {"curves_span", {s.follow.curveFirst, s.follow.curveLast}},  // samples the curves show
                               {"gcode_search", s.dialogs.gcodeSearch.message},
+                              {"gcode_search_text", s.dialogs.gcodeSearch.text},  // what the find field holds
                               {"gcode_top_line", s.follow.gcodeTopLine},
                               {"machine", machineJson(s.dialogs.machine.inUse)},
                               {"machine_source", s.dialogs.machine.source},

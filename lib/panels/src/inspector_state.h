@@ -37,6 +37,7 @@
 #include "isurface/vis/quality_scene.h"
 #include "isurface/workflow/run_inputs.h"
 #include "display_units.h"
+#include "text_input.h"
 #include "view_refinement.h"
 
 namespace isurface::panels {
@@ -223,6 +224,8 @@ struct ViewPointer {
 // The dialogs and windows over the layout, each with its own state.
 struct Dialogs {
   app_model::OpenDialog open;
+  TypeAhead openTyping;     // the Open dialog's path, typed before it has the keyboard
+  char openedByKey = 0;     // 'O' when the O key opened it: its own character is not typed
   app_model::LocateWindow locate;
   app_model::ExportDialog exportTo;
   app_model::OptimiseDialog optimise;
@@ -239,8 +242,7 @@ struct Dialogs {
   struct GcodeSearch {
     std::string text, message;
     bool focus = false;  // Ctrl+F: the field takes the keyboard on the next frame
-    // Frames left, from Ctrl+F, until the field has the keyboard: what is typed meanwhile is its text.
-    int awaitingKeyboard = 0;
+    TypeAhead typing;    // what is typed before it has it
   } gcodeSearch;
 };
 

@@ -28,7 +28,7 @@ bool shortcut(const Inspector::State& s, int key, bool ctrl = false) {
   const ImGuiIO& io = ImGui::GetIO();
   const Dialogs& d = s.dialogs;
   const bool dialogComing = d.open.opening || d.exportTo.opening || d.optimise.opening || d.locate.opening ||
-                            d.gcodeSearch.awaitingKeyboard > 0;
+                            d.gcodeSearch.focus || d.gcodeSearch.typing.framesLeft > 0;
   return !io.WantTextInput && !dialogComing && io.KeyCtrl == ctrl &&
          !ImGui::IsPopupOpen(nullptr, ImGuiPopupFlags_AnyPopupId) && ImGui::IsKeyPressed(key, false);
 }
@@ -134,7 +134,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
     const bool fileMenu = ImGui::BeginMenu("File");
     noteControl(s, "menu.file");
     if (fileMenu) {
-      if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.dialogs.open.open();
+      if (ImGui::MenuItem("Open G-code or Biip...", "O")) s.dialogs.openedByKey = 0, s.dialogs.open.open();
       const bool recentMenu = ImGui::BeginMenu("Recent files", !s.persistent.recentFiles.empty());
       noteControl(s, "menu.recent");
       if (recentMenu) {
@@ -199,8 +199,12 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
   ImGui::SetNextWindowPos(ImVec2(0, toolbarTop));
   ImGui::SetNextWindowSize(ImVec2(width, ImGui::GetFrameHeightWithSpacing() + 10));
   ImGui::Begin("##toolbar", nullptr, kPanel | ImGuiWindowFlags_NoTitleBar | ImGuiWindowFlags_NoScrollbar);
-  if (toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)") || shortcut(s, 'O') || shortcut(s, 'O', true))
+  const bool openButton = toolButton("Open", "Open a G-code program or a Biip dump (O, Ctrl+O)");
+  const bool openKey = shortcut(s, 'O');
+  if (openButton || openKey || shortcut(s, 'O', true)) {
+    s.dialogs.openedByKey = openKey && !openButton ? 'O' : 0;
     s.dialogs.open.open();
+  }
   if (toolButton("Simulate", "Simulate the active program again (S)") || shortcut(s, 'S')) simulate = true;
   if (toolButton("Machine", "The machine simulations use: limits, servo, load, save (M)") || shortcut(s, 'M'))
     s.openMachineWindow();

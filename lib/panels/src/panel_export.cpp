@@ -165,6 +165,10 @@ void drawExportDialog(Inspector::State& s) {
   ImGui::SameLine();
   kindButton(d, "the run as a Biip dump", ExportKind::RunDump);
   noteControl(s, "export.dump");
+  // Each kind's own settings in a block of one height, so that the path and the Export button
+  // below stay where they are when the kind changes.
+  ImGui::BeginChild("##kind", ImVec2(ImGui::GetFontSize() * 40, 2 * ImGui::GetFrameHeightWithSpacing()), false,
+                    ImGuiWindowFlags_NoScrollbar);
   if (d.kind == ExportKind::ViewPng) {
     ImGui::SetNextItemWidth(ImGui::GetFontSize() * 6);
     ImGui::InputInt("width [px]", &d.width, 0);
@@ -185,6 +189,7 @@ void drawExportDialog(Inspector::State& s) {
     ImGui::TextDisabled("every sample (lines, positions, feedback, feed) and the machine that made them, to open "
                         "again or give to isurface-cli");
   }
+  ImGui::EndChild();
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 30);
   if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();  // typing goes to the path at once
   inputTextWithHint("##path", "file to write", d.path);

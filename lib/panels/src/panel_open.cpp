@@ -70,12 +70,14 @@ void drawOpenDialog(Inspector::State& s) {
   d.opening = false;
   if (!beginDialog("Open file")) return;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 44);
-  // Typing goes to the path at once, without a click in it first; a path left from before is
-  // selected, so that what is typed replaces it.
-  if (ImGui::IsWindowAppearing()) ImGui::SetKeyboardFocusHere();
-  const bool enter = inputTextWithHint("##path", "a file or a folder", d.path,
-                                       ImGuiInputTextFlags_EnterReturnsTrue | ImGuiInputTextFlags_AutoSelectAll);
-  takeTextTypedBeforeTheField(d.path);
+  // Typing goes to the path at once, without a click in it first, replacing a path left from
+  // before.
+  if (ImGui::IsWindowAppearing()) {
+    ImGui::SetKeyboardFocusHere();
+    startTypeAhead(s.dialogs.openTyping, s.dialogs.openedByKey);
+  }
+  const bool enter = typeAheadField("##path", "a file or a folder", d.path, ImGuiInputTextFlags_EnterReturnsTrue,
+                                    s.dialogs.openTyping);
   noteControl(s, "open.path");
   if (ImGui::Button("Up")) d.up();
   ImGui::SameLine();

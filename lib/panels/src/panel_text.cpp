@@ -53,15 +53,11 @@ std::optional<std::size_t> steppedRow(std::optional<std::size_t> current, std::s
 // Shift+Enter (or Previous) to the one before, from the selected line, round past the ends.
 void drawSearchField(Inspector::State& s, const app_model::TextLines& text) {
   Dialogs::GcodeSearch& search = s.dialogs.gcodeSearch;
-  if (search.focus) ImGui::SetKeyboardFocusHere(), search.awaitingKeyboard = 3;
+  if (search.focus) ImGui::SetKeyboardFocusHere(), startTypeAhead(search.typing, 0);
   search.focus = false;
   ImGui::SetNextItemWidth(ImGui::GetFontSize() * 12);
-  const bool enter = inputTextWithHint("##find", "find (Ctrl+F)", search.text, ImGuiInputTextFlags_EnterReturnsTrue);
-  if (search.awaitingKeyboard > 0) {
-    --search.awaitingKeyboard;
-    if (ImGui::IsItemActive()) search.awaitingKeyboard = 0;
-    else takeTextTypedBeforeTheField(search.text, false);
-  }
+  const bool enter =
+      typeAheadField("##find", "find (Ctrl+F)", search.text, ImGuiInputTextFlags_EnterReturnsTrue, search.typing);
   noteControl(s, "gcode.find");
   const bool back = enter && ImGui::GetIO().KeyShift;
   if (enter) ImGui::SetKeyboardFocusHere(-1);  // the field keeps the keyboard for the next Enter
