@@ -188,11 +188,18 @@ AtomicOutputFile::AtomicOutputFile(std::string target, std::size_t bufferBytes)
     }
   }
   if (!direct_) {
-    std::string pattern = temporaryPattern(destination);
-    fd_ = ::mkostemp(pattern.data(), O_CLOEXEC);
-    if (fd_ < 0) fail(errno, "cannot create a temporary file in '" + folderOf(destination) + "'");
-    temp_ = pattern;
+    // Remembered for the signal handlers before the file is made, in the buffer mkostemp fills
+    // in place: a signal between making and remembering it left the file behind.
+    temp_ = temporaryPattern(destination);
     signalSlot_ = detail::rememberTemporary(temp_.c_str());
+    fd_ = ::mkostemp(temp_.data(), O_CLOEXEC);
+    if (fd_ < 0) {
+      const int error = errno;
+      detail::forgetTemporary(signalSlot_);
+      signalSlot_ = -1;
+      temp_.clear();
+      fail(error, "cannot create a temporary file in '" + folderOf(destination) + "'");
+    }
     if (::fchmod(fd_, mode) != 0) fail(errno);
     destination_ = destination;
   }
