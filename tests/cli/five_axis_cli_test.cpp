@@ -35,15 +35,27 @@ TEST(fiveAxisCli, CanonListsTheRotaryAxesOfEveryMove) {
   EXPECT_EQ(plain.out.find(" A0.0000"), std::string::npos);
 }
 
-TEST(fiveAxisCli, SimulatingRotaryMotionIsRefusedWithItsLine) {
+// A machine without rotary axes cannot run a program that turns them: refused with the line and
+// what to give instead, never the tip alone.
+TEST(fiveAxisCli, RotaryMotionOnAMachineWithoutRotaryAxesIsRefusedWithItsLine) {
   const std::string dump = (scratchDir() / "swarf.biip").string();
-  for (const std::string machine : {std::string(), " --machine " + std::string(test::sourceDir()) + "/resources/machines/linuxcnc-xyzbc-trt.json"}) {
-    const auto r = runCli("simulate " + program("swarf_bc") + machine + " -o " + dump);
-    EXPECT_EQ(r.exitCode, 2) << r.err;
-    EXPECT_NE(r.err.find("swarf_bc.ngc:8:"), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("the rotary axes move here"), std::string::npos) << r.err;
-    EXPECT_FALSE(std::filesystem::exists(dump));
-  }
+  const auto r = runCli("simulate " + program("swarf_bc") + " -o " + dump);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("swarf_bc.ngc:8:"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("the machine has no rotary axes"), std::string::npos) << r.err;
+  EXPECT_FALSE(std::filesystem::exists(dump));
+}
+
+// On the five-axis machine the dump holds the tool tip, the rotary axes and the joints.
+TEST(fiveAxisCli, SimulatingOnTheFiveAxisMachineWritesTheTipTheRotaryAxesAndTheJoints) {
+  const std::string dump = (scratchDir() / "swarf.biip").string();
+  const auto r = runCli("simulate " + program("swarf_bc") + " --machine " + std::string(test::sourceDir()) +
+                        "/resources/machines/linuxcnc-xyzbc-trt.json -o " + dump);
+  ASSERT_EQ(r.exitCode, 0) << r.err;
+  const auto info = runCli("info " + dump);
+  ASSERT_EQ(info.exitCode, 0) << info.err;
+  for (const char* channel : {"\"x\"", "\"b\"", "\"c\"", "\"joint_x\"", "\"joint_y\"", "\"joint_z\"", "\"joint_b\"", "\"joint_c\""})
+    EXPECT_NE(info.out.find(channel), std::string::npos) << channel << "\n" << info.out;
 }
 
 }  // namespace

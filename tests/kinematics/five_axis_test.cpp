@@ -3,6 +3,8 @@
 // joints LinuxCNC 2.9's xyzbc-trt kinematics commanded in a recording.
 #include <gtest/gtest.h>
 
+#include "five_axis_recording.h"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -167,31 +169,18 @@ TEST(fiveAxisKinematics, TheJointsLinuxCncCommanded) {
   const FiveAxisKinematics k = linuxcncTrt();
   const std::filesystem::path folder = std::filesystem::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-xyzbc-trt";
   std::size_t recordings = 0;
-  for (const auto& entry : std::filesystem::directory_iterator(folder)) {
-    const std::string path = entry.path().string(), suffix = ".halsampler.txt.gz";
-    if (path.size() < suffix.size() || path.compare(path.size() - suffix.size(), suffix.size(), suffix) != 0) continue;
-    const std::string name = entry.path().filename().string();
+  for (const std::string& name : test::recordingNames(folder)) {
+    const std::string path = (folder / (name + ".halsampler.txt.gz")).string();
     ++recordings;
-    FILE* in = popen(("gzip -dc '" + path + "'").c_str(), "r");
-    ASSERT_NE(in, nullptr);
-    std::vector<std::array<double, 10>> rows;  // joints X Y Z B C, axes x y z b c
-    char text[512];
-    while (std::fgets(text, sizeof text, in)) {
-      std::istringstream row(text);
-      double index;
-      std::array<double, 10> r;
-      row >> index;
-      for (double& v : r) row >> v;
-      if (row) rows.push_back(r);
-    }
-    pclose(in);
+    const std::vector<test::FiveAxisRow> rows = test::readFiveAxisRecording(path);
     ASSERT_GT(rows.size(), 1000u) << path;
     double worstLength = 0, worstAngle = 0;
     for (std::size_t i = 2; i < rows.size(); ++i) {
-      const auto& a = rows[i - 2];
-      const JointPosition j = jointsFor(k, {Vec3(a[5], a[6], a[7]), {a[8], a[9]}});
-      for (int c = 0; c < 3; ++c) worstLength = std::max(worstLength, std::fabs(j.linear[c] - rows[i][c]));
-      worstAngle = std::max({worstAngle, std::fabs(j.rotary[0] - rows[i][3]), std::fabs(j.rotary[1] - rows[i][4])});
+      const auto& a = rows[i - 2].axes;
+      const auto& joints = rows[i].joints;
+      const JointPosition j = jointsFor(k, {Vec3(a[0], a[1], a[2]), {a[3], a[4]}});
+      for (int c = 0; c < 3; ++c) worstLength = std::max(worstLength, std::fabs(j.linear[c] - joints[std::size_t(c)]));
+      worstAngle = std::max({worstAngle, std::fabs(j.rotary[0] - joints[3]), std::fabs(j.rotary[1] - joints[4])});
     }
     EXPECT_LT(worstLength, 0.001) << name;  // mm: the recording's 6 decimals, and its smoothing
     EXPECT_LT(worstAngle, 0.001) << name;   // deg

@@ -169,7 +169,13 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress,
                        bool feedback, std::vector<std::string>* warnings) {
   TrajectorySink trajectory(machine.cycle, program.source, feedback);
-  {
+  if (simulatesFiveAxis(machine)) {
+    // The joints do not pass ThreadedSink's thread.
+    trajectory.keepJointsOf(*machine.kinematics);
+    const SimulationReport report = simulate(program, machine, trajectory, progress);
+    if (warnings)
+      for (const Diagnostic& w : report.warnings) warnings->push_back(w.str());
+  } else {
     ThreadedSink sink(trajectory);
     const SimulationReport report = simulate(program, machine, sink, progress);
     sink.drain();

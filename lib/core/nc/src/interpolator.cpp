@@ -1,5 +1,7 @@
 #include "isurface/nc/interpolator.h"
 
+#include <cstddef>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,6 +19,23 @@
 #include "corner_blend.h"
 
 namespace isurface {
+
+std::vector<JointChannel> jointChannels(const FiveAxisKinematics& kinematics) {
+  std::vector<JointChannel> channels;
+  for (const RotaryAxis& axis : kinematics.rotary) {
+    const int i = axis.name - 'A';
+    if (i < 0 || i > 2) continue;
+    channels.push_back({std::string(1, char('a' + i)), offsetof(JointSample, a) + sizeof(double) * std::size_t(i)});
+  }
+  const char* linear[] = {"joint_x", "joint_y", "joint_z"};
+  for (std::size_t i = 0; i < 3; ++i) channels.push_back({linear[i], offsetof(JointSample, linear) + sizeof(double) * i});
+  for (std::size_t k = 0; k < 2; ++k) {
+    const char name = static_cast<char>(kinematics.rotary[k].name - 'A' + 'a');
+    channels.push_back({std::string("joint_") + name, offsetof(JointSample, rotary) + sizeof(double) * k});
+  }
+  return channels;
+}
+
 
 namespace {
 

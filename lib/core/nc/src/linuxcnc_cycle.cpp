@@ -79,6 +79,7 @@ void checkEnd(Segment& tc, const Segment* next, double cycle) {
 // One update of a segment over its `cycle`; moves the queue's position with it.
 void updateCycle(MotionQueue& queue, Segment& tc, const Segment* next) {
   const Vec3 before = tc.pointAt(tc.progress);
+  const Vec3 rotaryBefore = tc.rotaryAt(tc.progress);
   Update u{};
   if (!(tc.ramp && tc.term == Term::Tangent && ramp(tc, next, u))) u = trapezoid(tc, next);
   double v = tc.velocity + u.acceleration * tc.cycle;
@@ -92,6 +93,7 @@ void updateCycle(MotionQueue& queue, Segment& tc, const Segment* next) {
   tc.onFinalDeceleration = std::abs(u.desired - tc.velocity) < kVelocityEpsilon && u.acceleration < 0;
   checkEnd(tc, next, queue.cycle);
   queue.position += tc.pointAt(tc.progress) - before;
+  queue.rotary += tc.rotaryAt(tc.progress) - rotaryBefore;
 }
 
 void activate(Segment& tc) {
@@ -121,8 +123,10 @@ SegmentPart runCycle(MotionQueue& queue) {
   if (tc.splitting) {
     // The segment ends within this cycle; a tangent or blending next one moves in the rest.
     const Vec3 before = tc.pointAt(tc.progress);
+    const Vec3 rotaryBefore = tc.rotaryAt(tc.progress);
     tc.progress = tc.target;
     queue.position += tc.pointAt(tc.target) - before;
+    queue.rotary += tc.rotaryAt(tc.target) - rotaryBefore;
     tc.remove = true;
     if (next && (tc.term == Term::Tangent || tc.term == Term::Parabolic)) {
       if (tc.term == Term::Tangent) {

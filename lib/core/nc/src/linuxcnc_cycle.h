@@ -11,6 +11,7 @@ namespace isurface::linuxcnc {
 struct MotionQueue {
   std::deque<Segment> segments;
   Vec3 position = Vec3::Zero();  // commanded, mm
+  Vec3 rotary = Vec3::Zero();    // commanded A B C, deg
   double cycle = 0.001;          // s
 };
 

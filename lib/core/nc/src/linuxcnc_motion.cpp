@@ -18,6 +18,7 @@
 #include "linuxcnc_arc_blend.h"
 #include "linuxcnc_blend.h"
 #include "linuxcnc_cycle.h"
+#include "linuxcnc_rotary.h"
 
 namespace isurface {
 
@@ -35,6 +36,8 @@ constexpr std::size_t kQueueAhead = 4 * kLookAheadDepth;
 constexpr std::size_t kBatch = 4096;
 constexpr std::size_t kStalledCycles = 100000;
 
+const char* const kRotaryNames = "ABC";
+
 struct ChainPoint {
   Vec3 end;
   SegmentPart part;
@@ -43,7 +46,8 @@ struct ChainPoint {
 }  // namespace
 
 struct LinuxCncMotion::Impl {
-  Impl(const Machine& m, const Vec3& start, SampleSink& s) : machine(m), sink(s), canonEnd(start), startPosition(start) {
+  Impl(const Machine& m, const Vec3& start, SampleSink& s)
+      : machine(m), sink(s), rotaryAxes(rotaryLimits(m)), canonEnd(start), startPosition(start) {
     queue.position = start;
     queue.cycle = m.cycle;
     for (int i = 0; i < 3; ++i) {
@@ -51,8 +55,10 @@ struct LinuxCncMotion::Impl {
       bounds.acceleration[i] = m.axes[i].maxAcceleration;
     }
     bounds.cycle = m.cycle;
+    // On a five-axis machine the servos move the joints; at the start every rotary axis is at 0.
+    const Vec3 joints = m.kinematics ? jointsFor(*m.kinematics, TipPose{start, {0, 0}}).linear : start;
     if (sink.wantsFeedback())
-      for (int i = 0; i < 3; ++i) servos.emplace_back(m.axes[i], m.cycle, start[i]);
+      for (int i = 0; i < 3; ++i) servos.emplace_back(m.axes[i], m.cycle, joints[i]);
   }
 
   const Machine& machine;
@@ -61,8 +67,11 @@ struct LinuxCncMotion::Impl {
   MotionQueue queue;
   std::vector<AxisServo> servos;
   std::vector<SimSample> batch;
+  std::vector<JointSample> jointBatch;
+  RotaryLimits rotaryAxes;
   InterpolationSummary summary;
   Vec3 canonEnd;  // where the next segment starts, mm
+  Vec3 canonRotary = Vec3::Zero();  // A B C there, deg
   Vec3 startPosition;
   std::vector<ChainPoint> chain;
   PathBlending blending;
@@ -71,12 +80,14 @@ struct LinuxCncMotion::Impl {
   std::size_t segments = 0;
   SegmentPart lastPart{};
 
-  void add(std::uint64_t index, const Move& move, const Vec3& start);
+  void add(std::uint64_t index, const Move& move, const Vec3& start, const Vec3& rotaryEnd);
+  Vec3 reachedRotary(const Move& move, const Vec3& programmed) const;
   void joinOrFlush(const Move& move, const SegmentPart& part);
   bool joinable(const Move& move) const;
   void flushChain();
-  void enqueueLine(Vec3 from, Vec3 to, bool traverse, std::uint8_t flags, const SegmentPart& part);
-  void enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part);
+  void enqueueLine(Vec3 from, Vec3 to, const Vec3& rotaryTo, bool traverse, std::uint8_t flags,
+                   const SegmentPart& part);
+  void enqueueArc(const Vec3& start, const Move& move, const Vec3& rotaryTo, const SegmentPart& part);
   void enqueue(Segment tc, std::uint8_t flags);
   void joinToPrevious(Segment& tc);
   bool insertBlend(Segment* prev, Segment& tc, BlendArc& blend);
@@ -84,17 +95,43 @@ struct LinuxCncMotion::Impl {
   void optimize();
   void runAhead(std::size_t keep);
   void emit(const SegmentPart& part);
-  void push(const Vec3& position, const SegmentPart& part);
+  void push(const Vec3& position, const Vec3& rotary, const SegmentPart& part);
   void hold(double seconds);
   void flushBatch();
 };
 
-void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3& start) {
+// Where the rotary axes go for a programmed A B C: a wrapping axis the shortest way; an axis
+// past its range, or one the machine lacks, is refused with the move's line.
+Vec3 LinuxCncMotion::Impl::reachedRotary(const Move& move, const Vec3& programmed) const {
+  Vec3 reached = programmed;
+  for (int i = 0; i < 3; ++i) {
+    const auto u = static_cast<std::size_t>(i);
+    if (programmed[i] == canonRotary[i]) continue;
+    if (!rotaryAxes.present[u])
+      throw InputError(Diagnostic{"", move.line, move.column,
+                                  fmt::format("{} moves to {:g} deg, and the machine has no {} axis", kRotaryNames[i],
+                                              programmed[i], kRotaryNames[i])});
+    const RotaryAxis& axis = machine.kinematics->rotary[static_cast<std::size_t>(rotaryAxes.kinematicsIndex[u])];
+    if (axis.wraps) {
+      reached[i] = shortestWay(canonRotary[i], programmed[i]);
+    } else if (programmed[i] < axis.minimum - 1e-9 || programmed[i] > axis.maximum + 1e-9) {
+      throw InputError(Diagnostic{"", move.line, move.column,
+                                  fmt::format("{} {:g} deg is past the machine's range of {} ({:g} to {:g} deg)",
+                                              kRotaryNames[i], programmed[i], kRotaryNames[i], axis.minimum,
+                                              axis.maximum)});
+    }
+  }
+  return reached;
+}
+
+void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3& start, const Vec3& programmedRotary) {
   while (!pendingBlending.empty() && pendingBlending.front().firstMove <= index) {
     blending = pendingBlending.front();
     pendingBlending.pop_front();
   }
   const SegmentPart part{static_cast<std::uint32_t>(index), move.line, move.feed};
+  const Vec3 rotaryEnd = move.isMotion() ? reachedRotary(move, programmedRotary) : canonRotary;
+  const bool turns = rotaryEnd != canonRotary;
   if (move.kind == MoveKind::Dwell) {
     flushChain();
     runAhead(0);
@@ -104,14 +141,15 @@ void LinuxCncMotion::Impl::add(std::uint64_t index, const Move& move, const Vec3
   }
   if (move.isArc()) {
     flushChain();
-    enqueueArc(start, move, part);
-  } else if ((move.end - start).norm() < 1e-12) {
+    enqueueArc(start, move, rotaryEnd, part);
+  } else if ((move.end - start).norm() < 1e-12 && !turns) {
     // A move of no length: nothing queued; a stop it asks for still holds.
-  } else if (move.kind == MoveKind::Linear && !(move.flags & kExactStop) && blending.merge > 0) {
+  } else if (move.kind == MoveKind::Linear && !(move.flags & kExactStop) && blending.merge > 0 && !turns) {
     joinOrFlush(move, part);
   } else {
+    // A move that turns a rotary axis is never joined (the canon's see_segment).
     flushChain();
-    enqueueLine(start, move.end, move.kind == MoveKind::Rapid, move.flags, part);
+    enqueueLine(start, move.end, rotaryEnd, move.kind == MoveKind::Rapid, move.flags, part);
   }
   // A program stop, tool or spindle change waits until the motion queued is done: the last
   // segment ends as it would end the program (at its own acceleration).
@@ -141,36 +179,45 @@ void LinuxCncMotion::Impl::flushChain() {
   const Vec3 to = chain.back().end;
   const SegmentPart last = chain.back().part;
   chain.clear();
-  enqueueLine(canonEnd, to, false, 0, last);
+  enqueueLine(canonEnd, to, canonRotary, false, 0, last);
 }
 
-void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, bool traverse, std::uint8_t flags,
+void LinuxCncMotion::Impl::enqueueLine(Vec3 from, Vec3 to, const Vec3& rotaryTo, bool traverse, std::uint8_t flags,
                                        const SegmentPart& part) {
   Segment tc;
   tc.shape = Shape::Line;
   tc.start = from;
   tc.end = to;
-  tc.target = (to - from).norm();
+  tc.rotaryStart = canonRotary;
+  tc.rotaryEnd = rotaryTo;
+  const StraightLimits limits = straightLimits(machine, rotaryAxes, to - from, rotaryTo - canonRotary);
+  tc.target = limits.length;
   canonEnd = to;
+  canonRotary = rotaryTo;
   if (tc.target < 1e-12) return;
-  tc.direction = (to - from) / tc.target;
+  // A turn of the rotary axes alone keeps LinuxCNC's direction of a line of no length (+X).
+  tc.direction = limits.linear ? Vec3((to - from).normalized()) : Vec3::UnitX();
   tc.traverse = traverse;
-  const double axisVelocity = lineVelocityLimit(machine, tc.direction);
-  tc.maxVelocity = traverse ? std::min(axisVelocity, machine.rapidVelocity) : axisVelocity;
+  // The machine's rapid rate bounds the tip, not a turn of the rotary axes alone.
+  tc.maxVelocity = traverse && limits.linear ? std::min(limits.velocity, machine.rapidVelocity) : limits.velocity;
   tc.requested = traverse ? tc.maxVelocity : part.feed / 60.0;
-  tc.maxAcceleration = lineAccelerationLimit(machine, tc.direction);
+  tc.maxAcceleration = limits.acceleration;
   tc.part = part;
   enqueue(std::move(tc), flags);
 }
 
-void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const SegmentPart& part) {
+void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const Vec3& rotaryTo,
+                                      const SegmentPart& part) {
   Segment tc;
   tc.shape = Shape::Arc;
   tc.arc = ArcGeometry::from(start, move);
   tc.start = start;
   tc.end = move.end;
   tc.target = tc.arc.length();
+  tc.rotaryStart = canonRotary;
+  tc.rotaryEnd = rotaryTo;
   canonEnd = move.end;
+  canonRotary = rotaryTo;
   if (tc.target < 1e-12) return;
   // The axes the arc moves: its plane's, and the normal one for a helix.
   const PlaneAxes axes = tc.arc.axes;
@@ -180,6 +227,7 @@ void LinuxCncMotion::Impl::enqueueArc(const Vec3& start, const Move& move, const
     velocity = std::min(velocity, machine.axes[axes.w].maxVelocity);
     acceleration = std::min(acceleration, machine.axes[axes.w].maxAcceleration);
   }
+  capByRotary(rotaryAxes, tc.rotaryEnd - tc.rotaryStart, tc.target, velocity, acceleration);
   tc.maxVelocity = velocity;
   tc.requested = move.feed / 60.0;
   tc.maxAcceleration = acceleration;
@@ -206,7 +254,13 @@ void LinuxCncMotion::Impl::joinToPrevious(Segment& tc) {
   Segment* prev = &queue.segments.back();
   tc.blendBefore = prev->term == Term::Parabolic;
   if (prev->traverse != tc.traverse) setTerm(prev, &tc, Term::Stop);
-  if (prev->progress <= prev->target / 2 && setUpTangent(*prev, tc, bounds) == TangentCheck::Kink) {
+  // Where a rotary axis turns on either, LinuxCNC checks no tangency and makes no blend arc
+  // (tpSetupTangent fails): the parabolic blend of G64 stays.
+  // Nor does it then tell the new segment that it blends with the previous one: only the
+  // previous one halves its acceleration.
+  const bool rotary = prev->rotates() || tc.rotates();
+  if (rotary) tc.blendBefore = false;
+  if (!rotary && prev->progress <= prev->target / 2 && setUpTangent(*prev, tc, bounds) == TangentCheck::Kink) {
     std::optional<BlendArc> blend;
     if (prev->term == Term::Parabolic && !prev->finalized)
       blend = prev->shape == Shape::Line && tc.shape == Shape::Line ? lineLineBlend(*prev, tc, bounds)
@@ -324,23 +378,46 @@ void LinuxCncMotion::Impl::runAhead(std::size_t keep) {
 
 void LinuxCncMotion::Impl::emit(const SegmentPart& part) {
   // The position before the first cycle, as a recording starts.
-  if (summary.samples == 0 && batch.empty()) push(startPosition, part);
+  if (summary.samples == 0 && batch.empty()) push(startPosition, Vec3::Zero(), part);
   lastPart = part;
-  push(queue.position, part);
+  push(queue.position, queue.rotary, part);
 }
 
-void LinuxCncMotion::Impl::push(const Vec3& position, const SegmentPart& part) {
+void LinuxCncMotion::Impl::push(const Vec3& position, const Vec3& rotary, const SegmentPart& part) {
   SimSample s{};
   s.line = part.line;
   s.block = part.block;
   s.x = position.x();
   s.y = position.y();
   s.z = position.z();
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  s.fbX = servos.empty() ? nan : servos[0].step(s.x);
-  s.fbY = servos.empty() ? nan : servos[1].step(s.y);
-  s.fbZ = servos.empty() ? nan : servos[2].step(s.z);
   s.feed = part.feed;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (!machine.kinematics) {
+    s.fbX = servos.empty() ? nan : servos[0].step(s.x);
+    s.fbY = servos.empty() ? nan : servos[1].step(s.y);
+    s.fbZ = servos.empty() ? nan : servos[2].step(s.z);
+  } else {
+    // The servos follow the linear joints; the tip they give is the feedback (the rotary
+    // joints as commanded: their servos are not modelled).
+    const FiveAxisKinematics& k = *machine.kinematics;
+    TipPose pose{position, {0, 0}};
+    for (int i = 0; i < 3; ++i)
+      if (rotaryAxes.kinematicsIndex[static_cast<std::size_t>(i)] >= 0)
+        pose.rotary[static_cast<std::size_t>(rotaryAxes.kinematicsIndex[static_cast<std::size_t>(i)])] = rotary[i];
+    const JointPosition joints = jointsFor(k, pose);
+    JointSample j{rotary.x(), rotary.y(), rotary.z(), {joints.linear.x(), joints.linear.y(), joints.linear.z()},
+                  {joints.rotary[0], joints.rotary[1]}};
+    jointBatch.push_back(j);
+    if (servos.empty()) {
+      s.fbX = s.fbY = s.fbZ = nan;
+    } else {
+      const Vec3 followed(servos[0].step(j.linear[0]), servos[1].step(j.linear[1]), servos[2].step(j.linear[2]));
+      const Vec3 tip = tipOf(k, JointPosition{followed, joints.rotary}).tip;
+      s.fbX = tip.x();
+      s.fbY = tip.y();
+      s.fbZ = tip.z();
+    }
+  }
   batch.push_back(s);
   if (batch.size() >= kBatch) flushBatch();
 }
@@ -352,6 +429,8 @@ void LinuxCncMotion::Impl::hold(double seconds) {
 
 void LinuxCncMotion::Impl::flushBatch() {
   summary.samples += batch.size();
+  if (!jointBatch.empty()) sink.consumeJoints(jointBatch.data(), jointBatch.size());
+  jointBatch.clear();
   if (!batch.empty()) sink.consumeBatch(batch);
   batch.clear();
   // Cycle by cycle, a move at a crawl (an acceleration of 1e-12 mm/s^2) would run for years of
@@ -367,7 +446,13 @@ LinuxCncMotion::~LinuxCncMotion() = default;
 
 void LinuxCncMotion::blendingChanged(const PathBlending& blending) { impl_->pendingBlending.push_back(blending); }
 
-void LinuxCncMotion::add(std::uint64_t index, const Move& move, const Vec3& start) { impl_->add(index, move, start); }
+void LinuxCncMotion::add(std::uint64_t index, const Move& move, const Vec3& start) {
+  impl_->add(index, move, start, impl_->canonRotary);
+}
+
+void LinuxCncMotion::add(std::uint64_t index, const Move& move, const Vec3& start, const Vec3& rotaryEnd) {
+  impl_->add(index, move, start, rotaryEnd);
+}
 
 InterpolationSummary LinuxCncMotion::finish() {
   impl_->flushChain();

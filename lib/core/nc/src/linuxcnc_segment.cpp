@@ -26,6 +26,11 @@ Vec3 Segment::pointAt(double s) const {
   return start;
 }
 
+Vec3 Segment::rotaryAt(double s) const {
+  if (!rotates() || target <= 0) return rotaryStart;
+  return rotaryStart + (rotaryEnd - rotaryStart) * std::clamp(s / target, 0.0, 1.0);
+}
+
 Vec3 Segment::startTangent() const {
   switch (shape) {
     case Shape::Line: return direction;

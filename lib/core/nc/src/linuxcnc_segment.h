@@ -34,6 +34,9 @@ struct Segment {
   ArcGeometry arc;
   Vec3 centre = Vec3::Zero(), rStart = Vec3::Zero(), rEnd = Vec3::Zero();
   double radius = 0, angle = 0, lead = 0;
+  // deg, the program's A B C at both ends, turned in proportion to the progress (LinuxCNC's
+  // PmLine9 and PmCircle9); equal on a blend, which LinuxCNC never makes where they turn.
+  Vec3 rotaryStart = Vec3::Zero(), rotaryEnd = Vec3::Zero();
 
   double target = 0;         // mm, length
   double nominalLength = 0;  // mm, before blends trimmed it
@@ -56,7 +59,10 @@ struct Segment {
   SegmentPart part{};
 
   bool curved() const { return shape != Shape::Line; }
+  // A, B or C turn on it (LinuxCNC's tcRotaryMotionCheck).
+  bool rotates() const { return rotaryStart != rotaryEnd; }
   Vec3 pointAt(double s) const;   // s in mm along the segment, 0..target
+  Vec3 rotaryAt(double s) const;  // deg
   Vec3 startTangent() const;
   Vec3 endTangent() const;
 };

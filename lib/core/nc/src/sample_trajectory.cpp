@@ -38,6 +38,20 @@ void TrajectorySink::consume(const SimSample* samples, std::size_t count) {
   }
 }
 
+void TrajectorySink::keepJointsOf(const FiveAxisKinematics& kinematics) {
+  jointChannels_ = jointChannels(kinematics);
+  for (const JointChannel& c : jointChannels_) trajectory_.extra.emplace_back(c.name, std::vector<double>{});
+}
+
+void TrajectorySink::consumeJoints(const JointSample* joints, std::size_t count) {
+  // The joint channels are the last extra ones, in jointChannels_ order.
+  const std::size_t first = trajectory_.extra.size() - jointChannels_.size();
+  for (std::size_t c = 0; c < jointChannels_.size(); ++c) {
+    std::vector<double>& values = trajectory_.extra[first + c].second;
+    for (std::size_t k = 0; k < count; ++k) values.push_back(jointChannels_[c].of(joints[k]));
+  }
+}
+
 Trajectory TrajectorySink::take() {
   // The run channels grew by doubling: up to half of each is spare room.
   trajectory_.shrinkRunChannels();

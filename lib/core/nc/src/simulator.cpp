@@ -21,16 +21,28 @@ namespace {
 constexpr std::size_t kExpectedTail = 16;
 constexpr std::size_t kLargestExpectation = std::size_t(1) << 32;
 
-// Until the machine's joints are planned, a program that turns its rotary axes is refused: its
-// tool tip simulated as if A, B and C stood still would show feeds no machine runs.
-InputError rotaryMotionRefused(const std::string& source, std::uint32_t line, std::uint32_t column,
-                               const std::array<double, 3>& abc) {
+// Five-axis motion is planned on a machine with rotary axes under the linuxcnc-2.9 control;
+// elsewhere a program that turns them is refused: its tool tip simulated as if A, B and C stood
+// still would show feeds no machine runs.
+InputError rotaryMotionRefused(const Machine& machine, const std::string& source, std::uint32_t line,
+                               std::uint32_t column, const std::array<double, 3>& abc) {
+  const std::string why =
+      machine.kinematics
+          ? "five-axis motion is simulated under the linuxcnc-2.9 control only (\"control\": {\"planner\": "
+            "\"linuxcnc-2.9\"})"
+          : "the machine has no rotary axes: simulate on a machine whose description has \"kinematics\" "
+            "(docs/five-axis.md; resources/machines/linuxcnc-xyzbc-trt.json is one)";
   return InputError(Diagnostic{source, line, column,
-                               fmt::format("the rotary axes move here (A {:g} B {:g} C {:g} deg): simulating five-axis "
-                                           "motion (the machine's joints, tool-centre-point control) is not supported "
-                                           "yet, and the tool tip alone would show feeds the machine does not run",
-                                           abc[0], abc[1], abc[2])});
+                               fmt::format("the rotary axes move here (A {:g} B {:g} C {:g} deg): {}, and the tool tip "
+                                           "alone would show feeds the machine does not run",
+                                           abc[0], abc[1], abc[2], why)});
 }
+
+void requireJointsKept(const SampleSink& sink) {
+  if (!sink.keepsJoints()) throw std::logic_error("a five-axis run was given a sink that drops its joints");
+}
+
+Vec3 asVec3(const std::array<double, 3>& abc) { return Vec3(abc[0], abc[1], abc[2]); }
 
 // The interpolator does not know the program's name; its errors get it here.
 InputError naming(const InputError& e, const std::string& source) {
@@ -56,7 +68,7 @@ SimulationReport simulateOnLinuxCnc(const Program& program, const Machine& machi
     while (nextBlending < program.blending.size() && program.blending[nextBlending].firstMove <= i)
       motion.blendingChanged(program.blending[nextBlending++]);
     try {
-      motion.add(i, program.moves[i], program.startOf(i));
+      motion.add(i, program.moves[i], program.startOf(i), asVec3(program.rotaryAt(i)));
     } catch (const InputError& e) {
       throw naming(e, program.source);
     }
@@ -84,7 +96,9 @@ SimulationReport simulateWithoutNotes(const Program& program, const Machine& mac
   if (!program.rotary.empty()) {
     const std::size_t first = static_cast<std::size_t>(program.rotary.front().move);
     const Move& m = program.moves.at(first);
-    throw rotaryMotionRefused(program.source, m.line, m.column, program.rotary.front().abc);
+    if (!simulatesFiveAxis(machine))
+      throw rotaryMotionRefused(machine, program.source, m.line, m.column, program.rotary.front().abc);
+    requireJointsKept(sink);
   }
   if (machine.control.planner == TrajectoryPlanner::LinuxCnc29) return simulateOnLinuxCnc(program, machine, sink, progress);
   const FeedPlan plan = planFeed(program, machine, LimitBudget{}, [&](double f) {
@@ -139,6 +153,10 @@ SimulationReport simulateWithoutNotes(const Program& program, const Machine& mac
 
 }  // namespace
 
+bool simulatesFiveAxis(const Machine& machine) {
+  return machine.kinematics && machine.control.planner == TrajectoryPlanner::LinuxCnc29;
+}
+
 SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
                           const ProgressCallback& progress) {
   SimulationReport report = simulateWithoutNotes(program, machine, sink, progress);
@@ -170,7 +188,12 @@ void StreamingSimulation::blendingChanged(const PathBlending& blending) {
 }
 
 void StreamingSimulation::rotaryChanged(const RotaryPosition& rotary) {
-  if (!firstRotary_) firstRotary_ = rotary;
+  if (simulatesFiveAxis(machine_)) {
+    requireJointsKept(sink_);
+    rotaryChanges_.push_back(rotary);
+  } else if (!firstRotary_) {
+    firstRotary_ = rotary;
+  }
 }
 
 StreamingSimulation::~StreamingSimulation() = default;
@@ -180,12 +203,16 @@ void StreamingSimulation::consume(const Move* moves, std::size_t count, std::uin
   try {
     if (firstRotary_ && firstRotary_->move >= firstIndex && firstRotary_->move < firstIndex + count) {
       const Move& m = moves[firstRotary_->move - firstIndex];
-      throw rotaryMotionRefused(source_, m.line, m.column, firstRotary_->abc);
+      throw rotaryMotionRefused(machine_, source_, m.line, m.column, firstRotary_->abc);
     }
     if (linuxcnc_) {
       for (std::size_t i = 0; i < count; ++i) {
         feeds_.note(moves[i], moveStart_);
-        linuxcnc_->add(firstIndex + i, moves[i], moveStart_);
+        while (!rotaryChanges_.empty() && rotaryChanges_.front().move <= firstIndex + i) {
+          rotary_ = asVec3(rotaryChanges_.front().abc);
+          rotaryChanges_.pop_front();
+        }
+        linuxcnc_->add(firstIndex + i, moves[i], moveStart_, rotary_);
         moveStart_ = moves[i].end;
       }
       checkRunLength(linuxcnc_->plannedSeconds(), machine_, count ? &moves[count - 1] : nullptr, source_);

@@ -10,8 +10,10 @@
 
 namespace isurface {
 
-// The channel table of a simulated dump: line, block, x y z, fb_x fb_y fb_z, feed.
-std::vector<BiipChannel> simulationChannels();
+// The channel table of a simulated dump: line, block, x y z, fb_x fb_y fb_z, feed; on a
+// machine with rotary axes also its rotary axes (b, c) and joints (joint_x ... joint_c), x y z
+// then being the tool tip in the workpiece frame.
+std::vector<BiipChannel> simulationChannels(const Machine& machine);
 
 // Simulates into a Biip file written atomically (nothing is left at `path` on failure).
 SimulationReport simulateToBiip(const Program& program, const Machine& machine, const std::string& path,

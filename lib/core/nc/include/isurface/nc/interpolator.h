@@ -4,6 +4,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <memory>
+#include <string>
 #include <vector>
 
 #include "isurface/nc/feed_plan.h"
@@ -21,6 +22,25 @@ struct SimSample {
 };
 static_assert(sizeof(SimSample) == 64, "SimSample must match the Biip record layout");
 
+// The same cycle's rotary axes and joints, on a machine with rotary axes (its SimSample then
+// holds the tool tip in the workpiece frame).
+struct JointSample {
+  double a, b, c;          // deg, the program's rotary axes
+  double linear[3];        // mm, the machine's X Y Z joints
+  double rotary[2];        // deg, its rotary joints in FiveAxisKinematics::rotary order
+};
+
+// The channels a five-axis run adds to its samples: the machine's rotary axes ("b", "c"), then
+// its joints ("joint_x", "joint_y", "joint_z", "joint_b", "joint_c"), each read from a JointSample.
+struct JointChannel {
+  std::string name;
+  std::size_t offset;  // bytes into a JointSample of its double
+  double of(const JointSample& j) const {
+    return *reinterpret_cast<const double*>(reinterpret_cast<const char*>(&j) + offset);
+  }
+};
+std::vector<JointChannel> jointChannels(const FiveAxisKinematics& kinematics);
+
 class SampleSink {
  public:
   virtual ~SampleSink() = default;
@@ -31,6 +51,10 @@ class SampleSink {
   // and fbZ of its samples are NaN).
   virtual bool wantsFeedback() const { return true; }
   virtual void consume(const SimSample* samples, std::size_t count) = 0;
+  // On a machine with rotary axes, the joints of the samples of the consume() call that follows,
+  // one for each. A sink that cannot keep them says so: a five-axis run is never cut to its tip.
+  virtual bool keepsJoints() const { return false; }
+  virtual void consumeJoints(const JointSample* /*joints*/, std::size_t /*count*/) {}
   // A whole batch handed over with its buffer: a sink that keeps batches for later (ThreadedSink)
   // takes the vector and leaves an empty one in its place instead of copying 64 bytes a sample.
   // `batch` is empty on return.

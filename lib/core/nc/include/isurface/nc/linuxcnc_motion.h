@@ -3,7 +3,9 @@
 // is `linuxcnc-2.9`: its naive-CAM joining of short lines (G64 Q), blend arcs within G64 P,
 // parabolic and tangent junctions, exact path (G61) and exact stop (G61.1), the look-ahead over
 // 50 segments and the per-cycle trapezoid with split cycles. No jerk limit: version 2.9 has
-// none. What it leaves out, and why, is in docs/controls.md.
+// none. What it leaves out, and why, is in docs/controls.md. On a machine with rotary axes, as
+// 2.9 with tool-centre-point kinematics: X Y Z (the tip) and A B C planned together, the joints
+// the kinematics' inverse of every cycle (docs/five-axis.md).
 #include <cstdint>
 #include <memory>
 
@@ -25,6 +27,9 @@ class LinuxCncMotion {
   // The program's move `index`, which starts at `start`; samples every cycle that no later
   // move can change.
   void add(std::uint64_t index, const Move& move, const Vec3& start);
+  // The same with the program's A B C (deg) at the move's end; only on a machine with rotary
+  // axes (Machine::kinematics), whose samples then carry the tool tip and the joints.
+  void add(std::uint64_t index, const Move& move, const Vec3& start, const Vec3& rotaryEnd);
   // No more moves: the rest of the motion.
   InterpolationSummary finish();
 

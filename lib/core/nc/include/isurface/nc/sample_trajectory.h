@@ -18,11 +18,16 @@ class TrajectorySink : public SampleSink {
   void expect(std::size_t samples) override;
   void consume(const SimSample* samples, std::size_t count) override;
   bool wantsFeedback() const override { return feedback_; }
+  // Keeps a five-axis run's rotary axes and joints as extra channels (jointChannels).
+  void keepJointsOf(const FiveAxisKinematics& kinematics);
+  bool keepsJoints() const override { return !jointChannels_.empty(); }
+  void consumeJoints(const JointSample* joints, std::size_t count) override;
   Trajectory take();
 
  private:
   Trajectory trajectory_;
   bool feedback_;
+  std::vector<JointChannel> jointChannels_;
 };
 
 Trajectory trajectoryFromSamples(const std::vector<SimSample>& samples, double cycle, const std::string& source);

@@ -25,6 +25,11 @@ struct SimulationReport {
   std::vector<Diagnostic> warnings;  // what the machine does otherwise than the program says
 };
 
+// Five-axis motion (rotary axes, the joints through the kinematics) is simulated on a machine
+// with "kinematics" under the linuxcnc-2.9 control; its samples carry the tool tip in the
+// workpiece frame and go with their joints (SampleSink::consumeJoints), and its sink must keep them.
+bool simulatesFiveAxis(const Machine& machine);
+
 // Progress is reported as planning (0..0.1) then interpolation (0.1..1).
 SimulationReport simulate(const Program& program, const Machine& machine, SampleSink& sink,
                           const ProgressCallback& progress = {});
@@ -67,6 +72,8 @@ class StreamingSimulation : public MoveSink {
   Vec3 start_;
   Vec3 moveStart_;                 // where the next move handed over starts
   std::optional<RotaryPosition> firstRotary_;  // the first move that turns a rotary axis: refused
+  std::deque<RotaryPosition> rotaryChanges_;   // told, not yet reached by the moves handed over
+  Vec3 rotary_ = Vec3::Zero();                 // A B C at the end of the last move handed over, deg
   // The moves that may become segments, from the one being interpolated on.
   struct HeldMove {
     std::uint64_t index;  // in the whole program
