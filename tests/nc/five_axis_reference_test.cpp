@@ -170,5 +170,11 @@ TEST(fiveAxisReference, EveryRecordingAgreesWithLinuxCncsFiveAxisPlanner) {
   expectEveryRecordingAgrees(fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-xyzbc-trt", 11);
 }
 
+// Programs written apart from the planner by other methods and recorded after it was done
+// (tests/data/linuxcnc-2.9-xyzbc-trt-independent/README.md).
+TEST(fiveAxisReference, ProgramsRecordedAfterThePlannerWasWrittenAgree) {
+  expectEveryRecordingAgrees(fs::path(test::sourceDir()) / "tests/data/linuxcnc-2.9-xyzbc-trt-independent", 6);
+}
+
 }  // namespace
 }  // namespace isurface

@@ -124,6 +124,23 @@ void InterpreterState::warnOnce(bool& done, std::uint32_t column, std::string me
   result_.program.warnings.push_back(Diagnostic{source_, line_, column, std::move(message)});
 }
 
+namespace {
+
+// Other controls' five-axis codes, named so that a program using them is told what is missing
+// (the codes are in tenths: G43.4 is 434).
+const char* fiveAxisCodeNotRead(int code) {
+  switch (code) {
+    case 434: return "Fanuc tool-centre-point control, type 1";
+    case 435: return "Fanuc tool-centre-point control, type 2";
+    case 682: return "a tilted working plane";
+    case 683: return "a tilted working plane along the tool axis";
+    case 531: return "a move of the tool axis to a tilted working plane";
+    default: return nullptr;
+  }
+}
+
+}  // namespace
+
 bool InterpreterState::groupCodes(const Block& block, GroupedCodes& groups) {
   std::fill(std::begin(groups.code), std::end(groups.code), -1);
   for (int i = 0; i < block.gCount; ++i) {
@@ -136,6 +153,10 @@ bool InterpreterState::groupCodes(const Block& block, GroupedCodes& groups) {
       continue;
     }
     const int group = groupOf(code);
+    if (const char* fiveAxis = fiveAxisCodeNotRead(code))
+      return fail(block.gColumn[i], fmt::format("G{} ({}) is not read: its motion would be the tool tip's as if the "
+                                                "code were not there (docs/five-axis.md)",
+                                                block.gValue[i], fiveAxis));
     if (group == -1)
       return fail(block.gColumn[i], fmt::format("Unknown g code used: G{}", block.gValue[i]));
     if (group == -2)

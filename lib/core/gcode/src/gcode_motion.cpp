@@ -122,7 +122,15 @@ bool InterpreterState::straight(const Block& block, int motion, std::uint32_t co
   if (state_.inverseTime) {
     if (!block.has('F')) return fail(column, "F word missing with inverse time G1 move");
     if (feed <= 0) return fail(column, "Cannot do G1 with zero feed rate");
-    feed = (end - state_.position).norm() * state_.feed;
+    // F is moves per minute: the feed along X Y Z, or along A B C in deg/min when only they
+    // move (rs274's find_straight_length).
+    double length = (end - state_.position).norm();
+    if (length < 1e-12) {
+      double turn = 0;
+      for (std::size_t i = 0; i < 3; ++i) turn += std::pow(state_.rotary[i] - rotaryNoted_[i], 2);
+      length = std::sqrt(turn);
+    }
+    feed = length * state_.feed;
   } else if (feed <= 0) {
     return fail(column, "Cannot do G1 with zero feed rate");
   }

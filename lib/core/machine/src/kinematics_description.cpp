@@ -47,7 +47,7 @@ RotaryAxis readRotary(const json& a, const std::string& where, const std::string
 
 FiveAxisKinematics readKinematics(const json& k, const std::string& source) {
   if (!k.is_object()) fail(source, "kinematics must be an object");
-  rejectUnknownKeys(k, {"structure", "rotary_axes", "tool_length_mm"}, "kinematics.", source);
+  rejectUnknownKeys(k, {"structure", "rotary_axes", "tool_length_mm", "tool_centre_point"}, "kinematics.", source);
   FiveAxisKinematics out;
   const std::string structure = k.contains("structure") && k["structure"].is_string() ? k["structure"].get<std::string>() : "";
   if (structure == kStructures[0]) out.structure = KinematicStructure::TableTable;
@@ -63,6 +63,10 @@ FiveAxisKinematics readKinematics(const json& k, const std::string& source) {
   if (out.rotary[0].direction.cross(out.rotary[1].direction).norm() < 1e-6)
     fail(source, "kinematics.rotary_axes turn about parallel directions: no tool axis but one can be reached");
   out.toolLength = number(k, "tool_length_mm", 0, source, "kinematics.");
+  if (k.contains("tool_centre_point")) {
+    if (!k["tool_centre_point"].is_boolean()) fail(source, "kinematics.tool_centre_point must be true or false");
+    out.toolCentrePoint = k["tool_centre_point"].get<bool>();
+  }
   return out;
 }
 
@@ -79,7 +83,8 @@ nlohmann::ordered_json kinematicsJson(const FiveAxisKinematics& k) {
     a["max_jerk_deg_s3"] = r.maxJerk;
     axes.push_back(a);
   }
-  return {{"structure", kStructures[static_cast<int>(k.structure)]}, {"rotary_axes", axes}, {"tool_length_mm", k.toolLength}};
+  return {{"structure", kStructures[static_cast<int>(k.structure)]}, {"rotary_axes", axes}, {"tool_length_mm", k.toolLength},
+          {"tool_centre_point", k.toolCentrePoint}};
 }
 
 }  // namespace isurface

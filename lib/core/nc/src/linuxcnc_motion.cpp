@@ -56,7 +56,7 @@ struct LinuxCncMotion::Impl {
     }
     bounds.cycle = m.cycle;
     // On a five-axis machine the servos move the joints; at the start every rotary axis is at 0.
-    const Vec3 joints = m.kinematics ? jointsFor(*m.kinematics, TipPose{start, {0, 0}}).linear : start;
+    const Vec3 joints = m.kinematics && m.kinematics->toolCentrePoint ? jointsFor(*m.kinematics, TipPose{start, {0, 0}}).linear : start;
     if (sink.wantsFeedback())
       for (int i = 0; i < 3; ++i) servos.emplace_back(m.axes[i], m.cycle, joints[i]);
   }
@@ -404,7 +404,15 @@ void LinuxCncMotion::Impl::push(const Vec3& position, const Vec3& rotary, const 
     for (int i = 0; i < 3; ++i)
       if (rotaryAxes.kinematicsIndex[static_cast<std::size_t>(i)] >= 0)
         pose.rotary[static_cast<std::size_t>(rotaryAxes.kinematicsIndex[static_cast<std::size_t>(i)])] = rotary[i];
-    const JointPosition joints = jointsFor(k, pose);
+    JointPosition joints{position, pose.rotary};
+    if (k.toolCentrePoint) {
+      joints = jointsFor(k, pose);
+    } else {
+      const Vec3 tip = tipOf(k, joints).tip;
+      s.x = tip.x();
+      s.y = tip.y();
+      s.z = tip.z();
+    }
     JointSample j{rotary.x(), rotary.y(), rotary.z(), {joints.linear.x(), joints.linear.y(), joints.linear.z()},
                   {joints.rotary[0], joints.rotary[1]}};
     jointBatch.push_back(j);

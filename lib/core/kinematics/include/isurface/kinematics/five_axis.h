@@ -35,6 +35,10 @@ struct FiveAxisKinematics {
   // mm from the tip to the point the linear joints position (the spindle's gauge line), along
   // the tool axis; the tool points along machine -Z with the head's axes at 0.
   double toolLength = 0;
+  // Tool-centre-point control: the program's X Y Z are the tool tip in the workpiece frame (the
+  // control moves the joints through the kinematics). Off, they are the linear joints themselves,
+  // and the tip goes where the rotary axes carry it.
+  bool toolCentrePoint = true;
 };
 
 struct JointPosition {
