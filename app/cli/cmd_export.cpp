@@ -46,7 +46,7 @@ int runExport(const ExportOptions& o) {
   const auto& infos = quantityInfos();
   for (std::size_t k = 0; k < infos.size(); ++k) {
     progress.update(static_cast<double>(k) / infos.size());
-    if (infos[k].needsFeedback && !samples.hasFeedback()) continue;
+    if (!quantityAvailable(infos[k].quantity, samples)) continue;
     arrays.push_back({infos[k].name, vertexQuantity(infos[k].quantity, samples, mesh)});
   }
   for (const auto& [name, values] : samples.extra) {

@@ -30,7 +30,7 @@ struct RenderOptions {
   std::string color = "speed", view = "iso", size = "1600x1000", colorMap = "auto";
   std::string range, percentiles = "1:99", surface = "commanded", pattern = "auto";
   long highlightLine = -1;
-  bool noToolpath = false, noPassWires = false, colorToolpath = false, force = false;
+  bool noToolpath = false, noPassWires = false, colorToolpath = false, toolAxes = false, force = false;
   int isoBands = 12;
   GapLimitOption gapLimit;
 };
@@ -80,6 +80,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   request.showToolpath = !o.noToolpath;
   request.colorToolpath = o.colorToolpath;
   request.passWires = !o.noPassWires;
+  request.toolAxes = o.toolAxes;
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
   request.gapLimit = o.gapLimit.checked();
@@ -145,6 +146,7 @@ Command renderCommand() {
       sub.add_flag("--no-toolpath", o->noToolpath, "leave the programmed tool path out");
       sub.add_flag("--color-toolpath", o->colorToolpath, "draw the sampled cutting path coloured by the quantity");
       sub.add_flag("--no-pass-wires", o->noPassWires, "leave the faint wire along each pass out");
+      sub.add_flag("--tool-axis", o->toolAxes, "draw a five-axis run's tool axis along its passes");
       sub.add_option("--iso-bands", o->isoBands, "iso-lines across the colour range (0: none)")
           ->capture_default_str()
           ->check(wholeNumberFrom(0, 1000));

@@ -69,6 +69,7 @@ TEST_P(DegenerateGeometry, InProcessPipelineStaysFinite) {
     ASSERT_TRUE(finite(normals[v])) << "vertex " << v;
   }
   for (const QuantityInfo& info : quantityInfos()) {
+    if (info.needsJoints) continue;  // a five-axis run's: these samples have no joints
     if (!info.onSurface) {
       EXPECT_EQ(countNonFinite(sampleQuantity(info.quantity, samples)), 0u) << info.name;
     }

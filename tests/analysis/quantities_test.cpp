@@ -23,7 +23,10 @@ TEST(quantities, TableNamesLabelsUnits) {
   const std::vector<std::string> names = {"speed", "accel", "accel_mag", "jerk", "vx", "vy", "vz",
                                           "ax", "ay", "az", "jx", "jy", "jz", "following_error",
                                           "line", "time", "feed", "speed_inconsistency",
-                                          "accel_inconsistency", "deviation"};
+                                          "accel_inconsistency", "deviation", "joint_speed", "joint_vx",
+                                          "joint_vy", "joint_vz", "joint_ax", "joint_ay", "joint_az", "joint_jx",
+                                          "joint_jy", "joint_jz", "joint_va", "joint_vb", "joint_vc", "joint_aa",
+                                          "joint_ab", "joint_ac", "joint_ja", "joint_jb", "joint_jc"};
   ASSERT_EQ(quantityInfos().size(), names.size());
   std::set<std::string> seen;
   for (std::size_t i = 0; i < names.size(); ++i) {

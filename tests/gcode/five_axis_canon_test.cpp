@@ -87,7 +87,6 @@ TEST(fiveAxisCanon, WhatIsNotReadOfTheRotaryAxesIsRefusedWithItsLine) {
       {"G21\nG28 C10\n", "C word with G28, G30 or G68"},
       {"G21\nG10 L2 P1 A5\nG0 A1\n", "after an offset of the rotary axes"},
       {"G21\nG81 X1 Y1 Z-1 R1 B5 F100\n", "canned cycle"},
-      {"G21\nG53 G0 B0\n", "G53"},
       {"G21 G40\nT1 M6\nG41 D1 G1 X10 Y0 F100\nG1 X20 B10\n", "cutter radius compensation"},
   };
   for (const auto& r : refused) {

@@ -84,8 +84,10 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
   const bool byChannel = !s.settings.channel.empty();
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##quantity", byChannel ? s.settings.channel.c_str() : current.label)) {
+    const Document* shown = s.activeDocument();
     for (const QuantityInfo& q : quantityInfos())
-      if (ImGui::Selectable(q.label, !byChannel && q.quantity == s.settings.quantity)) {
+      if (q.needsJoints && !(shown && shown->samples && quantityAvailable(q.quantity, *shown->samples))) continue;
+      else if (ImGui::Selectable(q.label, !byChannel && q.quantity == s.settings.quantity)) {
         s.settings.quantity = q.quantity;
         s.settings.channel.clear();
         s.persistent.quantity = q.name;

@@ -168,8 +168,10 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
       ImGui::EndMenu();
     }
     if (ImGui::BeginMenu("Colour by")) {
+      const Document* shown = s.activeDocument();
       for (const QuantityInfo& q : quantityInfos())
-        if (ImGui::MenuItem(q.label, nullptr, s.settings.quantity == q.quantity)) {
+        if (q.needsJoints && !(shown && shown->samples && quantityAvailable(q.quantity, *shown->samples))) continue;
+        else if (ImGui::MenuItem(q.label, nullptr, s.settings.quantity == q.quantity)) {
           s.settings.quantity = q.quantity;
           s.persistent.quantity = q.name;
           if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was the other quantity's

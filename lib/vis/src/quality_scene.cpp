@@ -87,7 +87,8 @@ struct QualityScene::Parts {
   vtkSmartPointer<vtkRenderer> axesCorner = vtkSmartPointer<vtkRenderer>::New();
   vtkSmartPointer<vtkPolyData> surface, coarseSurface;
   vtkSmartPointer<vtkLookupTable> table;
-  vtkSmartPointer<vtkActor> surfaceActor, coarseActor, detailActor, toolpathActor, lineGlow, sampleGlow, pointsActor;
+  vtkSmartPointer<vtkActor> surfaceActor, coarseActor, detailActor, toolpathActor, toolAxesActor, lineGlow, sampleGlow,
+      pointsActor;
   vtkSmartPointer<vtkAssembly> tool;  // made when first shown
   std::optional<Vec3> toolTip;
   MapStyle style;
@@ -139,6 +140,10 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
   p.pointsActor->VisibilityOff();
   p.renderer->AddActor(p.pointsActor);
 
+  if (!data.toolAxes.empty()) {
+    p.toolAxesActor = makeToolAxesActor(data.toolAxes);
+    p.renderer->AddActor(p.toolAxesActor);
+  }
   // The toolpath blends over what is drawn before it (makeToolpathActor): after the surfaces.
   if (style.showToolpath && !data.toolpath.empty()) {
     p.toolpathActor = makeToolpathActor(data.toolpath, data.toolpathScalars, p.table);

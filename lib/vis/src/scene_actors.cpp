@@ -121,6 +121,17 @@ vtkSmartPointer<vtkActor> makeToolpathActor(const std::vector<std::vector<Vec3>>
   return actor;
 }
 
+vtkSmartPointer<vtkActor> makeToolAxesActor(const std::vector<std::array<Vec3, 2>>& strokes) {
+  std::vector<std::vector<Vec3>> lines;
+  lines.reserve(strokes.size());
+  for (const auto& stroke : strokes) lines.push_back({stroke[0], stroke[1]});
+  vtkSmartPointer<vtkActor> actor = makeToolpathActor(lines, {}, nullptr);
+  actor->GetProperty()->SetColor(0.05, 0.1, 0.35);
+  actor->GetProperty()->SetOpacity(0.9);
+  actor->GetProperty()->SetLineWidth(1.5f);
+  return actor;
+}
+
 void setPoints(vtkPolyData* poly, const std::vector<Vec3>& positions) {
   auto points = vtkSmartPointer<vtkPoints>::New();
   auto verts = vtkSmartPointer<vtkCellArray>::New();

@@ -2,6 +2,7 @@
 // The pieces of a quality-map scene, each built on its own.
 #include <vtkSmartPointer.h>
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,8 @@ vtkSmartPointer<vtkActor> makeSurfaceActor(vtkPolyData* surface, vtkLookupTable*
 // Polylines, plain or coloured through the table by per-point values.
 vtkSmartPointer<vtkActor> makeToolpathActor(const std::vector<std::vector<Vec3>>& lines,
                                             const std::vector<std::vector<float>>& values, vtkLookupTable* table);
+// A five-axis run's tool axis: a dark stroke from each tip up the tool.
+vtkSmartPointer<vtkActor> makeToolAxesActor(const std::vector<std::array<Vec3, 2>>& strokes);
 // Glowing point sprites; their points are set with setPoints().
 vtkSmartPointer<vtkActor> makeGlowActor(vtkPolyData* points, float size, const float core[3], const float rim[3]);
 void setPoints(vtkPolyData* points, const std::vector<Vec3>& positions);

@@ -38,11 +38,53 @@ bool isKinematic(Quantity q) {
     case Quantity::JerkX:
     case Quantity::JerkY:
     case Quantity::JerkZ: return true;
-    default: return false;
+    default: return q >= Quantity::JointSpeed;
   }
 }
 
-bool isPerAxis(Quantity q) { return isKinematic(q) && q >= Quantity::VelocityX; }
+bool isPerAxis(Quantity q) { return isKinematic(q) && q >= Quantity::VelocityX && q != Quantity::JointSpeed; }
+
+// Which positions a motion quantity is derived from.
+enum class Positions { Tip, LinearJoints, RotaryJoints };
+
+Positions positionsOf(Quantity q) {
+  if (q < Quantity::JointSpeed) return Positions::Tip;
+  return q < Quantity::JointVelocityA ? Positions::LinearJoints : Positions::RotaryJoints;
+}
+
+// Three arrays of positions (mm or deg); the rotary joints the machine lacks stand at 0.
+struct PositionArrays {
+  const double* axis[3] = {nullptr, nullptr, nullptr};
+  std::vector<double> zeros;
+};
+
+PositionArrays positionArrays(Positions which, const Trajectory& s) {
+  PositionArrays p;
+  if (which == Positions::Tip) {
+    p.axis[0] = s.x.data(), p.axis[1] = s.y.data(), p.axis[2] = s.z.data();
+    return p;
+  }
+  const char* names[2][3] = {{"joint_x", "joint_y", "joint_z"}, {"joint_a", "joint_b", "joint_c"}};
+  const int row = which == Positions::LinearJoints ? 0 : 1;
+  bool any = false;
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<double>* channel = s.extraChannel(names[row][i]);
+    if (channel && channel->size() == s.size()) {
+      p.axis[i] = channel->data();
+      any = true;
+    }
+  }
+  if (!any || (row == 0 && !(p.axis[0] && p.axis[1] && p.axis[2])))
+    throw InputError(Diagnostic{s.source, 0, 0,
+                                "the samples have no joints (joint_x ... joint_c channels): they come from a five-axis "
+                                "machine's simulation (docs/five-axis.md)"});
+  p.zeros.assign(s.size(), 0.0);
+  for (const double*& axis : p.axis)
+    if (!axis) axis = p.zeros.data();
+  return p;
+}
+
+int axisOf(Quantity q, Quantity first) { return static_cast<int>(q) - static_cast<int>(first); }
 
 // Speeds leave here in mm/min, the unit they are shown in (quantities are display values).
 double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
@@ -60,6 +102,19 @@ double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
     case Quantity::JerkX: return k.axisJerk[0][i];
     case Quantity::JerkY: return k.axisJerk[1][i];
     case Quantity::JerkZ: return k.axisJerk[2][i];
+    case Quantity::JointSpeed: return mmPerSToMmPerMin(k.speed[i]);
+    default: break;
+  }
+  if (q >= Quantity::JointVelocityX && q <= Quantity::JointVelocityZ)
+    return mmPerSToMmPerMin(k.axisVel[axisOf(q, Quantity::JointVelocityX)][i]);
+  if (q >= Quantity::JointAccelerationX && q <= Quantity::JointAccelerationZ)
+    return k.axisAcc[axisOf(q, Quantity::JointAccelerationX)][i];
+  if (q >= Quantity::JointJerkX && q <= Quantity::JointJerkZ) return k.axisJerk[axisOf(q, Quantity::JointJerkX)][i];
+  if (q >= Quantity::JointVelocityA && q <= Quantity::JointVelocityC) return k.axisVel[axisOf(q, Quantity::JointVelocityA)][i];
+  if (q >= Quantity::JointAccelerationA && q <= Quantity::JointAccelerationC)
+    return k.axisAcc[axisOf(q, Quantity::JointAccelerationA)][i];
+  if (q >= Quantity::JointJerkA && q <= Quantity::JointJerkC) return k.axisJerk[axisOf(q, Quantity::JointJerkA)][i];
+  switch (q) {
     default: return kNaN;
   }
 }
@@ -67,13 +122,14 @@ double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
 // Derives the samples [first, last) (with their stencil margins) and calls
 // take(sample, kinematics, index in kinematics) for each.
 template <class Take>
-void deriveRange(const Trajectory& s, bool perAxis, std::size_t first, std::size_t last, Take&& take) {
+void deriveRange(const Trajectory& s, const PositionArrays& p, bool perAxis, std::size_t first, std::size_t last,
+                 Take&& take) {
   const std::size_t n = s.size();
   const std::size_t from = first >= kStencilMargin ? first - kStencilMargin : 0;
   const std::size_t to = std::min(n, last + kStencilMargin);
   const double* t = s.irregularTime ? s.time.data() + from : nullptr;
-  const Kinematics k = deriveKinematics(s.x.data() + from, s.y.data() + from, s.z.data() + from, t, to - from,
-                                        s.cycle, perAxis);
+  const Kinematics k = deriveKinematics(p.axis[0] + from, p.axis[1] + from, p.axis[2] + from, t, to - from, s.cycle,
+                                        perAxis);
   for (std::size_t i = first; i < last; ++i) take(i, k, i - from);
 }
 
@@ -128,6 +184,7 @@ void checkSampleQuantity(Quantity q, const Trajectory& s) {
     throw std::invalid_argument(std::string("'") + quantityInfo(q).name + "' is a surface quantity: it needs the mesh");
   if (q == Quantity::FollowingError) requireFeedback(s, q);
   if (q == Quantity::Feed && !s.hasFeed()) missing(s, "the samples have no programmed feed (no 'feed' channel)");
+  if (quantityInfo(q).needsJoints) positionArrays(positionsOf(q), s);
 }
 
 // Per-sample quantity gathered at the vertices' samples, in double.
@@ -144,9 +201,10 @@ std::vector<double> perVertex(Quantity q, const Trajectory& s, const SurfaceMesh
   // Each vertex's sample is derived from its own stencil, a chunk of vertices at a time (the
   // map's vertices are a stride apart: deriving every sample between them was most of the work).
   const double* t = s.irregularTime ? s.time.data() : nullptr;
+  const PositionArrays p = positionArrays(positionsOf(q), s);
   for (std::size_t v = 0; v < vertices; v += kKinematicsChunk) {
     const std::size_t count = std::min(kKinematicsChunk, vertices - v);
-    const Kinematics k = deriveKinematicsAt(s.x.data(), s.y.data(), s.z.data(), t, s.size(), s.cycle, at.data() + v,
+    const Kinematics k = deriveKinematicsAt(p.axis[0], p.axis[1], p.axis[2], t, s.size(), s.cycle, at.data() + v,
                                             count, isPerAxis(q));
     for (std::size_t j = 0; j < count; ++j) out[v + j] = kinematicValue(q, k, j);
   }
@@ -218,6 +276,25 @@ const std::vector<QuantityInfo>& quantityInfos() {
       {Quantity::AccelerationInconsistency, "accel_inconsistency", "Acceleration inconsistency between passes",
        "mm/s^2", false, true},
       {Quantity::Deviation, "deviation", "Deviation of the feedback surface", "\u00b5m", true, true},
+      {Quantity::JointSpeed, "joint_speed", "Joint speed (X Y Z slides)", "mm/min", false, false, true},
+      {Quantity::JointVelocityX, "joint_vx", "Joint X velocity", "mm/min", false, false, true},
+      {Quantity::JointVelocityY, "joint_vy", "Joint Y velocity", "mm/min", false, false, true},
+      {Quantity::JointVelocityZ, "joint_vz", "Joint Z velocity", "mm/min", false, false, true},
+      {Quantity::JointAccelerationX, "joint_ax", "Joint X acceleration", "mm/s^2", false, false, true},
+      {Quantity::JointAccelerationY, "joint_ay", "Joint Y acceleration", "mm/s^2", false, false, true},
+      {Quantity::JointAccelerationZ, "joint_az", "Joint Z acceleration", "mm/s^2", false, false, true},
+      {Quantity::JointJerkX, "joint_jx", "Joint X jerk", "mm/s^3", false, false, true},
+      {Quantity::JointJerkY, "joint_jy", "Joint Y jerk", "mm/s^3", false, false, true},
+      {Quantity::JointJerkZ, "joint_jz", "Joint Z jerk", "mm/s^3", false, false, true},
+      {Quantity::JointVelocityA, "joint_va", "Joint A velocity", "deg/s", false, false, true},
+      {Quantity::JointVelocityB, "joint_vb", "Joint B velocity", "deg/s", false, false, true},
+      {Quantity::JointVelocityC, "joint_vc", "Joint C velocity", "deg/s", false, false, true},
+      {Quantity::JointAccelerationA, "joint_aa", "Joint A acceleration", "deg/s^2", false, false, true},
+      {Quantity::JointAccelerationB, "joint_ab", "Joint B acceleration", "deg/s^2", false, false, true},
+      {Quantity::JointAccelerationC, "joint_ac", "Joint C acceleration", "deg/s^2", false, false, true},
+      {Quantity::JointJerkA, "joint_ja", "Joint A jerk", "deg/s^3", false, false, true},
+      {Quantity::JointJerkB, "joint_jb", "Joint B jerk", "deg/s^3", false, false, true},
+      {Quantity::JointJerkC, "joint_jc", "Joint C jerk", "deg/s^3", false, false, true},
   };
   return infos;
 }
@@ -231,7 +308,7 @@ bool isSignedQuantity(Quantity q) {
     case Quantity::Deviation:
       return true;
     default:
-      return false;
+      return q > Quantity::JointSpeed;
   }
 }
 
@@ -239,6 +316,16 @@ const QuantityInfo& quantityInfo(Quantity q) {
   for (const QuantityInfo& info : quantityInfos())
     if (info.quantity == q) return info;
   throw std::invalid_argument("unknown quantity");
+}
+
+bool quantityAvailable(Quantity q, const Trajectory& samples) {
+  const QuantityInfo& info = quantityInfo(q);
+  if (info.needsFeedback && !samples.hasFeedback()) return false;
+  if (!info.needsJoints) return true;
+  if (positionsOf(q) == Positions::LinearJoints) return samples.extraChannel("joint_x") != nullptr;
+  const char* names[] = {"joint_a", "joint_b", "joint_c"};
+  const int axis = (static_cast<int>(q) - static_cast<int>(Quantity::JointVelocityA)) % 3;
+  return samples.extraChannel(names[axis]) != nullptr;
 }
 
 std::optional<Quantity> parseQuantity(const std::string& name) {
@@ -257,8 +344,9 @@ void sampleQuantityRange(Quantity q, const Trajectory& samples, std::size_t firs
     for (std::size_t i = first; i < last; ++i) out[i - first] = static_cast<float>(value(i));
     return;
   }
+  const PositionArrays p = positionArrays(positionsOf(q), samples);
   for (std::size_t from = first; from < last; from += kKinematicsChunk) {
-    deriveRange(samples, isPerAxis(q), from, std::min(last, from + kKinematicsChunk), [&](std::size_t i, const Kinematics& k, std::size_t local) {
+    deriveRange(samples, p, isPerAxis(q), from, std::min(last, from + kKinematicsChunk), [&](std::size_t i, const Kinematics& k, std::size_t local) {
       out[i - first] = static_cast<float>(kinematicValue(q, k, local));
     });
   }
@@ -272,23 +360,28 @@ std::vector<std::vector<double>> sampleQuantities(const std::vector<Quantity>& q
   for (const Quantity q : qs) checkSampleQuantity(q, samples);  // before a channel's memory is taken
   const std::size_t n = samples.size();
   std::vector<std::vector<double>> out(qs.size(), std::vector<double>(n));
-  std::vector<std::size_t> derived;  // of qs
-  bool perAxis = false;
-  for (std::size_t j = 0; j < qs.size(); ++j) {
-    if (isKinematic(qs[j]) && !storedChannel(qs[j], samples)) {
-      derived.push_back(j);
-      perAxis = perAxis || isPerAxis(qs[j]);
-      continue;
+  // Derived once for each kind of positions asked for: the tip, the linear or the rotary joints.
+  for (const Positions which : {Positions::Tip, Positions::LinearJoints, Positions::RotaryJoints}) {
+    std::vector<std::size_t> derived;  // of qs
+    bool perAxis = false;
+    for (std::size_t j = 0; j < qs.size(); ++j) {
+      if (isKinematic(qs[j]) && !storedChannel(qs[j], samples)) {
+        if (positionsOf(qs[j]) != which) continue;
+        derived.push_back(j);
+        perAxis = perAxis || isPerAxis(qs[j]);
+      } else if (which == Positions::Tip) {
+        PlainValues value(qs[j], samples);
+        for (std::size_t i = 0; i < n; ++i) out[j][i] = value(i);
+      }
     }
-    PlainValues value(qs[j], samples);
-    for (std::size_t i = 0; i < n; ++i) out[j][i] = value(i);
-  }
-  if (derived.empty()) return out;
-  for (std::size_t first = 0; first < n; first += kKinematicsChunk) {
-    deriveRange(samples, perAxis, first, std::min(n, first + kKinematicsChunk),
-                [&](std::size_t i, const Kinematics& k, std::size_t local) {
-                  for (const std::size_t j : derived) out[j][i] = kinematicValue(qs[j], k, local);
-                });
+    if (derived.empty()) continue;
+    const PositionArrays p = positionArrays(which, samples);
+    for (std::size_t first = 0; first < n; first += kKinematicsChunk) {
+      deriveRange(samples, p, perAxis, first, std::min(n, first + kKinematicsChunk),
+                  [&](std::size_t i, const Kinematics& k, std::size_t local) {
+                    for (const std::size_t j : derived) out[j][i] = kinematicValue(qs[j], k, local);
+                  });
+    }
   }
   return out;
 }

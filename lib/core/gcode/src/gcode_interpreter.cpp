@@ -211,6 +211,12 @@ bool InterpreterState::executeBlock(const Block& block) {
   int mCode[kMGroupCount] = {-1, -1, -1, -1, -1};
   for (int i = 0; i < block.mCount; ++i) {
     const int group = mGroupOf(block.m[i]);
+    if (block.m[i] >= 2000)
+      warnOnce(warnedRemappedM_, block.mColumn[i],
+               fmt::format("{} is a code of the control's own configuration (LinuxCNC's five-axis demos switch "
+                           "tool-centre-point control with M428 and M429): it does not change the motion here, where "
+                           "the machine description says whether X Y Z are the tool tip",
+                           codeName('M', block.m[i])));
     if (group < 0) continue;
     if (mCode[group] >= 0)
       return fail(block.mColumn[i],
@@ -243,7 +249,14 @@ bool InterpreterState::executeBlock(const Block& block) {
   }
   if (block.has('S') && block.get('S') < 0)
     return fail(block.col('S'), "Negative spindle speed used");
-  const bool stopBefore = mCode[kMToolChange] >= 0 || mCode[kMSpindle] >= 0;
+  // What the control's task waits for the motion before it does: a tool or spindle change, the
+  // spindle's speed, the coolant, a tool length offset or another coordinate system (LinuxCNC 2.9's
+  // emcTaskCheckPreconditions; a Fanuc control's M codes wait alike unless made to run ahead).
+  bool coolant = false;  // M7 M8 M9 (M7 and M8 may stand together)
+  for (int i = 0; i < block.mCount; ++i) coolant = coolant || block.m[i] == 70 || block.m[i] == 80 || block.m[i] == 90;
+  const bool stopBefore = mCode[kMToolChange] >= 0 || mCode[kMSpindle] >= 0 || coolant ||
+                          block.has('S') || groups.has(kGroupToolLength) ||
+                          (groups.has(kGroupCoordSystem) && groups.code[kGroupCoordSystem] != state_.coordSystem);
 
   if (block.has('T')) {
     const double t = block.get('T');
@@ -432,7 +445,6 @@ bool InterpreterState::readRotaryWords(const Block& block, int motion, int nonMo
   if (rotaryColumn == 0) return true;
   // What is not modelled of the rotary axes is refused, never read as if they stood still.
   if (isCycle(motion)) return fail(rotaryColumn, "A, B or C words in a canned cycle are not supported");
-  if (nonModal == kG53) return fail(rotaryColumn, "A, B or C words with G53 (machine coordinates) are not supported");
   if (state_.cutterComp != kG40)
     return fail(rotaryColumn, "A, B or C words under cutter radius compensation (G41/G42) are not supported");
   if (rotaryOffsetLine_ != 0)
@@ -444,7 +456,9 @@ bool InterpreterState::readRotaryWords(const Block& block, int motion, int nonMo
     const char c = "ABC"[i];
     if (!block.has(c)) continue;
     const double v = block.get(c);  // degrees, in inch programs too
-    state_.rotary[i] = state_.incremental ? state_.rotary[i] + v : v;
+    // With no offset of the rotary axes (refused above), their machine coordinates (G53) are
+    // the program's.
+    state_.rotary[i] = state_.incremental && nonModal != kG53 ? state_.rotary[i] + v : v;
   }
   return true;
 }

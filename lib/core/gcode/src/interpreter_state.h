@@ -268,6 +268,7 @@ class InterpreterState {
   std::uint32_t rotaryOffsetLine_ = 0;    // the first line that offset a rotary axis (0: none)
   bool warnedSpindleMode_ = false, warnedSenderCommand_ = false, warnedSenderComment_ = false;
   bool warnedLookAhead_ = false, warnedPeckTapping_ = false, warnedMainM99_ = false;
+  bool warnedRemappedM_ = false;
   bool warnedLinuxcncTap_ = false;
   bool unitsStated_ = false, planeStated_ = true, distanceStated_ = true;
   bool commentSaysInches_ = false;  // a comment before the first length speaks of inches

@@ -1,4 +1,5 @@
 #include "isurface/map/quality_map.h"
+#include "isurface/map/tool_axes.h"
 
 #include <algorithm>
 #include <cmath>
@@ -210,6 +211,13 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
     }
   } else if (program && request.showToolpath) {
     map.data.toolpath = programPolylines(*program);
+  }
+  if (request.toolAxes) {
+    // A stroke every 1/80 of the surface's size, 1/25 of it long: seen, and the surface between.
+    Vec3 lower = Vec3::Constant(INFINITY), upper = Vec3::Constant(-INFINITY);
+    for (const Vec3& p : map.data.positions) lower = lower.cwiseMin(p), upper = upper.cwiseMax(p);
+    const double size = map.data.positions.empty() ? 1.0 : std::max((upper - lower).norm(), 1e-3);
+    map.data.toolAxes = toolAxisMarks(samples, map.passes, size / 80, size / 25);
   }
   if (request.highlightLine) {
     samples.line.forEachRun([&](std::uint32_t line, std::size_t begin, std::size_t end) {

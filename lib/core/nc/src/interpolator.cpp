@@ -33,6 +33,8 @@ std::vector<JointChannel> jointChannels(const FiveAxisKinematics& kinematics) {
     const char name = static_cast<char>(kinematics.rotary[k].name - 'A' + 'a');
     channels.push_back({std::string("joint_") + name, offsetof(JointSample, rotary) + sizeof(double) * k});
   }
+  const char* tool[] = {"tool_i", "tool_j", "tool_k"};
+  for (std::size_t i = 0; i < 3; ++i) channels.push_back({tool[i], offsetof(JointSample, toolAxis) + sizeof(double) * i});
   return channels;
 }
 

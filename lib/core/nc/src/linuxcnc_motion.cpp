@@ -413,8 +413,9 @@ void LinuxCncMotion::Impl::push(const Vec3& position, const Vec3& rotary, const 
       s.y = tip.y();
       s.z = tip.z();
     }
+    const Vec3 axis = toolAxis(k, pose.rotary);
     JointSample j{rotary.x(), rotary.y(), rotary.z(), {joints.linear.x(), joints.linear.y(), joints.linear.z()},
-                  {joints.rotary[0], joints.rotary[1]}};
+                  {joints.rotary[0], joints.rotary[1]}, {axis.x(), axis.y(), axis.z()}};
     jointBatch.push_back(j);
     if (servos.empty()) {
       s.fbX = s.fbY = s.fbZ = nan;

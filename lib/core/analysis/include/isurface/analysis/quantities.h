@@ -26,6 +26,15 @@ enum class Quantity {
   SpeedInconsistency,  // mm/min, |speed - speed of the nearest sample on a neighbouring pass|, the larger of both sides
   AccelerationInconsistency, // mm/s^2, the same for tangential acceleration
   Deviation,           // um, feedback surface from the commanded one along the commanded normal (signed, + outwards)
+  // A five-axis run's joints (its joint_x ... joint_c channels): the machine's slides as they move
+  // through the rotary table or head, and its rotary axes.
+  JointSpeed,          // mm/min, |v| of the X Y Z joints together
+  JointVelocityX, JointVelocityY, JointVelocityZ,           // mm/min
+  JointAccelerationX, JointAccelerationY, JointAccelerationZ, // mm/s^2
+  JointJerkX, JointJerkY, JointJerkZ,                       // mm/s^3
+  JointVelocityA, JointVelocityB, JointVelocityC,           // deg/s
+  JointAccelerationA, JointAccelerationB, JointAccelerationC, // deg/s^2
+  JointJerkA, JointJerkB, JointJerkC,                       // deg/s^3
 };
 
 struct QuantityInfo {
@@ -35,7 +44,11 @@ struct QuantityInfo {
   const char* unit;   // "mm/min"
   bool needsFeedback; // following error, deviation
   bool onSurface;     // needs the mesh (inconsistencies, deviation)
+  bool needsJoints = false;  // a five-axis run's joint channels
 };
+
+// Whether the samples have what the quantity needs to be offered (feedback, joint channels).
+bool quantityAvailable(Quantity q, const Trajectory& samples);
 
 const std::vector<QuantityInfo>& quantityInfos();
 const QuantityInfo& quantityInfo(Quantity q);

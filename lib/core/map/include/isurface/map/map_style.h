@@ -3,6 +3,7 @@
 // programmed path, the glowing samples, the colouring choice and the view. `vis` turns it into a
 // scene (quality_scene.h). Units: mm.
 #include <optional>
+#include <array>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,7 @@ struct SurfaceData {
   std::vector<std::vector<Vec3>> toolpath;  // cutting path as polylines, mm
   std::vector<std::vector<float>> toolpathScalars;  // when not empty: a value per toolpath point
   std::vector<Vec3> highlight;   // samples to make glow (a selected line's), mm
+  std::vector<std::array<Vec3, 2>> toolAxes;  // a five-axis run's tool axis: strokes from the tip up the tool, mm
   // A coarser surface shown while the camera moves (level of detail); optional.
   std::vector<Vec3> coarsePositions;
   const SurfaceMesh* coarseMesh = nullptr;

@@ -28,10 +28,12 @@ struct JointSample {
   double a, b, c;          // deg, the program's rotary axes
   double linear[3];        // mm, the machine's X Y Z joints
   double rotary[2];        // deg, its rotary joints in FiveAxisKinematics::rotary order
+  double toolAxis[3];      // unit, the tool's direction (tip towards spindle) in the workpiece frame
 };
 
-// The channels a five-axis run adds to its samples: the machine's rotary axes ("b", "c"), then
-// its joints ("joint_x", "joint_y", "joint_z", "joint_b", "joint_c"), each read from a JointSample.
+// The channels a five-axis run adds to its samples: the machine's rotary axes ("b", "c"), its
+// joints ("joint_x", "joint_y", "joint_z", "joint_b", "joint_c") and the tool axis in the
+// workpiece frame ("tool_i", "tool_j", "tool_k"), each read from a JointSample.
 struct JointChannel {
   std::string name;
   std::size_t offset;  // bytes into a JointSample of its double
