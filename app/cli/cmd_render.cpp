@@ -13,6 +13,7 @@
 #include "isurface/nc/simulator.h"
 #include "isurface/vis/color_map.h"
 #include "isurface/map/quality_map.h"
+#include "isurface/map/tool_axes.h"
 #include "isurface/vis/quality_scene.h"
 #include "isurface/vis/offscreen_render.h"
 #include "isurface/io/trajectory_loading.h"
@@ -80,7 +81,7 @@ vis::QualityMapRequest makeRequest(const RenderOptions& o) {
   request.showToolpath = !o.noToolpath;
   request.colorToolpath = o.colorToolpath;
   request.passWires = !o.noPassWires;
-  request.toolAxes = o.toolAxes;
+  request.toolAxes = o.toolAxes;  // checked against the samples once they are read (toolAxesAsked)
   if (o.isoBands < 0 || o.isoBands > 100) throw InputError(Diagnostic{"", 0, 0, "--iso-bands must be 0 to 100"});
   request.isoBands = o.isoBands;
   request.gapLimit = o.gapLimit.checked();
@@ -101,12 +102,17 @@ int runRender(const RenderOptions& o) {
   // A map that shows no feedback and no other channel of the dump is built without copying
   // them: 24 bytes a sample less for a simulated dump.
   TrajectoryChannels channels;
-  channels.extra = !request.channel.empty();
+  // A five-axis run's joints and tool axis are channels of the dump.
+  channels.extra = !request.channel.empty() || quantityInfo(request.quantity).needsJoints || request.toolAxes;
   channels.feedback = channels.extra || request.feedbackSurface || quantityInfo(request.quantity).needsFeedback;
   const OpenedRun run = openRunOnTerminal({dumpOnly ? "" : o.gcode, dump}, o.machine, o.force, channels);
   const Trajectory& samples = *run.samples;
   ProgressLine building("building the surface");
   vis::QualityMap map = vis::buildQualityMap(samples, run.program.get(), request);
+  if (request.toolAxes && !vis::hasToolAxes(samples))
+    throw InputError(Diagnostic{samples.source, 0, 0,
+                                "--tool-axis: the samples have no tool axis (tool_i tool_j tool_k channels): a five-axis "
+                                "machine's simulation writes it (docs/five-axis.md)"});
   for (const std::string& note : surfaceNotes(samples, map, "--pattern or --gap-limit"))
     std::fprintf(stderr, "warning: %s: %s\n", samples.source.c_str(), note.c_str());
   map.style.fontSize = vis::fontSizeForHeight(height);

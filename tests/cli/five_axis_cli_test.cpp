@@ -1,11 +1,12 @@
 // Five-axis programs on the command line: canon lists A, B and C with every move as LinuxCNC's
-// rs274 reads them; simulating one is refused with the first line that turns a rotary axis
-// (never simulated as if A, B and C stood still), and writes no dump.
+// rs274 reads them; a machine without rotary axes refuses them with the first line that turns
+// one; the five-axis machine's dump holds the tip, the rotary axes, the joints and the tool axis.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <sstream>
 
+#include "image_compare.h"
 #include "scratch_files.h"
 #include "test_support.h"
 
@@ -14,6 +15,18 @@ namespace {
 
 using test::runCli;
 using test::scratchDir;
+
+// Pixels of the tool axis strokes' dark blue (0.05, 0.1, 0.35) and near it.
+std::size_t darkBluePixels(const std::string& png) {
+  const test::Image image = test::readPng(png);
+  std::size_t count = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) {
+      const unsigned char* p = image.at(x, y);
+      count += p[2] > 60 && p[2] < 140 && p[0] < 50 && p[1] < 60 && p[2] > p[0] + 30;
+    }
+  return count;
+}
 
 std::string program(const std::string& name) {
   return std::string(test::sourceDir()) + "/tests/data/linuxcnc-2.9-xyzbc-trt/" + name + ".ngc";
@@ -56,6 +69,22 @@ TEST(fiveAxisCli, SimulatingOnTheFiveAxisMachineWritesTheTipTheRotaryAxesAndTheJ
   ASSERT_EQ(info.exitCode, 0) << info.err;
   for (const char* channel : {"\"x\"", "\"b\"", "\"c\"", "\"joint_x\"", "\"joint_y\"", "\"joint_z\"", "\"joint_b\"", "\"joint_c\""})
     EXPECT_NE(info.out.find(channel), std::string::npos) << channel << "\n" << info.out;
+}
+
+// The tool axis is drawn along a five-axis run (dark strokes over the picture), and asked of a
+// run without one it is refused with what is missing.
+TEST(fiveAxisCli, RenderDrawsTheToolAxisOfAFiveAxisRunAndRefusesItElsewhere) {
+  const std::string machine = " --machine " + std::string(test::sourceDir()) + "/resources/machines/linuxcnc-xyzbc-trt.json";
+  const std::string plain = (scratchDir() / "plain.png").string(), axes = (scratchDir() / "axes.png").string();
+  const auto without = runCli("render " + program("hemisphere_long") + machine + " --gap-limit 10 --size 400x300 -o " + plain);
+  ASSERT_EQ(without.exitCode, 0) << without.err;
+  const auto with = runCli("render " + program("hemisphere_long") + machine + " --gap-limit 10 --tool-axis --size 400x300 -o " + axes);
+  ASSERT_EQ(with.exitCode, 0) << with.err;
+  EXPECT_GT(darkBluePixels(axes), darkBluePixels(plain) + 500);
+  const auto threeAxis = runCli("render " + std::string(test::sourceDir()) +
+                                "/tests/data/linuxcnc-2.9/arcs_of_every_size_g64.ngc --tool-axis -o " + plain);
+  EXPECT_EQ(threeAxis.exitCode, 2);
+  EXPECT_NE(threeAxis.err.find("no tool axis"), std::string::npos) << threeAxis.err;
 }
 
 }  // namespace

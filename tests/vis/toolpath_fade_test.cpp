@@ -41,7 +41,7 @@ std::pair<std::string, std::string> withAndWithoutToolpath(double step) {
   const vis::QualityMap map = vis::buildQualityMap(samples, &program.program, request);
   vis::QualityScene scene(map.data, map.style);
   const std::string shown = vis::renderSceneToPngBytes(scene, 400, 300);
-  scene.setVisibility(true, false, false);
+  scene.setVisibility(true, false, false, false);
   return {shown, vis::renderSceneToPngBytes(scene, 400, 300)};
 }
 

@@ -39,6 +39,7 @@ vis::QualityMapRequest Inspector::State::mapRequest() const {
   // llvmpipe spends about 0.5 ms a thousand triangles on this machine: 30,000 vertices (60,000
   // triangles, thinned along and across the passes) leave a drag frame under 67 ms.
   r.coarseVertices = 30'000;
+  r.toolAxes = true;  // a five-axis run's, shown when asked for (Document::showToolAxes)
   // Half a vertex a pixel of the view, as it was last drawn; closer views are refined.
   if (refinement.vertexBudget > 0) r.maxVertices = refinement.vertexBudget;
   return r;
@@ -264,7 +265,7 @@ void Inspector::State::take(Recolouring& result, const std::string&) {
   doc->map = std::move(result.map);
   doc->scene = result.scene;
   noteSurface(*doc);
-  doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints, doc->showToolAxes);
   status = doc->name + ": coloured by " +
            (settings.channel.empty() ? std::string(quantityInfo(settings.quantity).label) : settings.channel);
   if (k != active) return;  // shown when that document is chosen again
@@ -311,7 +312,7 @@ void Inspector::State::activate(std::size_t index) {
   selection.setTrajectory(doc ? doc->samples.get() : nullptr);
   selection.clear();
   view.setScene(doc ? doc->scene : nullptr, doc ? doc->map.rayIndex : nullptr);
-  if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+  if (doc && doc->scene) doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints, doc->showToolAxes);
   // The Colour panel shows what the map shown is coloured by, on which surface, at which gap:
   // a colouring made again, or a re-optimised map beside it, is made alike.
   if (doc && doc->scene) {

@@ -78,7 +78,7 @@ struct Document {
   bool machineKnown = true;   // false: a dump that names no machine (the default stands in)
   std::vector<std::string> warnings;
   double surfaceShare = 1;  // of the map's vertices, the share on its surface (SurfaceMesh::joinedShare)
-  bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false;
+  bool showProgram = true, showSurface = true, showToolpath = true, showPoints = false, showToolAxes = false;
   vis::ViewDirection viewDirection = vis::ViewDirection::Iso;  // the direction it was last seen from
   // The servo's positions are loaded when first needed (12 bytes a sample): from here.
   FeedbackSupply feedbackSupply;

@@ -178,8 +178,14 @@ void drawColourControls(Inspector::State& s, float x, float y, float w, float h)
     visibility |= ImGui::Checkbox("toolpath", &doc->showToolpath);
     sameLineIfRoomFor("points");
     visibility |= ImGui::Checkbox("points", &doc->showPoints);
+    if (doc->scene->hasToolAxes()) {
+      sameLineIfRoomFor("tool axis");
+      visibility |= ImGui::Checkbox("tool axis", &doc->showToolAxes);
+      noteControl(s, "view.toolAxis");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("the tool's direction along the passes (a five-axis run)");
+    }
     if (visibility) {
-      doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints);
+      doc->scene->setVisibility(doc->showSurface, doc->showToolpath, doc->showPoints, doc->showToolAxes);
       s.view.invalidate();
     }
     // A surface on little of the path is mostly empty: said, with what may fill it, below the

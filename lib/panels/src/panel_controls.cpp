@@ -273,7 +273,7 @@ void drawNavigationTree(Inspector::State& s, float x, float y, float w, float h)
         ImGui::Unindent();
       }
       if (changed && doc.scene) {
-        doc.scene->setVisibility(doc.showSurface, doc.showToolpath, doc.showPoints);
+        doc.scene->setVisibility(doc.showSurface, doc.showToolpath, doc.showPoints, doc.showToolAxes);
         s.view.invalidate();
       }
       ImGui::TreePop();

@@ -37,6 +37,23 @@ void chooseRegion(Inspector::State& s, const app_model::ScreenRectangle& rectang
   s.dialogs.optimise.opening = true;
 }
 
+// A five-axis run's joints at sample k: the slides (in the length unit shown) and the rotary
+// axes (deg); none for a run without joints.
+std::vector<std::string> jointFields(const Trajectory& t, std::size_t k, const DisplayUnits& u) {
+  std::vector<std::string> fields;
+  const char* linear[] = {"joint_x", "joint_y", "joint_z"};
+  for (int i = 0; i < 3; ++i) {
+    const std::vector<double>* c = t.extraChannel(linear[i]);
+    if (!c) return {};
+    fields.push_back(fmt::format("{}{} {:.{}f}{}", i == 0 ? "joints " : "", char('X' + i), u.length((*c)[k]),
+                                 u.lengthDecimals(), i == 2 ? std::string(" ") + u.lengthUnit() : ""));
+  }
+  for (const char* rotary : {"joint_a", "joint_b", "joint_c"})
+    if (const std::vector<double>* c = t.extraChannel(rotary))
+      fields.push_back(fmt::format("{} {:.3f} deg", char(rotary[6] - 'a' + 'A'), (*c)[k]));
+  return fields;
+}
+
 // The picked sample's values, as the paper's window shows them (line, point, speed), right of
 // the orientation axes in the lower left corner: a line each for the sample, the point and the
 // feed where the view is wide enough, else more lines, never over the colour legend.
@@ -55,7 +72,7 @@ void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, 
   }
   const DisplayUnits u = s.units();
   const int d = u.lengthDecimals();
-  const std::vector<std::vector<std::string>> groups = {
+  std::vector<std::vector<std::string>> groups = {
       {sampleName(t, k), fmt::format("line {}", t.line[k]), fmt::format("t {:.3f} s", t.timeAt(k))},
       {fmt::format("X {:.{}f}", u.length(t.x[k]), d), fmt::format("Y {:.{}f}", u.length(t.y[k]), d),
        fmt::format("Z {:.{}f} {}", u.length(t.z[k]), d, u.lengthUnit())},
@@ -64,6 +81,7 @@ void drawSelectionReadout(Inspector::State& s, ImDrawList* draw, ImVec2 origin, 
        fmt::format("a {} {}", readableValue(u.length(doc->curves[1].values.value(k)), u.motionResolution(1)),
                    u.accelerationUnit()),
        fmt::format("j {} {}", readableValue(u.length(doc->curves[2].values.value(k)), u.motionResolution(2)), u.jerkUnit())}};
+  if (std::vector<std::string> joints = jointFields(t, k, u); !joints.empty()) groups.push_back(std::move(joints));
   const float left = size.x * static_cast<float>(vis::kAxesCornerWidth) + 10;
   const float room = size.x * static_cast<float>(vis::kLegendLeft) - left - 8;
   // Each group on lines of its own, as many of its values on a line as fit.

@@ -126,7 +126,7 @@ std::optional<vis::DetailSurface> detailFromDump(const BiipReader& reader, const
   TrajectoryChannels channels;
   channels.block = false;
   channels.feedback = vis::needsFeedback(request);
-  channels.extra = !request.channel.empty();
+  channels.extra = !request.channel.empty() || quantityInfo(request.quantity).needsJoints;
   const std::optional<std::uint64_t> free = availableMemory();
   channels.thinning = free ? thinningToFit(records, bytesPerSample(reader, channels), *free / 2) : 1;
   if (channels.thinning >= k) return std::nullopt;

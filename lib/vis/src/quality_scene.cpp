@@ -142,6 +142,7 @@ QualityScene::QualityScene(const SurfaceData& data, const MapStyle& style) : par
 
   if (!data.toolAxes.empty()) {
     p.toolAxesActor = makeToolAxesActor(data.toolAxes);
+    p.toolAxesActor->SetVisibility(style.showToolAxes);
     p.renderer->AddActor(p.toolAxesActor);
   }
   // The toolpath blends over what is drawn before it (makeToolpathActor): after the surfaces.
@@ -306,8 +307,11 @@ void QualityScene::allowDetailSurface(bool allowed) {
   useCoarseSurface(parts_->coarse);
 }
 
-void QualityScene::setVisibility(bool surface, bool toolpath, bool points) {
+bool QualityScene::hasToolAxes() const { return parts_->toolAxesActor != nullptr; }
+
+void QualityScene::setVisibility(bool surface, bool toolpath, bool points, bool toolAxes) {
   Parts& p = *parts_;
+  if (p.toolAxesActor) p.toolAxesActor->SetVisibility(toolAxes);
   p.showSurface = surface;
   useCoarseSurface(p.coarse);
   p.showToolpath = toolpath;

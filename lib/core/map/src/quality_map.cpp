@@ -212,7 +212,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   } else if (program && request.showToolpath) {
     map.data.toolpath = programPolylines(*program);
   }
-  if (request.toolAxes) {
+  if (request.toolAxes && hasToolAxes(samples)) {
     // A stroke every 1/80 of the surface's size, 1/25 of it long: seen, and the surface between.
     Vec3 lower = Vec3::Constant(INFINITY), upper = Vec3::Constant(-INFINITY);
     for (const Vec3& p : map.data.positions) lower = lower.cwiseMin(p), upper = upper.cwiseMax(p);
@@ -255,6 +255,7 @@ QualityMap buildQualityMap(const Trajectory& samples, const Program* program, co
   style.view = request.view;
   style.showToolpath = request.showToolpath;
   style.passWires = request.passWires;
+  style.showToolAxes = request.toolAxes;
   style.isoBands = request.isoBands;
   // A range too narrow for colours (see isNarrowRange) would only trace rounding noise with
   // iso-lines: a 100 M-sample raster at a constant F600 came out in stripes along the passes.

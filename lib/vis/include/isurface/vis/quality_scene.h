@@ -53,7 +53,9 @@ class QualityScene {
   // A picture of another shape than the view the close-up was made for shows more than it
   // covers: drawn with the whole surface instead while not allowed.
   void allowDetailSurface(bool allowed);
-  void setVisibility(bool surface, bool toolpath, bool points);
+  // `toolAxes`: a five-axis run's tool axis (SurfaceData::toolAxes), where the scene has it.
+  void setVisibility(bool surface, bool toolpath, bool points, bool toolAxes);
+  bool hasToolAxes() const;
   // Makes the caption and the legend's text smaller where a view `width` pixels wide would cut
   // them (never larger than the style's font size). A view drawn at `drawnScale` of that width
   // (and shown stretched back to it) gets its text and its glows at that scale too.

@@ -40,6 +40,7 @@ struct MapStyle {
   ViewDirection view = ViewDirection::Iso;
   bool showToolpath = true;
   bool passWires = true;
+  bool showToolAxes = false;     // the tool axis strokes (SurfaceData::toolAxes) shown at first
   int isoBands = 12;             // iso-lines across the range; 0 for none
   int fontSize = 16;             // points of the caption and legend text
 };

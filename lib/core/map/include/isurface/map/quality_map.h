@@ -41,7 +41,7 @@ struct QualityMapRequest {
   bool showToolpath = true;
   bool colorToolpath = false;                // the sampled cutting path coloured by the quantity
   bool passWires = true;
-  bool toolAxes = false;                     // a five-axis run's tool axis along the passes
+  bool toolAxes = false;                     // a five-axis run's tool axis along the passes, where the samples have it
   int isoBands = 12;
   double gapLimit = MeshOptions{}.gapLimit;  // mm; passes further apart are not joined by triangles
   PathPattern pattern = PathPattern::Auto;   // how the samples split into passes
