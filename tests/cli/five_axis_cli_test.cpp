@@ -87,5 +87,18 @@ TEST(fiveAxisCli, RenderDrawsTheToolAxisOfAFiveAxisRunAndRefusesItElsewhere) {
   EXPECT_NE(threeAxis.err.find("no tool axis"), std::string::npos) << threeAxis.err;
 }
 
+// The optimiser re-fits the tip alone: a five-axis program is refused with its first rotary
+// line, and nothing is written.
+TEST(fiveAxisCli, OptimisingAFiveAxisProgramIsRefusedWithItsLine) {
+  const std::string out = (scratchDir() / "optimised.ngc").string();
+  const auto r = runCli("optimize " + program("swarf_bc") + " --machine " + std::string(test::sourceDir()) +
+                        "/resources/machines/linuxcnc-xyzbc-trt.json --lines 8-20 -o " + out);
+  EXPECT_EQ(r.exitCode, 2) << r.err;
+  EXPECT_NE(r.err.find("swarf_bc.ngc:8:1: five-axis programs (A, B or C turn here) are not re-optimised"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(std::filesystem::exists(out));
+}
+
 }  // namespace
 }  // namespace isurface

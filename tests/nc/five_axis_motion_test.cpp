@@ -115,5 +115,32 @@ TEST(fiveAxisMotion, ToolCentrePointControlOnAndOff) {
   EXPECT_NEAR(std::abs(without.y[half]), 10.0, 0.1);
 }
 
+// C turning at 90 deg/s under a tip 80 mm from its centre drives the X and Y slides round at up
+// to 80 * pi / 2 = 125.7 mm/s, past their 100 mm/s: LinuxCNC runs it so, and the run says which
+// joints and where. At 10 mm from the centre (15.7 mm/s) nothing is said.
+TEST(fiveAxisMotion, JointsPastTheirLimitsAreNamedWithTheirLines) {
+  const Machine machine = trtMachine();
+  auto warningsOf = [&](const std::string& gcode) {
+    const InterpretResult read = interpretGcode(gcode, "far.ngc");
+    EXPECT_TRUE(read.ok());
+    TrajectorySink sink(machine.cycle, "far.ngc", false);
+    sink.keepJointsOf(*machine.kinematics);
+    std::string all;
+    for (const Diagnostic& d : simulate(read.program, machine, sink).warnings) all += d.str() + "\n";
+    return all;
+  };
+  const std::string far = warningsOf("G21 G90 G94 G61\nG0 X80 Y0 Z0\nG1 C90 F5400\nM2\n");
+  for (const char* joint : {"joint X reaches ", "joint Y reaches "}) {
+    const std::size_t at = far.find(joint);
+    ASSERT_NE(at, std::string::npos) << far;
+    const double speed = std::stod(far.substr(at + std::string(joint).size()));
+    EXPECT_GT(speed, 120.0) << far;
+    EXPECT_LT(speed, 80 * 3.14159265358979 / 2 + 0.1) << far;
+  }
+  EXPECT_NE(far.find("far.ngc:3: joint"), std::string::npos) << far;
+  EXPECT_NE(far.find("on lines 3 "), std::string::npos) << far;
+  EXPECT_EQ(warningsOf("G21 G90 G94 G61\nG0 X10 Y0 Z0\nG1 C90 F5400\nM2\n"), "");
+}
+
 }  // namespace
 }  // namespace isurface

@@ -18,6 +18,7 @@
 #include "linuxcnc_arc_blend.h"
 #include "linuxcnc_blend.h"
 #include "linuxcnc_cycle.h"
+#include "joint_limit_notes.h"
 #include "linuxcnc_rotary.h"
 
 namespace isurface {
@@ -59,6 +60,7 @@ struct LinuxCncMotion::Impl {
     const Vec3 joints = m.kinematics && m.kinematics->toolCentrePoint ? jointsFor(*m.kinematics, TipPose{start, {0, 0}}).linear : start;
     if (sink.wantsFeedback())
       for (int i = 0; i < 3; ++i) servos.emplace_back(m.axes[i], m.cycle, joints[i]);
+    if (m.kinematics) jointLimits.emplace(m);
   }
 
   const Machine& machine;
@@ -68,6 +70,7 @@ struct LinuxCncMotion::Impl {
   std::vector<AxisServo> servos;
   std::vector<SimSample> batch;
   std::vector<JointSample> jointBatch;
+  std::optional<JointLimitNotes> jointLimits;
   RotaryLimits rotaryAxes;
   InterpolationSummary summary;
   Vec3 canonEnd;  // where the next segment starts, mm
@@ -417,6 +420,7 @@ void LinuxCncMotion::Impl::push(const Vec3& position, const Vec3& rotary, const 
     JointSample j{rotary.x(), rotary.y(), rotary.z(), {joints.linear.x(), joints.linear.y(), joints.linear.z()},
                   {joints.rotary[0], joints.rotary[1]}, {axis.x(), axis.y(), axis.z()}};
     jointBatch.push_back(j);
+    jointLimits->note(j, part.line);
     if (servos.empty()) {
       s.fbX = s.fbY = s.fbZ = nan;
     } else {
@@ -473,6 +477,9 @@ InterpolationSummary LinuxCncMotion::finish() {
 }
 
 double LinuxCncMotion::pathLength() const { return impl_->pathLength; }
+std::vector<Diagnostic> LinuxCncMotion::jointLimitWarnings(const std::string& source) const {
+  return impl_->jointLimits ? impl_->jointLimits->warnings(source) : std::vector<Diagnostic>{};
+}
 std::size_t LinuxCncMotion::segments() const { return impl_->segments; }
 double LinuxCncMotion::plannedSeconds() const {
   return double(impl_->summary.samples + impl_->batch.size()) * impl_->machine.cycle;

@@ -84,6 +84,7 @@ SimulationReport simulateOnLinuxCnc(const Program& program, const Machine& machi
   report.machiningTime = summary.duration;
   report.segments = motion.segments();
   report.pathLength = motion.pathLength();
+  report.warnings = motion.jointLimitWarnings(program.source);
   return report;
 }
 
@@ -293,6 +294,7 @@ SimulationReport StreamingSimulation::finish() {
     report_.machiningTime = summary.duration;
     report_.segments = linuxcnc_->segments();
     report_.pathLength = linuxcnc_->pathLength();
+    report_.warnings = linuxcnc_->jointLimitWarnings(source_);
     if (auto w = feeds_.warning(source_)) report_.warnings.push_back(*w);
     return report_;
   }

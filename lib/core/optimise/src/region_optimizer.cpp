@@ -188,6 +188,13 @@ OptimizeResult optimizeRegion(const std::string& text, const Program& program, L
     throw InputError(Diagnostic{program.source, 0, 0,
                                 "programs that switch between inches and millimetres (G20 and G21) are not re-optimised"});
   const BlockUnits units = inch ? BlockUnits{1.0 / kMmPerInch, 5, 2} : BlockUnits{1.0, 4, 0};
+  // Its moves would be re-fitted through the tool tip alone, and written without A, B and C.
+  if (!program.rotary.empty()) {
+    const Move& first = program.moves.at(static_cast<std::size_t>(program.rotary.front().move));
+    throw InputError(Diagnostic{program.source, first.line, first.column,
+                                "five-axis programs (A, B or C turn here) are not re-optimised: the optimiser re-fits "
+                                "the tool tip's path and would drop the rotary axes"});
+  }
   if (mentions(text, "G93")) throw InputError(Diagnostic{program.source, 0, 0, "inverse-time programs (G93) are not re-optimised"});
   const std::vector<std::string_view> lines = splitLines(text);
   std::vector<std::vector<std::size_t>> runs =

@@ -8,6 +8,10 @@
 // the kinematics' inverse of every cycle (docs/five-axis.md).
 #include <cstdint>
 #include <memory>
+#include <string>
+#include <vector>
+
+#include "isurface/base/diagnostic.h"
 
 #include "isurface/gcode/program.h"
 #include "isurface/nc/interpolator.h"
@@ -34,6 +38,9 @@ class LinuxCncMotion {
   InterpolationSummary finish();
 
   double pathLength() const;          // mm, of the moves with motion
+  // On a machine with rotary axes: each joint that passed its velocity or acceleration limit,
+  // with the lines (2.9 does not keep its joints within them under tool-centre-point control).
+  std::vector<Diagnostic> jointLimitWarnings(const std::string& source) const;
   std::size_t segments() const;       // moves with motion
   double plannedSeconds() const;      // s, of the samples made so far
 
