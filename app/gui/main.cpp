@@ -48,8 +48,12 @@ std::vector<std::array<int, 4>> heldReleases;
 bool shortcutSinceFrame = false;
 std::vector<unsigned int> heldCharacters;
 
-// When the last key, character or button came: the loop draws on for a second after it.
+// When the last key, character, button or pointer move came: the loop draws on for a second
+// after it (a tooltip shows once the pointer has rested a few frames).
 double inputSeenAt = 0;
+
+// Dear ImGui 1.86's GLFW backend reads the pointer each frame and installs no callback for it.
+void onCursorMove(GLFWwindow*, double, double) { inputSeenAt = glfwGetTime(); }
 
 void onChar(GLFWwindow* window, unsigned int character) {
   inputSeenAt = glfwGetTime();
@@ -278,6 +282,7 @@ int run(int argc, char** argv) {
   glfwSetKeyCallback(window, onKey);  // in front of Dear ImGui's, which it calls
   glfwSetCharCallback(window, onChar);  // so too
   glfwSetMouseButtonCallback(window, onMouseButton);  // so too
+  glfwSetCursorPosCallback(window, onCursorMove);
   ImGui_ImplOpenGL3_Init("#version 150");
   {
     isurface::panels::GlHooks hooks{[window] { glfwMakeContextCurrent(window); },

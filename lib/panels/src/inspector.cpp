@@ -361,7 +361,16 @@ void Inspector::State::syncHighlight() {
   if (sel.sample && *sel.sample < t.size()) sample.push_back(t.commanded(*sel.sample));
   doc->scene->setHighlight(line, sample);
   // The tool stands where the selected sample puts it: picked, located or played to.
-  doc->scene->setTool(sample.empty() ? std::nullopt : std::optional<Vec3>(sample.front()));
+  // On a five-axis run it stands along the tool axis there.
+  Vec3 axis = Vec3::UnitZ();
+  const std::vector<double>* i = t.extraChannel("tool_i");
+  const std::vector<double>* j = t.extraChannel("tool_j");
+  const std::vector<double>* k = t.extraChannel("tool_k");
+  if (sel.sample && *sel.sample < t.size() && i && j && k) {
+    const Vec3 along((*i)[*sel.sample], (*j)[*sel.sample], (*k)[*sel.sample]);
+    if (along.allFinite() && along.norm() > 1e-9) axis = along;
+  }
+  doc->scene->setTool(sample.empty() ? std::nullopt : std::optional<Vec3>(sample.front()), axis);
   view.invalidate();
 }
 

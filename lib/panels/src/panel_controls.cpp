@@ -173,6 +173,7 @@ void drawMenuAndToolbar(Inspector::State& s, float toolbarTop, float width) {
         if (q.needsJoints && !(shown && shown->samples && quantityAvailable(q.quantity, *shown->samples))) continue;
         else if (ImGui::MenuItem(q.label, nullptr, s.settings.quantity == q.quantity)) {
           s.settings.quantity = q.quantity;
+          s.settings.channel.clear();  // a channel of the dump chosen in the Colour panel gives way
           s.persistent.quantity = q.name;
           if (s.settings.rangeMode == 2) s.settings.rangeMode = 0;  // a fixed range was the other quantity's
           s.startRecolour();

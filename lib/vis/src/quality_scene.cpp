@@ -255,7 +255,7 @@ void QualityScene::setHighlight(const std::vector<Vec3>& line, const std::vector
   parts_->sampleGlow->SetVisibility(!sample.empty());
 }
 
-void QualityScene::setTool(const std::optional<Vec3>& tip) {
+void QualityScene::setTool(const std::optional<Vec3>& tip, const Vec3& axis) {
   Parts& p = *parts_;
   p.toolTip = tip;
   if (!tip) {
@@ -267,6 +267,13 @@ void QualityScene::setTool(const std::optional<Vec3>& tip) {
     p.renderer->AddActor(p.tool);
   }
   p.tool->SetPosition(tip->x(), tip->y(), tip->z());
+  // The mill stands along +Z about its tip (the origin): turned onto the tool axis.
+  p.tool->SetOrientation(0, 0, 0);
+  const Vec3 up = Vec3::UnitZ(), along = axis.norm() > 1e-9 ? Vec3(axis.normalized()) : up;
+  const Vec3 turnAbout = up.cross(along);
+  const double degrees = std::atan2(turnAbout.norm(), up.dot(along)) * 180.0 / 3.14159265358979323846;
+  if (turnAbout.norm() > 1e-12) p.tool->RotateWXYZ(degrees, turnAbout.x(), turnAbout.y(), turnAbout.z());
+  else if (up.dot(along) < 0) p.tool->RotateWXYZ(180, 1, 0, 0);
   p.tool->SetVisibility(true);
 }
 

@@ -41,8 +41,9 @@ class QualityScene {
 
   // The glowing samples: a selected line's, and the selected sample itself (brighter, larger).
   void setHighlight(const std::vector<Vec3>& line, const std::vector<Vec3>& sample);
-  // The tool standing on a cutter-location point (mm; none: not drawn), a D6R3 ball-end mill.
-  void setTool(const std::optional<Vec3>& tip);
+  // The tool standing on a cutter-location point (mm; none: not drawn), a D6R3 ball-end mill,
+  // along `axis` (unit, from the tip up the tool: a five-axis run's tool axis; +Z otherwise).
+  void setTool(const std::optional<Vec3>& tip, const Vec3& axis = Vec3::UnitZ());
   std::optional<Vec3> toolTip() const;
   // Shows the coarse surface instead of the full one (while the camera moves), if there is one.
   void useCoarseSurface(bool coarse);
