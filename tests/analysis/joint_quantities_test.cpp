@@ -46,6 +46,8 @@ TEST(jointQuantities, TheSlidesMoveWhereTheTableTurnsUnderAStillTip) {
   EXPECT_NEAR(std::abs(sampleQuantity(Quantity::JointAccelerationY, t)[half]), 10 * std::pow(kPi / 3, 2), 0.05);
   EXPECT_TRUE(quantityAvailable(Quantity::JointVelocityC, t));
   EXPECT_FALSE(quantityAvailable(Quantity::JointVelocityA, t));
+  // A joint the machine lacks is not read as standing still.
+  EXPECT_THROW(sampleQuantity(Quantity::JointVelocityA, t), InputError);
 }
 
 // A run without joints offers none, and asking for one says what is missing.

@@ -169,19 +169,18 @@ std::optional<std::string> dumpMismatch(const BiipReader& dump, const Trajectory
 Trajectory simulateRun(const Program& program, const Machine& machine, const ProgressCallback& progress,
                        bool feedback, std::vector<std::string>* warnings) {
   TrajectorySink trajectory(machine.cycle, program.source, feedback);
+  SimulationReport report;
   if (simulatesFiveAxis(machine)) {
     // The joints do not pass ThreadedSink's thread.
     trajectory.keepJointsOf(*machine.kinematics);
-    const SimulationReport report = simulate(program, machine, trajectory, progress);
-    if (warnings)
-      for (const Diagnostic& w : report.warnings) warnings->push_back(w.str());
+    report = simulate(program, machine, trajectory, progress);
   } else {
     ThreadedSink sink(trajectory);
-    const SimulationReport report = simulate(program, machine, sink, progress);
+    report = simulate(program, machine, sink, progress);
     sink.drain();
-    if (warnings)
-      for (const Diagnostic& w : report.warnings) warnings->push_back(w.str());
   }
+  if (warnings)
+    for (const Diagnostic& w : report.warnings) warnings->push_back(w.str());
   return trajectory.take();
 }
 

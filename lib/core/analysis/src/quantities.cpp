@@ -52,10 +52,10 @@ Positions positionsOf(Quantity q) {
   return q < Quantity::JointVelocityA ? Positions::LinearJoints : Positions::RotaryJoints;
 }
 
-// Three arrays of positions (mm or deg); the rotary joints the machine lacks stand at 0.
+// Three arrays of positions (mm or deg). A rotary joint the machine lacks reads another joint's
+// channel: nothing derived from it is asked for (checkSampleQuantity refuses its quantities).
 struct PositionArrays {
   const double* axis[3] = {nullptr, nullptr, nullptr};
-  std::vector<double> zeros;
 };
 
 PositionArrays positionArrays(Positions which, const Trajectory& s) {
@@ -78,13 +78,16 @@ PositionArrays positionArrays(Positions which, const Trajectory& s) {
     throw InputError(Diagnostic{s.source, 0, 0,
                                 "the samples have no joints (joint_x ... joint_c channels): they come from a five-axis "
                                 "machine's simulation (docs/five-axis.md)"});
-  p.zeros.assign(s.size(), 0.0);
+  const double* present = p.axis[0] ? p.axis[0] : p.axis[1] ? p.axis[1] : p.axis[2];
   for (const double*& axis : p.axis)
-    if (!axis) axis = p.zeros.data();
+    if (!axis) axis = present;
   return p;
 }
 
 int axisOf(Quantity q, Quantity first) { return static_cast<int>(q) - static_cast<int>(first); }
+
+// 'a', 'b' or 'c': the rotary joint a rotary joint quantity is of.
+char jointLetter(Quantity q) { return static_cast<char>('a' + axisOf(q, Quantity::JointVelocityA) % 3); }
 
 // Speeds leave here in mm/min, the unit they are shown in (quantities are display values).
 double kinematicValue(Quantity q, const Kinematics& k, std::size_t i) {
@@ -184,7 +187,12 @@ void checkSampleQuantity(Quantity q, const Trajectory& s) {
     throw std::invalid_argument(std::string("'") + quantityInfo(q).name + "' is a surface quantity: it needs the mesh");
   if (q == Quantity::FollowingError) requireFeedback(s, q);
   if (q == Quantity::Feed && !s.hasFeed()) missing(s, "the samples have no programmed feed (no 'feed' channel)");
-  if (quantityInfo(q).needsJoints) positionArrays(positionsOf(q), s);
+  if (quantityInfo(q).needsJoints && !quantityAvailable(q, s)) {
+    positionArrays(positionsOf(q), s);  // says when the samples have no joints at all
+    missing(s, std::string(quantityInfo(q).label) + ": the machine has no such joint (no " +
+                   (positionsOf(q) == Positions::LinearJoints ? "joint_x" : "joint_" + std::string(1, jointLetter(q))) +
+                   " channel)");
+  }
 }
 
 // Per-sample quantity gathered at the vertices' samples, in double.
@@ -323,9 +331,7 @@ bool quantityAvailable(Quantity q, const Trajectory& samples) {
   if (info.needsFeedback && !samples.hasFeedback()) return false;
   if (!info.needsJoints) return true;
   if (positionsOf(q) == Positions::LinearJoints) return samples.extraChannel("joint_x") != nullptr;
-  const char* names[] = {"joint_a", "joint_b", "joint_c"};
-  const int axis = (static_cast<int>(q) - static_cast<int>(Quantity::JointVelocityA)) % 3;
-  return samples.extraChannel(names[axis]) != nullptr;
+  return samples.extraChannel(std::string("joint_") + jointLetter(q)) != nullptr;
 }
 
 std::optional<Quantity> parseQuantity(const std::string& name) {
